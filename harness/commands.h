@@ -1,0 +1,15 @@
+// Subcommands of the `curvbench` executable. Each registers itself on the CLI11 app and returns
+// the callback run when it is selected; harness/main.cpp maps exceptions to exit codes
+// (InputError/UsageError -> 2, anything else -> 1).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace curvbench::cli {
+
+using Command = std::function<int()>;
+
+Command add_info_command(CLI::App& app);
+
+}  // namespace curvbench::cli

@@ -1,0 +1,53 @@
+// curvbench: normals and curvatures on triangle meshes by local polynomial fitting, and the
+// convergence studies of Wang, Jiao et al. (CAGD 2009).
+//
+// Exit codes: 0 success, 2 bad usage or bad input, 1 internal failure.
+#include <CLI/CLI.hpp>
+#include <exception>
+#include <iostream>
+#include <map>
+#include <string>
+
+#include "core/build_info.h"
+#include "core/errors.h"
+#include "harness/commands.h"
+
+int main(int argc, char** argv) {
+  using namespace curvbench;
+  CLI::App app{
+      "curvbench: normals and curvatures of triangle meshes by local polynomial fitting\n"
+      "(LHF, LOP, Xu, LSCM, CGAL jet fitting) and the convergence studies of\n"
+      "Wang, Jiao et al., CAGD 2009."};
+  app.set_version_flag("--version", build_info());
+  app.require_subcommand(1);
+
+  std::map<const CLI::App*, cli::Command> commands;
+  auto add = [&](cli::Command (*adder)(CLI::App&)) {
+    const size_t before = app.get_subcommands({}).size();
+    cli::Command cmd = adder(app);
+    auto subs = app.get_subcommands({});
+    if (subs.size() > before) commands[subs.back()] = std::move(cmd);
+  };
+  add(&cli::add_info_command);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  try {
+    for (auto& [sub, cmd] : commands)
+      if (sub->parsed()) return cmd();
+    return 2;
+  } catch (const InputError& e) {
+    std::cerr << "curvbench: error: " << e.what() << "\n";
+    return 2;
+  } catch (const UsageError& e) {
+    std::cerr << "curvbench: usage error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "curvbench: internal error: " << e.what() << "\n";
+    return 1;
+  }
+}

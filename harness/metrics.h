@@ -1,0 +1,60 @@
+// Error metrics and convergence rates of the paper §5 (ALGORITHM_NOTES §12).
+//
+//   normals      L2 = sqrt(mean_i |n~_i - n_i|^2),  Linf = max_i |n~_i - n_i|        (absolute)
+//   H, K, k1, k2 L2 = |k~ - k|_2 / |k|_2,          Linf = |k~ - k|_inf / |k|_inf    (relative)
+//   d1           L2 = sqrt(mean_i e_i^2), e_i = min(|d~1 - d1|, |d~1 + d1|), over non-umbilic
+//                vertices (|k1 - k2| > 1e-8 max|k|), Linf = max_i e_i
+//   rate         log(e_1 / e_N) / log(h_1 / h_N) with the measured mean edge lengths
+//
+// Vertices whose estimate is `excluded` (NaN by design) are left out of every sum and counted.
+#pragma once
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "methods/estimator.h"
+#include "surfaces/surface.h"
+
+namespace curvbench {
+
+enum class Quantity { normal, H, K, k1, k2, d1 };
+enum class Norm { L2, Linf };
+
+const char* to_string(Quantity q);
+const char* to_string(Norm n);
+/// Parses "normal", "H", "K", "k1", "k2", "d1" (case-sensitive); throws UsageError otherwise.
+Quantity parse_quantity(const std::string& s);
+/// Parses "L2" / "Linf"; throws UsageError otherwise.
+Norm parse_norm(const std::string& s);
+
+/// Which vertices an error is taken over.
+enum class VertexSet {
+  all,            ///< every vertex
+  interior,       ///< vertices not on the boundary
+  boundary_ring,  ///< boundary vertices and their 1-ring neighbours (paper Figs. 13-14)
+};
+const char* to_string(VertexSet s);
+VertexSet parse_vertex_set(const std::string& s);
+
+/// Indices of the vertices in the set, increasing.
+std::vector<int> select_vertices(const Mesh& mesh, VertexSet set);
+
+struct ErrorValue {
+  double value = 0.0;  ///< the error; NaN if no vertex contributed
+  int vertices = 0;    ///< vertices that contributed
+  int excluded = 0;    ///< vertices of the set skipped because their estimate is excluded/NaN
+};
+
+/// Error of one quantity in one norm over the given vertices (indices into both arrays).
+ErrorValue compute_error(Quantity q, Norm norm, std::span<const VertexEstimate> estimates,
+                         std::span<const SurfacePoint> exact, std::span<const int> vertices);
+
+/// Average convergence rate log(e_first/e_last) / log(h_first/h_last) (paper §5 with measured
+/// h). NaN when an error is zero, non-finite, or the sizes do not differ.
+double convergence_rate(double e_first, double e_last, double h_first, double h_last);
+
+/// Rates between consecutive levels (size N-1 for N levels).
+std::vector<double> pairwise_rates(std::span<const double> errors, std::span<const double> h);
+
+}  // namespace curvbench

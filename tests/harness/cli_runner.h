@@ -1,0 +1,36 @@
+// Runs build/curvbench as a child process and captures its exit code and output.
+#pragma once
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+namespace curvbench::testing {
+
+struct CliResult {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr interleaved
+};
+
+inline CliResult run_cli(const std::string& args) {
+  const std::string cmd = std::string(CURVBENCH_BINARY_DIR) + "/curvbench " + args + " 2>&1";
+  CliResult r;
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (!pipe) return r;
+  char buf[4096];
+  size_t n;
+  while ((n = fread(buf, 1, sizeof buf, pipe)) > 0) r.output.append(buf, n);
+  const int status = pclose(pipe);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+/// A fresh, empty directory under the system temp dir, unique per test.
+inline std::filesystem::path fresh_dir(const std::string& name) {
+  auto dir = std::filesystem::temp_directory_path() / ("curvbench_test_" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+}  // namespace curvbench::testing

@@ -1,0 +1,86 @@
+// `curvbench --version`, `--help`, `info`, and the exit-code contract (0 ok, 2 bad input/usage).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+
+#include "tests/harness/cli_runner.h"
+
+namespace curvbench {
+namespace {
+
+using testing::fresh_dir;
+using testing::run_cli;
+
+TEST(Cli, VersionAndHelp) {
+  auto r = run_cli("--version");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.output.find("curvbench 0."), std::string::npos) << r.output;
+  r = run_cli("--help");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.output.find("info"), std::string::npos);
+  r = run_cli("info --help");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.output.find("MESH"), std::string::npos);
+}
+
+TEST(Cli, BadUsageExits2) {
+  EXPECT_EQ(run_cli("").exit_code, 2);
+  EXPECT_EQ(run_cli("no-such-command").exit_code, 2);
+  EXPECT_EQ(run_cli("info").exit_code, 2);  // missing MESH
+}
+
+TEST(Cli, InfoOnOctahedron) {
+  const auto dir = fresh_dir("info_octa");
+  const auto path = dir / "octa.off";
+  std::ofstream(path) << "OFF\n6 8 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n"
+                         "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n";
+  const auto r = run_cli("info " + path.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("vertices:              6"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("faces:                 8"), std::string::npos);
+  EXPECT_NE(r.output.find("edges:                 12"), std::string::npos);
+  EXPECT_NE(r.output.find("boundary vertices:     0"), std::string::npos);
+  EXPECT_NE(r.output.find("euler characteristic:  2"), std::string::npos);
+  EXPECT_NE(r.output.find("mean edge length:      1.41421"), std::string::npos);
+  EXPECT_NE(r.output.find("orientation:           consistent"), std::string::npos);
+  EXPECT_NE(r.output.find("outward normals"), std::string::npos);
+}
+
+TEST(Cli, InfoReportsBoundaryAndQuads) {
+  const auto dir = fresh_dir("info_quad");
+  const auto path = dir / "quads.obj";
+  std::ofstream(path)
+      << "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\nf 1 2 5 4\nf 2 3 6 5\n";
+  const auto r = run_cli("info " + path.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("faces:                 4 (2 polygons fan-triangulated)"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("boundary vertices:     6"), std::string::npos);
+  EXPECT_NE(r.output.find("euler characteristic:  1"), std::string::npos);
+}
+
+TEST(Cli, BadInputExits2WithOneLineNamingTheFile) {
+  const auto dir = fresh_dir("info_bad");
+  auto r = run_cli("info " + (dir / "missing.off").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("missing.off"), std::string::npos) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+
+  const auto unknown = dir / "mesh.xyz";
+  std::ofstream(unknown) << "1 2 3\n";
+  r = run_cli("info " + unknown.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("mesh.xyz"), std::string::npos) << r.output;
+
+  const auto range = dir / "range.off";
+  std::ofstream(range) << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n";
+  r = run_cli("info " + range.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("range.off"), std::string::npos) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+}
+
+}  // namespace
+}  // namespace curvbench

@@ -1,0 +1,139 @@
+// Error metrics and rates on hand-made inputs with known answers.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "core/errors.h"
+#include "harness/metrics.h"
+
+namespace curvbench {
+namespace {
+
+struct Fixture {
+  std::vector<SurfacePoint> exact;
+  std::vector<VertexEstimate> est;
+  std::vector<int> all;
+};
+
+// n points with H = K = k1 = k2 = i+1, normal +z, d1 = x; the estimates start equal to exact.
+Fixture make(int n) {
+  Fixture f;
+  for (int i = 0; i < n; ++i) {
+    SurfacePoint p;
+    p.normal = Vec3(0, 0, 1);
+    p.k1 = 2.0 * (i + 1);
+    p.k2 = -1.0 * (i + 1);
+    p.H = 0.5 * (p.k1 + p.k2);
+    p.K = p.k1 * p.k2;
+    p.d1 = Vec3(1, 0, 0);
+    p.d2 = Vec3(0, 1, 0);
+    f.exact.push_back(p);
+    VertexEstimate e;
+    e.normal = p.normal;
+    e.k1 = p.k1;
+    e.k2 = p.k2;
+    e.H = p.H;
+    e.K = p.K;
+    e.d1 = p.d1;
+    e.d2 = p.d2;
+    e.status = VertexStatus::ok;
+    f.est.push_back(e);
+    f.all.push_back(i);
+  }
+  return f;
+}
+
+TEST(Metrics, ExactEstimatesHaveZeroError) {
+  Fixture f = make(10);
+  for (Quantity q :
+       {Quantity::normal, Quantity::H, Quantity::K, Quantity::k1, Quantity::k2, Quantity::d1})
+    for (Norm n : {Norm::L2, Norm::Linf})
+      EXPECT_EQ(compute_error(q, n, f.est, f.exact, f.all).value, 0.0) << to_string(q);
+}
+
+TEST(Metrics, ConstantOffsetInMeanCurvature) {
+  Fixture f = make(4);  // H = 0.5, 1, 1.5, 2
+  for (auto& e : f.est) e.H += 0.1;
+  const double sum_sq = 0.25 + 1 + 2.25 + 4;
+  EXPECT_NEAR(compute_error(Quantity::H, Norm::L2, f.est, f.exact, f.all).value,
+              std::sqrt(4 * 0.01) / std::sqrt(sum_sq), 1e-15);
+  EXPECT_NEAR(compute_error(Quantity::H, Norm::Linf, f.est, f.exact, f.all).value, 0.1 / 2.0,
+              1e-15);
+}
+
+TEST(Metrics, SingleBadVertexDominatesLinf) {
+  Fixture f = make(100);
+  f.est[37].normal = Vec3(0, 0.6, 0.8);  // |n~ - n| = sqrt(0.36 + 0.04)
+  const double bad = std::sqrt(0.4);
+  EXPECT_NEAR(compute_error(Quantity::normal, Norm::Linf, f.est, f.exact, f.all).value, bad, 1e-15);
+  EXPECT_NEAR(compute_error(Quantity::normal, Norm::L2, f.est, f.exact, f.all).value,
+              bad / std::sqrt(100.0), 1e-15);
+}
+
+TEST(Metrics, DirectionErrorIsSignInvariantAndSkipsUmbilics) {
+  Fixture f = make(3);
+  f.est[0].d1 = -f.exact[0].d1;  // opposite sign: no error
+  f.est[1].d1 = Vec3(0, 1, 0);   // 90 degrees off: sqrt(2)
+  f.exact[2].umbilic = true;     // skipped whatever its estimate
+  f.est[2].d1 = Vec3(0, 0, 1);
+  const ErrorValue e = compute_error(Quantity::d1, Norm::L2, f.est, f.exact, f.all);
+  EXPECT_EQ(e.vertices, 2);
+  EXPECT_NEAR(e.value, std::sqrt(2.0 / 2.0), 1e-15);
+}
+
+TEST(Metrics, ExcludedVerticesAreCountedNotSummed) {
+  Fixture f = make(5);
+  f.est[2] = VertexEstimate{};  // NaN everywhere
+  f.est[2].status = VertexStatus::excluded;
+  const ErrorValue e = compute_error(Quantity::H, Norm::L2, f.est, f.exact, f.all);
+  EXPECT_EQ(e.vertices, 4);
+  EXPECT_EQ(e.excluded, 1);
+  EXPECT_EQ(e.value, 0.0);
+}
+
+TEST(Metrics, ConvergenceRates) {
+  // e = C h^2 exactly gives rate 2 for any h sequence.
+  const std::vector<double> h{0.2, 0.09, 0.05, 0.026};
+  std::vector<double> e;
+  for (double x : h) e.push_back(3.0 * x * x);
+  EXPECT_NEAR(convergence_rate(e.front(), e.back(), h.front(), h.back()), 2.0, 1e-12);
+  for (double r : pairwise_rates(e, h)) EXPECT_NEAR(r, 2.0, 1e-12);
+  // Halving h three times and the paper's (1/3) log2(e1/e4): e1/e4 = 64 -> 2.
+  EXPECT_NEAR(convergence_rate(64.0, 1.0, 0.8, 0.1), 2.0, 1e-12);
+  EXPECT_TRUE(std::isnan(convergence_rate(0.0, 1.0, 1.0, 0.5)));
+  EXPECT_TRUE(std::isnan(convergence_rate(1.0, 1.0, 1.0, 1.0)));
+}
+
+TEST(Metrics, ParsersRejectUnknownNames) {
+  EXPECT_EQ(parse_quantity("K"), Quantity::K);
+  EXPECT_EQ(parse_norm("Linf"), Norm::Linf);
+  EXPECT_EQ(parse_vertex_set("boundary-ring"), VertexSet::boundary_ring);
+  EXPECT_THROW(parse_quantity("curv"), UsageError);
+  EXPECT_THROW(parse_norm("L3"), UsageError);
+  EXPECT_THROW(parse_vertex_set("edge"), UsageError);
+}
+
+TEST(Metrics, VertexSets) {
+  // 4 x 4 squares: 25 vertices, 16 on the boundary, 9 interior.
+  const int n = 4;
+  VertexMatrix V((n + 1) * (n + 1), 3);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) V.row(j * (n + 1) + i) << i, j, 0;
+  FaceMatrix F(2 * n * n, 3);
+  int f = 0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i;
+      F.row(f++) << a, a + 1, a + n + 2;
+      F.row(f++) << a, a + n + 2, a + n + 1;
+    }
+  const Mesh mesh(V, F);
+  EXPECT_EQ(select_vertices(mesh, VertexSet::all).size(), 25u);
+  EXPECT_EQ(select_vertices(mesh, VertexSet::interior).size(), 9u);
+  // Boundary (16) plus the interior vertices adjacent to it (the 8 around the centre).
+  EXPECT_EQ(select_vertices(mesh, VertexSet::boundary_ring).size(), 24u);
+}
+
+}  // namespace
+}  // namespace curvbench
