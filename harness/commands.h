@@ -11,5 +11,7 @@ namespace curvbench::cli {
 using Command = std::function<int()>;
 
 Command add_info_command(CLI::App& app);
+Command add_mesh_command(CLI::App& app);
+Command add_estimate_command(CLI::App& app);
 
 }  // namespace curvbench::cli

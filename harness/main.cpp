@@ -29,6 +29,8 @@ int main(int argc, char** argv) {
     if (subs.size() > before) commands[subs.back()] = std::move(cmd);
   };
   add(&cli::add_info_command);
+  add(&cli::add_mesh_command);
+  add(&cli::add_estimate_command);
 
   try {
     app.parse(argc, argv);

@@ -42,7 +42,7 @@ class Surface {
   virtual SurfacePoint evaluate(const Vec3& p) const = 0;
 
   /// Position of the surface at parameters (u, v) of its natural parameterization (torus: angles;
-  /// sphere: longitude/colatitude; height field: x, y). Used by tests and mesh generators.
+  /// sphere: longitude/latitude; height field: x, y). Used by tests and mesh generators.
   virtual Vec3 position(double u, double v) const = 0;
 };
 

@@ -1,0 +1,201 @@
+// `curvbench mesh`: writes a generated test mesh (ALGORITHM_NOTES §10) with its exact per-vertex
+// quantities, or prints the reproduction of the paper's Table 4 (isosurface position errors).
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/errors.h"
+#include "harness/commands.h"
+#include "mesh/io.h"
+#include "meshgen/generate.h"
+#include "meshgen/torus_isosurface.h"
+
+namespace curvbench::cli {
+
+namespace {
+
+struct MeshOptions {
+  std::string family;
+  int level = 1;
+  int noise_order = 0;
+  std::uint64_t seed = 1;
+  bool jitter = false;
+  std::string output;
+  bool table4 = false;
+  int max_grid = 256;
+};
+
+std::string lower_extension(const std::string& path) {
+  const auto dot = path.find_last_of('.');
+  if (dot == std::string::npos || path.find_first_of("/\\", dot) != std::string::npos) return "";
+  std::string ext = path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+// Per-vertex exact quantities at the exact points: ex ey ez, exact normal nx ny nz, k1 k2 H K.
+std::vector<VertexProperty> exact_properties(const GeneratedMesh& gm) {
+  const char* names[] = {"ex", "ey", "ez", "nx", "ny", "nz", "k1", "k2", "H", "K"};
+  std::vector<VertexProperty> props;
+  for (const char* name : names) props.push_back({name, {}, false});
+  const int n = gm.mesh.num_vertices();
+  for (auto& p : props) p.values.resize(n);
+  for (int i = 0; i < n; ++i) {
+    const SurfacePoint sp = gm.surface->evaluate(gm.exact_points.row(i).transpose());
+    const double values[] = {gm.exact_points(i, 0),
+                             gm.exact_points(i, 1),
+                             gm.exact_points(i, 2),
+                             sp.normal.x(),
+                             sp.normal.y(),
+                             sp.normal.z(),
+                             sp.k1,
+                             sp.k2,
+                             sp.H,
+                             sp.K};
+    for (size_t k = 0; k < props.size(); ++k) props[k].values[i] = values[k];
+  }
+  return props;
+}
+
+int write_generated_mesh(const MeshOptions& o) {
+  const std::string ext = lower_extension(o.output);
+  if (ext != "off" && ext != "ply")
+    throw UsageError("--output " + o.output + ": extension must be .off or .ply");
+  MeshSpec spec;
+  spec.family = o.family;
+  spec.level = o.level;
+  spec.noise_order = o.noise_order;
+  spec.seed = o.seed;
+  spec.jitter = o.jitter;
+  const GeneratedMesh gm = generate_mesh(spec);
+  write_mesh(o.output, gm.mesh,
+             ext == "ply" ? exact_properties(gm) : std::vector<VertexProperty>{});
+
+  const Mesh& m = gm.mesh;
+  const MeshQuality q = mesh_quality(m);
+  std::printf("wrote:                 %s\n", o.output.c_str());
+  std::printf("mesh:                  %s\n", gm.description.c_str());
+  std::printf("vertices:              %d\n", m.num_vertices());
+  std::printf("faces:                 %d\n", m.num_faces());
+  std::printf("boundary vertices:     %d\n", m.num_boundary_vertices());
+  std::printf("euler characteristic:  %d\n", m.euler_characteristic());
+  std::printf("mean edge length:      %.6g\n", m.mean_edge_length());
+  std::printf("angles (deg):          min %.3f, max %.3f\n", q.min_angle_deg, q.max_angle_deg);
+  std::printf("valence:               interior %d..%d", q.min_valence, q.max_valence);
+  if (m.has_boundary())
+    std::printf(", boundary %d..%d", q.min_boundary_valence, q.max_boundary_valence);
+  std::printf("\n");
+  if (ext == "ply")
+    std::printf(
+        "vertex properties:     ex ey ez (exact point), nx ny nz (exact normal), "
+        "k1 k2 H K (exact)\n");
+  return 0;
+}
+
+// Paper Table 4, as printed (n, #verts, average edge length, L2, Linf, rates L2, Linf).
+struct PaperRow {
+  int n, verts;
+  double h, l2, linf, rate_l2, rate_linf;
+};
+constexpr PaperRow kPaperTable4[] = {
+    {16, 320, 0.11, 3.60e-3, 9.30e-3, NAN, NAN},
+    {32, 1760, 0.048, 1.12e-3, 3.47e-3, 1.69, 1.42},
+    {64, 7320, 0.023, 2.59e-4, 9.03e-4, 2.11, 1.94},
+    {128, 31136, 0.011, 6.71e-5, 2.25e-4, 1.95, 2.00},
+    {256, 122464, 0.0057, 1.65e-5, 5.70e-5, 2.03, 1.98},
+};
+
+int print_table4(int max_grid) {
+  const std::vector<Table4Row> rows = table4(max_grid);
+  std::printf(
+      "Table 4 reproduction: marching cubes of the torus SDF on [-1.5,1.5]^3 with n^3 samples,\n"
+      "vertex distances to the torus R=1, r=0.3 (ALGORITHM_NOTES 10.1a). 'mean edge' is the\n"
+      "true mean edge length; the paper's column equals mean/2 (its h = sum of edge lengths / "
+      "3F).\n"
+      "Rates: log2(err(n/2) / err(n)). Paper values in brackets.\n\n");
+  std::printf("%5s %16s %10s %16s %21s %21s %13s %13s\n", "n", "verts [paper]", "mean edge",
+              "mean/2 [paper]", "L2 (RMS) [paper]", "Linf (max) [paper]", "rate L2", "rate Linf");
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const Table4Row& r = rows[i];
+    const PaperRow* p = nullptr;
+    for (const auto& pr : kPaperTable4)
+      if (pr.n == r.grid_points) p = &pr;
+    char verts[32], half[32], l2[40], linf[40], rl2[32] = "-", rlinf[32] = "-";
+    std::snprintf(verts, sizeof verts, "%d [%d]", r.vertices, p ? p->verts : 0);
+    std::snprintf(half, sizeof half, "%.4f [%.2g]", r.mean_edge_length / 2, p ? p->h : NAN);
+    std::snprintf(l2, sizeof l2, "%.3e [%.2e]", r.rms_error, p ? p->l2 : NAN);
+    std::snprintf(linf, sizeof linf, "%.3e [%.2e]", r.max_error, p ? p->linf : NAN);
+    if (i > 0) {
+      const Table4Row& prev = rows[i - 1];
+      std::snprintf(rl2, sizeof rl2, "%.2f [%.2f]", std::log2(prev.rms_error / r.rms_error),
+                    p ? p->rate_l2 : NAN);
+      std::snprintf(rlinf, sizeof rlinf, "%.2f [%.2f]", std::log2(prev.max_error / r.max_error),
+                    p ? p->rate_linf : NAN);
+    }
+    std::printf("%5d %16s %10.4f %16s %21s %21s %13s %13s\n", r.grid_points, verts,
+                r.mean_edge_length, half, l2, linf, rl2, rlinf);
+  }
+  return 0;
+}
+
+}  // namespace
+
+Command add_mesh_command(CLI::App& app) {
+  auto* sub = app.add_subcommand(
+      "mesh",
+      "Generate a test mesh (ALGORITHM_NOTES 10) and write it with its exact per-vertex "
+      "quantities, or print the reproduction of the paper's Table 4");
+  auto o = std::make_shared<MeshOptions>();
+  std::string families;
+  for (const auto& f : mesh_families()) families += (families.empty() ? "" : ", ") + f;
+  auto* family = sub->add_option("--family", o->family, "Mesh family: " + families);
+  auto* level = sub->add_option(
+      "--level", o->level,
+      "Resolution level, 1 = coarsest (torus-structured 1..4, torus-iso* 1..5, bump-* 1..5)");
+  auto* noise = sub->add_option("--noise-order", o->noise_order,
+                                "Add alpha h^k normal noise of order k (1..4; 0 = none), "
+                                "alpha = 0.1 N(0,1)");
+  auto* seed = sub->add_option("--seed", o->seed,
+                               "Seed for the noise, the jitter and the irregular bump points")
+                   ->check(CLI::Validator(
+                       [](const std::string& s) {
+                         return s.starts_with("-") ? "the seed must be a non-negative integer" : "";
+                       },
+                       "UINT"));
+  auto* jitter = sub->add_flag("--jitter", o->jitter,
+                               "torus-structured only: jitter the vertices by +-0.15 cells "
+                               "along the torus");
+  auto* output = sub->add_option("--output", o->output,
+                                 "Output file, .off or .ply (PLY carries the exact point ex ey "
+                                 "ez, exact normal nx ny nz, and k1 k2 H K per vertex)");
+  auto* table = sub->add_flag("--table4", o->table4,
+                              "Print the Table 4 reproduction (isosurface torus position errors)");
+  auto* max_grid = sub->add_option("--max-grid", o->max_grid,
+                                   "With --table4: largest grid n (16, 32, 64, 128 or 256; "
+                                   "default 256)");
+  return [o, family, level, noise, seed, jitter, output, table, max_grid]() {
+    if ((output->count() > 0) == (table->count() > 0))
+      throw UsageError("mesh: give exactly one of --output FILE and --table4");
+    if (table->count() > 0) {
+      for (const CLI::Option* opt : {family, level, noise, seed, jitter})
+        if (opt->count() > 0)
+          throw UsageError("mesh: " + opt->get_name() + " does not apply to --table4");
+      const int n = o->max_grid;
+      if (n != 16 && n != 32 && n != 64 && n != 128 && n != 256)
+        throw UsageError("mesh: --max-grid " + std::to_string(n) +
+                         " must be one of 16, 32, 64, 128, 256");
+      return print_table4(n);
+    }
+    if (max_grid->count() > 0) throw UsageError("mesh: --max-grid applies only to --table4");
+    if (family->count() == 0) throw UsageError("mesh: --output needs --family");
+    return write_generated_mesh(*o);
+  };
+}
+
+}  // namespace curvbench::cli

@@ -1,0 +1,157 @@
+// Seeded random numbers (meshgen/random.h) and controlled normal noise (ALGORITHM_NOTES §10.3).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include "core/errors.h"
+#include "meshgen/bump_grid.h"
+#include "meshgen/noise.h"
+#include "meshgen/random.h"
+#include "meshgen/torus_structured.h"
+
+namespace curvbench {
+namespace {
+
+TEST(Random, EngineIsTheStandardMt19937_64) {
+  // First output of mt19937_64 with the default seed 5489 (fixed by the C++ standard).
+  Rng rng(5489);
+  EXPECT_EQ(rng.uniform01(), static_cast<double>(14514284786278117030ULL >> 11) * 0x1.0p-53);
+  Rng a(42), b(42), c(43);
+  for (int i = 0; i < 100; ++i) {
+    const double x = a.normal();
+    EXPECT_EQ(x, b.normal());
+    EXPECT_NE(x, c.normal());
+  }
+  EXPECT_NE(derive_seed(1, 1), derive_seed(1, 2));
+  EXPECT_NE(derive_seed(1, 1), derive_seed(2, 1));
+}
+
+TEST(Random, UniformAndNormalMoments) {
+  // Tolerances: 5 standard errors of the sample statistic for n = 200000 draws.
+  const int n = 200000;
+  Rng rng(2024);
+  double su = 0, umin = 1, umax = 0;
+  for (int i = 0; i < n; ++i) {
+    const double u = rng.uniform01();
+    su += u;
+    umin = std::min(umin, u);
+    umax = std::max(umax, u);
+  }
+  EXPECT_GE(umin, 0.0);
+  EXPECT_LT(umax, 1.0);
+  EXPECT_NEAR(su / n, 0.5, 5 * std::sqrt(1.0 / 12 / n));
+  double s1 = 0, s2 = 0, s4 = 0;
+  int within1 = 0;
+  for (int i = 0; i < n; ++i) {
+    const double x = rng.normal();
+    ASSERT_TRUE(std::isfinite(x));
+    s1 += x;
+    s2 += x * x;
+    s4 += x * x * x * x;
+    if (std::abs(x) < 1) ++within1;
+  }
+  EXPECT_NEAR(s1 / n, 0.0, 5 / std::sqrt(n));
+  EXPECT_NEAR(s2 / n, 1.0, 5 * std::sqrt(2.0 / n));
+  EXPECT_NEAR(s4 / n, 3.0, 5 * std::sqrt(96.0 / n));  // Var(x^4) = 105 - 9 = 96
+  const double p = 0.682689492137;                    // P(|x| < 1)
+  EXPECT_NEAR(static_cast<double>(within1) / n, p, 5 * std::sqrt(p * (1 - p) / n));
+}
+
+// Signed normal displacements divided by h^k, i.e. the alpha_i, of a noisy mesh.
+std::vector<double> alphas(const GeneratedMesh& clean, const GeneratedMesh& noisy, int k) {
+  const double hk = std::pow(clean.mesh.mean_edge_length(), k);
+  std::vector<double> a;
+  for (int i = 0; i < clean.mesh.num_vertices(); ++i) {
+    const Vec3 d = noisy.mesh.position(i) - clean.mesh.position(i);
+    const Vec3 n = clean.surface->evaluate(clean.exact_points.row(i).transpose()).normal;
+    // |x + delta| rounds at ~1e-16 absolute, so the cross product is at rounding level.
+    EXPECT_LE(d.cross(n).norm(), 2e-15) << "displacement not along the exact normal";
+    a.push_back(d.dot(n) / hk);
+  }
+  return a;
+}
+
+double rms(const std::vector<double>& x) {
+  double s = 0;
+  for (double v : x) s += v * v;
+  return std::sqrt(s / x.size());
+}
+
+TEST(Noise, AmplitudeScalesAsHToTheK) {
+  for (int k : {2, 3}) {
+    double prev_rms = 0, prev_h = 0;
+    int prev_n = 0;
+    for (int level = 2; level <= 4; ++level) {
+      const GeneratedMesh clean = bump_48(level);
+      const GeneratedMesh noisy = add_normal_noise(clean, k, 11);
+      const std::vector<double> a = alphas(clean, noisy, k);
+      const int n = static_cast<int>(a.size());
+      // alpha = 0.1 xi: RMS(alpha) = 0.1 within 5 standard errors (rel. s.e. of an RMS:
+      // 1/sqrt(2n)).
+      const double r = rms(a);
+      EXPECT_NEAR(r / 0.1, 1.0, 5 / std::sqrt(2.0 * n)) << "k=" << k << " level=" << level;
+      double mean = 0;
+      for (double v : a) mean += v;
+      EXPECT_NEAR(mean / n, 0.0, 5 * 0.1 / std::sqrt(n));
+      // Between levels the RMS displacement drops by (h_L / h_{L+1})^k ~ 2^k; the sampling
+      // error of the ratio of two RMS is sqrt(1/(2 n_L) + 1/(2 n_{L+1})) relative.
+      const double h = clean.mesh.mean_edge_length();
+      const double disp = r * std::pow(h, k);
+      if (level > 2) {
+        const double tol = 5 * std::sqrt(0.5 / n + 0.5 / prev_n);
+        EXPECT_NEAR((prev_rms / disp) / std::pow(prev_h / h, k), 1.0, tol);
+        EXPECT_NEAR(prev_h / h, 2.0, 0.02);  // so the ratio is 2^k up to (1 +- 1%)^k
+      }
+      prev_rms = disp;
+      prev_h = h;
+      prev_n = n;
+    }
+  }
+}
+
+TEST(Noise, KeepsExactPointsAndConnectivityAndIsDeterministic) {
+  const GeneratedMesh clean = bump_48(2);
+  const GeneratedMesh a = add_normal_noise(clean, 2, 3);
+  const GeneratedMesh b = add_normal_noise(clean, 2, 3);
+  const GeneratedMesh c = add_normal_noise(clean, 2, 4);
+  EXPECT_EQ(a.exact_points, clean.exact_points);
+  EXPECT_EQ(a.mesh.faces(), clean.mesh.faces());
+  EXPECT_EQ(a.surface, clean.surface);
+  EXPECT_EQ(a.family, clean.family);
+  EXPECT_EQ(a.level, clean.level);
+  EXPECT_NE(a.description.find("h^2"), std::string::npos);
+  EXPECT_NE(a.description.find("seed=3"), std::string::npos);
+  ASSERT_EQ(a.mesh.num_vertices(), b.mesh.num_vertices());
+  EXPECT_EQ(std::memcmp(a.mesh.vertices().data(), b.mesh.vertices().data(),
+                        sizeof(double) * 3 * a.mesh.num_vertices()),
+            0);
+  EXPECT_NE(a.mesh.vertices(), c.mesh.vertices());
+  // Every vertex moves, boundary vertices included.
+  for (int i = 0; i < clean.mesh.num_vertices(); ++i)
+    ASSERT_NE(a.mesh.position(i), clean.mesh.position(i)) << "vertex " << i;
+  // alpha_scale 0 is the identity.
+  EXPECT_EQ(add_normal_noise(clean, 3, 3, 0.0).mesh.vertices(), clean.mesh.vertices());
+}
+
+TEST(Noise, ClosedSurfaceAlongOutwardNormal) {
+  const GeneratedMesh clean = torus_structured(1);
+  const GeneratedMesh noisy = add_normal_noise(clean, 2, 9);
+  const std::vector<double> a = alphas(clean, noisy, 2);
+  EXPECT_NEAR(rms(a) / 0.1, 1.0, 5 / std::sqrt(2.0 * a.size()));
+  EXPECT_EQ(noisy.mesh.euler_characteristic(), 0);
+}
+
+TEST(Noise, BadArgumentsThrow) {
+  const GeneratedMesh clean = bump_48(1);
+  EXPECT_THROW(add_normal_noise(clean, 0, 1), UsageError);
+  EXPECT_THROW(add_normal_noise(clean, 2, 1, -0.1), UsageError);
+  EXPECT_THROW(add_normal_noise(clean, 2, 1, std::nan("")), UsageError);
+  GeneratedMesh no_surface = clean;
+  no_surface.surface = nullptr;
+  EXPECT_THROW(add_normal_noise(no_surface, 2, 1), UsageError);
+}
+
+}  // namespace
+}  // namespace curvbench
