@@ -3,6 +3,7 @@
 BUILD ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
+RUN_ARGS ?=
 
 .PHONY: all deps configure build test experiments bench clean format
 
@@ -21,7 +22,7 @@ test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 experiments: build
-	@bash tools/experiments.sh $(BUILD)
+	@bash tools/experiments.sh $(BUILD) $(RUN_ARGS)
 
 bench: build
 	@bash tools/bench.sh $(BUILD)

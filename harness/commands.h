@@ -13,5 +13,6 @@ using Command = std::function<int()>;
 Command add_info_command(CLI::App& app);
 Command add_mesh_command(CLI::App& app);
 Command add_estimate_command(CLI::App& app);
+Command add_run_command(CLI::App& app);
 
 }  // namespace curvbench::cli

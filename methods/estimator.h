@@ -75,7 +75,9 @@ class Estimator {
 
   /// Short lower-case name, e.g. "lhf".
   virtual std::string name() const = 0;
-  /// Display name with degree, e.g. "LHF-2".
+  /// Name as the paper writes it, e.g. "LHF", "Xu"; default: name() in upper case.
+  virtual std::string display_name() const;
+  /// Display name with degree, e.g. "LHF-2", "Xu-2".
   std::string label() const;
   const EstimatorOptions& options() const { return options_; }
 

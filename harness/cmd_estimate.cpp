@@ -1,0 +1,189 @@
+// `curvbench estimate MESH --method M --degree D [--rings R] [--threads N] [--noisy]
+//  --output OUT.csv|OUT.ply`: per-vertex normals and curvatures of one estimator.
+//
+// CSV: a header, then one row per vertex
+//   vertex,nx,ny,nz,k1,k2,H,K,d1x,d1y,d1z,d2x,d2y,d2z,degree,points,status
+// with "%.17g" numbers, "nan" for NaN and the status as a word (ok, degree_reduced, failed,
+// excluded). PLY: the mesh with the same per-vertex properties (status as its integer code
+// 0..3, plus the ring used). The file is written to a temporary name and renamed, so a failed
+// run never leaves a truncated OUT. A one-line summary goes to stderr.
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include "core/errors.h"
+#include "harness/commands.h"
+#include "mesh/io.h"
+#include "methods/estimator.h"
+
+namespace curvbench::cli {
+
+namespace {
+
+struct EstimateOptions {
+  std::string mesh;
+  std::string method;
+  int degree = 2;
+  double rings = 0.0;
+  int threads = 0;
+  bool noisy = false;
+  std::string output;
+};
+
+std::string lower_extension(const std::string& path) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  std::string s = ext.empty() ? ext : ext.substr(1);
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// A temporary sibling of `path` keeping its extension (write_mesh picks the format from it).
+std::string temp_path(const std::string& path) {
+  std::filesystem::path p(path);
+  const std::string name =
+      "." + p.stem().string() + ".tmp" + std::to_string(::getpid()) + p.extension().string();
+  return (p.parent_path() / name).string();
+}
+
+void put_double(std::FILE* f, double x) {
+  if (std::isnan(x)) {
+    std::fputs("nan", f);
+  } else {
+    std::fprintf(f, "%.17g", x);
+  }
+}
+
+// Writes to `path`; errors name `shown` (the user's output file).
+void write_csv(const std::string& path, const std::string& shown,
+               const std::vector<VertexEstimate>& est) {
+  std::FILE* f = std::fopen(path.c_str(), "w");
+  if (f == nullptr) throw InputError(shown + ": cannot open for writing");
+  std::fputs("vertex,nx,ny,nz,k1,k2,H,K,d1x,d1y,d1z,d2x,d2y,d2z,degree,points,status\n", f);
+  for (size_t v = 0; v < est.size(); ++v) {
+    const VertexEstimate& e = est[v];
+    const std::array<double, 13> vals = {
+        e.normal.x(), e.normal.y(), e.normal.z(), e.k1,     e.k2,     e.H,     e.K,
+        e.d1.x(),     e.d1.y(),     e.d1.z(),     e.d2.x(), e.d2.y(), e.d2.z()};
+    std::fprintf(f, "%zu", v);
+    for (double x : vals) {
+      std::fputc(',', f);
+      put_double(f, x);
+    }
+    std::fprintf(f, ",%d,%d,%s\n", e.degree, e.points, to_string(e.status));
+  }
+  const bool ok = std::ferror(f) == 0;
+  if (std::fclose(f) != 0 || !ok) throw InputError(shown + ": write failed");
+}
+
+std::vector<VertexProperty> ply_properties(const std::vector<VertexEstimate>& est) {
+  const char* names[] = {"nx",  "ny",  "nz",  "k1",  "k2",     "H",      "K",    "d1x",   "d1y",
+                         "d1z", "d2x", "d2y", "d2z", "degree", "points", "ring", "status"};
+  std::vector<VertexProperty> props;
+  for (const char* n : names) {
+    const std::string s = n;
+    props.push_back(
+        {s, std::vector<double>(est.size()), s == "degree" || s == "points" || s == "status"});
+  }
+  for (size_t v = 0; v < est.size(); ++v) {
+    const VertexEstimate& e = est[v];
+    const double vals[] = {e.normal.x(),
+                           e.normal.y(),
+                           e.normal.z(),
+                           e.k1,
+                           e.k2,
+                           e.H,
+                           e.K,
+                           e.d1.x(),
+                           e.d1.y(),
+                           e.d1.z(),
+                           e.d2.x(),
+                           e.d2.y(),
+                           e.d2.z(),
+                           static_cast<double>(e.degree),
+                           static_cast<double>(e.points),
+                           e.ring,
+                           static_cast<double>(static_cast<int>(e.status))};
+    for (size_t k = 0; k < props.size(); ++k) props[k].values[v] = vals[k];
+  }
+  return props;
+}
+
+int run_estimate(const EstimateOptions& o, bool degree_given) {
+  const std::string ext = lower_extension(o.output);
+  if (ext != "csv" && ext != "ply")
+    throw UsageError("--output " + o.output + ": extension must be .csv or .ply");
+  EstimatorOptions eo;
+  eo.degree = o.degree;
+  eo.ring = o.rings;
+  eo.threads = o.threads;
+  eo.noisy = o.noisy;
+  std::unique_ptr<Estimator> est = make_estimator(o.method, eo);
+  if (degree_given && est->options().degree != o.degree)
+    throw UsageError("--method " + o.method + " names degree " +
+                     std::to_string(est->options().degree) + " but --degree is " +
+                     std::to_string(o.degree));
+
+  const Mesh mesh = read_mesh(o.mesh);
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::vector<VertexEstimate> res = estimate_mesh(mesh, *est);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  const std::string tmp = temp_path(o.output);
+  try {
+    if (ext == "csv") {
+      write_csv(tmp, o.output, res);
+    } else {
+      write_mesh(tmp, mesh, ply_properties(res));
+    }
+    std::error_code ec;
+    std::filesystem::rename(tmp, o.output, ec);
+    if (ec) throw InputError(o.output + ": cannot write (" + ec.message() + ")");
+  } catch (...) {
+    std::error_code ec;
+    std::filesystem::remove(tmp, ec);
+    throw;
+  }
+
+  int counts[4] = {0, 0, 0, 0};
+  for (const VertexEstimate& e : res) ++counts[static_cast<int>(e.status)];
+  const int n = mesh.num_vertices();
+  std::fprintf(stderr,
+               "curvbench estimate: %s on %s: %d vertices (ok %d, degree_reduced %d, failed %d, "
+               "excluded %d) in %.3f s (%.2f us/vertex) -> %s\n",
+               est->label().c_str(), o.mesh.c_str(), n, counts[0], counts[1], counts[2], counts[3],
+               seconds, n > 0 ? 1e6 * seconds / n : 0.0, o.output.c_str());
+  return 0;
+}
+
+}  // namespace
+
+Command add_estimate_command(CLI::App& app) {
+  auto* sub = app.add_subcommand(
+      "estimate", "Estimate per-vertex normals, principal curvatures and directions, H and K");
+  auto o = std::make_shared<EstimateOptions>();
+  sub->add_option("MESH", o->mesh, "Mesh file (.off, .obj, .ply)")->required();
+  std::string names;
+  for (const std::string& n : estimator_names()) names += (names.empty() ? "" : ", ") + n;
+  sub->add_option("--method", o->method,
+                  "Method: " + names + " (case-insensitive; the degree may be attached, LHF-2)")
+      ->required();
+  auto* degree = sub->add_option("--degree", o->degree, "Fitting degree (default 2)");
+  sub->add_option("--rings", o->rings,
+                  "Ring size 1, 1.5, 2, ... (default: method default, (d+1)/2; Xu 1)");
+  sub->add_option("--threads", o->threads, "OpenMP threads (default: all)");
+  sub->add_flag("--noisy", o->noisy, "Noisy input: default ring + 0.5 (paper §5.3)");
+  sub->add_option("--output", o->output, "Output file (.csv or .ply)")->required();
+  return [o, degree]() { return run_estimate(*o, degree->count() > 0); };
+}
+
+}  // namespace curvbench::cli

@@ -1,0 +1,191 @@
+#include "harness/experiment.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "core/errors.h"
+
+namespace curvbench {
+
+namespace {
+
+// Splits a line into words; double quotes group words; '#' outside quotes ends the line.
+std::vector<std::string> tokenize(const std::string& line, const std::string& where) {
+  std::vector<std::string> out;
+  std::string cur;
+  bool in_quotes = false, have = false;
+  for (char c : line) {
+    if (in_quotes) {
+      if (c == '"')
+        in_quotes = false;
+      else
+        cur += c;
+    } else if (c == '"') {
+      in_quotes = have = true;
+    } else if (c == '#') {
+      break;
+    } else if (c == ' ' || c == '\t' || c == '\r') {
+      if (have) out.push_back(cur);
+      cur.clear();
+      have = false;
+    } else {
+      cur += c;
+      have = true;
+    }
+  }
+  if (in_quotes) throw InputError(where + ": unterminated quote");
+  if (have) out.push_back(cur);
+  return out;
+}
+
+bool split_option(const std::string& word, std::string& key, std::string& value) {
+  const auto eq = word.find('=');
+  if (eq == std::string::npos) return false;
+  key = word.substr(0, eq);
+  value = word.substr(eq + 1);
+  return true;
+}
+
+double to_double(const std::string& s, const std::string& where) {
+  try {
+    size_t pos = 0;
+    const double x = std::stod(s, &pos);
+    if (pos == s.size()) return x;
+  } catch (const std::exception&) {
+  }
+  throw InputError(where + ": '" + s + "' is not a number");
+}
+
+long to_int(const std::string& s, const std::string& where) {
+  try {
+    size_t pos = 0;
+    const long x = std::stol(s, &pos);
+    if (pos == s.size()) return x;
+  } catch (const std::exception&) {
+  }
+  throw InputError(where + ": '" + s + "' is not an integer");
+}
+
+bool to_bool(const std::string& s, const std::string& where) {
+  if (s == "yes" || s == "true") return true;
+  if (s == "no" || s == "false") return false;
+  throw InputError(where + ": expected yes or no, got '" + s + "'");
+}
+
+}  // namespace
+
+Experiment parse_experiment_text(const std::string& text, const std::string& source) {
+  Experiment e;
+  e.source = source;
+  std::istringstream in(text);
+  std::string line;
+  int lineno = 0;
+  while (std::getline(in, line)) {
+    ++lineno;
+    const std::string where = source + ":" + std::to_string(lineno);
+    const auto w = tokenize(line, where);
+    if (w.empty()) continue;
+    const std::string& key = w[0];
+    auto need = [&](size_t n) {
+      if (w.size() < n) throw InputError(where + ": '" + key + "' needs more values");
+    };
+    try {
+      if (key == "name") {
+        need(2);
+        e.name = w[1];
+      } else if (key == "title") {
+        need(2);
+        e.title = w[1];
+      } else if (key == "section") {
+        need(2);
+        e.section = w[1];
+      } else if (key == "noisy") {
+        need(2);
+        e.noisy = to_bool(w[1], where);
+      } else if (key == "vertex-set") {
+        need(2);
+        e.vertex_set = parse_vertex_set(w[1]);
+      } else if (key == "noise") {
+        need(2);
+        for (size_t i = 1; i < w.size(); ++i) {
+          std::string k, v;
+          if (!split_option(w[i], k, v)) throw InputError(where + ": expected key=value");
+          if (k == "order")
+            e.noise_order = static_cast<int>(to_int(v, where));
+          else if (k == "seed")
+            e.noise_seed = static_cast<std::uint64_t>(to_int(v, where));
+          else
+            throw InputError(where + ": unknown noise option '" + k + "'");
+        }
+        if (e.noise_order != 2 && e.noise_order != 3)
+          throw InputError(where + ": noise order must be 2 or 3");
+      } else if (key == "mesh") {
+        need(3);
+        ExperimentMesh m;
+        m.family = w[1];
+        for (size_t i = 2; i < w.size(); ++i) {
+          std::string k, v;
+          if (!split_option(w[i], k, v) || k != "levels")
+            throw InputError(where + ": expected levels=1,2,3,4");
+          std::stringstream ss(v);
+          std::string item;
+          while (std::getline(ss, item, ','))
+            m.levels.push_back(static_cast<int>(to_int(item, where)));
+        }
+        if (m.levels.empty()) throw InputError(where + ": no levels given");
+        e.meshes.push_back(m);
+      } else if (key == "method") {
+        need(2);
+        ExperimentMethod m;
+        m.spec = w[1];
+        for (size_t i = 2; i < w.size(); ++i) {
+          std::string k, v;
+          if (!split_option(w[i], k, v)) throw InputError(where + ": expected key=value");
+          if (k == "ring")
+            m.ring = to_double(v, where);
+          else if (k == "vertex-set") {
+            m.vertex_set = parse_vertex_set(v);
+            m.has_vertex_set = true;
+          } else
+            throw InputError(where + ": unknown method option '" + k + "'");
+        }
+        e.methods.push_back(m);
+      } else if (key == "panel") {
+        need(5);
+        e.panels.push_back({w[1], w[2], parse_quantity(w[3]), parse_norm(w[4])});
+      } else {
+        throw InputError(where + ": unknown key '" + key + "'");
+      }
+    } catch (const UsageError& err) {
+      throw InputError(where + ": " + err.what());
+    }
+  }
+  if (e.name.empty()) throw InputError(source + ": missing 'name'");
+  if (e.meshes.empty()) throw InputError(source + ": no 'mesh' line");
+  if (e.methods.empty()) throw InputError(source + ": no 'method' line");
+  if (e.panels.empty()) throw InputError(source + ": no 'panel' line");
+  return e;
+}
+
+Experiment parse_experiment(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open experiment file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return parse_experiment_text(ss.str(), path);
+}
+
+std::vector<std::string> list_experiment_files(const std::string& directory) {
+  std::vector<std::string> out;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(directory, ec))
+    if (entry.is_regular_file() && entry.path().extension() == ".exp")
+      out.push_back(entry.path().string());
+  if (ec) throw InputError(directory + ": cannot list experiments (" + ec.message() + ")");
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace curvbench

@@ -1,0 +1,69 @@
+// Declarative experiment definitions (experiments/*.exp), read by `curvbench run`.
+//
+// A file is a list of lines `key value...`; `#` starts a comment; double quotes group words.
+//
+//   name        fig03-05                        unique id (also the CSV name)
+//   title       "Noise-free torus, degree 2"    one line
+//   section     5.1                             paper section
+//   mesh        torus-structured levels=1,2,3,4 one line per mesh family (meshgen families)
+//   noise       order=3 seed=11                 optional controlled noise (ALGORITHM_NOTES §10.3)
+//   noisy       yes                             input is noisy: default rings +0.5 (paper §5.3)
+//   vertex-set  all                             all | interior | boundary-ring (default all)
+//   method      lhf-2 [ring=2.5] [vertex-set=interior]   one line per method and degree
+//   panel       fig3-left "Fig. 3 (left). ..." normal L2  one table/plot per mesh family
+//
+// Xu-2 is scored over interior vertices on meshes with a boundary (paper §5.2) unless a
+// vertex-set is given for it explicitly.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "harness/metrics.h"
+
+namespace curvbench {
+
+struct ExperimentMesh {
+  std::string family;
+  std::vector<int> levels;
+};
+
+struct ExperimentMethod {
+  std::string spec;   ///< e.g. "lhf-2" (accepted by make_estimator)
+  double ring = 0.0;  ///< 0 = method default
+  bool has_vertex_set = false;
+  VertexSet vertex_set = VertexSet::all;
+};
+
+struct ExperimentPanel {
+  std::string id;
+  std::string caption;
+  Quantity quantity = Quantity::normal;
+  Norm norm = Norm::L2;
+};
+
+struct Experiment {
+  std::string name;
+  std::string title;
+  std::string section;
+  std::string source;  ///< file it was read from
+  std::vector<ExperimentMesh> meshes;
+  std::vector<ExperimentMethod> methods;
+  std::vector<ExperimentPanel> panels;
+  int noise_order = 0;  ///< 0 = no controlled noise
+  std::uint64_t noise_seed = 1;
+  bool noisy = false;
+  VertexSet vertex_set = VertexSet::all;
+};
+
+/// Parses one experiment file. Throws InputError naming the file, line and problem.
+Experiment parse_experiment(const std::string& path);
+
+/// Parses experiment text (for tests); `source` names it in error messages.
+Experiment parse_experiment_text(const std::string& text, const std::string& source);
+
+/// The experiment files in a directory (*.exp), sorted by file name.
+std::vector<std::string> list_experiment_files(const std::string& directory);
+
+}  // namespace curvbench

@@ -1,0 +1,315 @@
+#include "harness/report.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "core/build_info.h"
+#include "core/errors.h"
+#include "harness/metrics.h"
+#include "mesh/rings.h"
+#include "meshgen/generate.h"
+#include "meshgen/torus_isosurface.h"
+
+namespace curvbench {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string sci(double x, int digits = 2) {
+  if (!std::isfinite(x)) return std::isnan(x) ? "n/a" : "inf";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.*e", digits, x);
+  return buf;
+}
+
+std::string fixed(double x, int digits = 2) {
+  if (!std::isfinite(x)) return "n/a";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, x);
+  return buf;
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return {};
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::vector<std::vector<std::string>> read_simple_csv(const std::string& path) {
+  std::vector<std::vector<std::string>> out;
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::vector<std::string> f;
+    std::stringstream ss(line);
+    std::string cell;
+    while (std::getline(ss, cell, ',')) f.push_back(cell);
+    out.push_back(f);
+  }
+  return out;
+}
+
+std::string family_caption(const std::string& family) {
+  if (family == "torus-structured") return "well-shaped torus (structured staggered mesh)";
+  if (family == "torus-iso-projected") return "poor-shaped torus (isosurface, projected)";
+  if (family == "torus-iso") return "noisy torus (isosurface, unprojected)";
+  if (family == "bump-48") return "4-8 mesh";
+  if (family == "bump-irregular") return "irregular mesh";
+  return family;
+}
+
+// Rows of one panel on one family, grouped by method in first-seen order.
+struct Series {
+  std::string method;
+  std::map<int, const ErrorRow*> by_level;
+};
+
+std::vector<Series> series_of(const std::vector<const ErrorRow*>& rows) {
+  std::vector<Series> out;
+  std::map<std::string, size_t> index;
+  for (const ErrorRow* r : rows) {
+    auto [it, inserted] = index.try_emplace(r->method, out.size());
+    if (inserted) out.push_back({r->method, {}});
+    out[it->second].by_level[r->level] = r;
+  }
+  return out;
+}
+
+double series_rate(const Series& s) {
+  if (s.by_level.size() < 2) return std::nan("");
+  const ErrorRow* a = s.by_level.begin()->second;
+  const ErrorRow* b = s.by_level.rbegin()->second;
+  return convergence_rate(a->error, b->error, a->h, b->h);
+}
+
+}  // namespace
+
+void write_table2_csv(const std::string& path) {
+  // Every vertex of the structured torus has valence 6 (ALGORITHM_NOTES §10.1(b)); level 2 is
+  // large enough (128 x 44) that a 3.5-ring does not wrap around the tube.
+  MeshSpec spec;
+  spec.family = "torus-structured";
+  spec.level = 2;
+  const GeneratedMesh g = generate_mesh(spec);
+  RingCollector rc(g.mesh);
+  const int paper[] = {7, 13, 19, 31, 37, 55};
+  std::ostringstream out;
+  out << "degree,coefficients,ring,points_with_centre,paper_points\n";
+  for (int d = 1; d <= 6; ++d) {
+    rc.collect(0, default_ring(d));
+    out << d << ',' << num_coefficients(d) << ',' << default_ring(d) << ','
+        << rc.neighbours().size() + 1 << ',' << paper[d - 1] << "\n";
+  }
+  write_file_atomic(path, out.str());
+}
+
+void write_table4_csv(const std::string& path, int max_grid_points) {
+  const auto rows = table4(max_grid_points);
+  std::ostringstream out;
+  out << "grid_points,vertices,mean_edge_length,paper_edge_length,rms_error,max_error\n";
+  for (const auto& r : rows)
+    out << r.grid_points << ',' << r.vertices << ',' << format_double(r.mean_edge_length) << ','
+        << format_double(0.5 * r.mean_edge_length) << ',' << format_double(r.rms_error) << ','
+        << format_double(r.max_error) << "\n";
+  write_file_atomic(path, out.str());
+}
+
+bool render_plot(const std::string& base, const std::string& title,
+                 const std::vector<ErrorRow>& rows) {
+  std::vector<const ErrorRow*> ptrs;
+  for (const auto& r : rows) ptrs.push_back(&r);
+  const auto series = series_of(ptrs);
+  std::ostringstream gp;
+  gp << "set logscale xy\nset format y '10^{%L}'\nset xlabel 'mean edge length h'\n"
+        "set ylabel 'error'\nset key outside right top\nset grid\nset xrange [*:*] reverse\n"
+     << "set title \"" << title << "\" noenhanced\n";
+  for (size_t i = 0; i < series.size(); ++i) {
+    gp << "$S" << i << " << EOD\n";
+    for (const auto& [level, r] : series[i].by_level)
+      if (std::isfinite(r->error) && r->error > 0)
+        gp << format_double(r->h) << ' ' << format_double(r->error) << "\n";
+    gp << "EOD\n";
+  }
+  std::ostringstream plot;
+  plot << "plot ";
+  for (size_t i = 0; i < series.size(); ++i) {
+    const double rate = series_rate(series[i]);
+    plot << (i ? ", " : "") << "$S" << i << " using 1:2 with linespoints lw 2 pt " << (i % 7) + 4
+         << " title \"" << series[i].method << " (rate " << fixed(rate) << ")\" noenhanced";
+  }
+  plot << "\n";
+  const std::string script_path = base + ".gp";
+  {
+    std::ofstream out(script_path);
+    out << gp.str() << "set terminal pngcairo size 900,560 font 'sans,11'\nset output '" << base
+        << ".png.tmp'\n"
+        << plot.str() << "set terminal svg size 900,560 font 'sans,11'\nset output '" << base
+        << ".svg.tmp'\n"
+        << plot.str() << "unset output\n";
+  }
+  const std::string cmd = "gnuplot '" + script_path + "' > /dev/null 2>&1";
+  const int rc = std::system(cmd.c_str());
+  std::error_code ec;
+  fs::remove(script_path, ec);
+  if (rc != 0) {
+    fs::remove(base + ".png.tmp", ec);
+    fs::remove(base + ".svg.tmp", ec);
+    return false;
+  }
+  fs::rename(base + ".png.tmp", base + ".png", ec);
+  fs::rename(base + ".svg.tmp", base + ".svg", ec);
+  return !ec;
+}
+
+std::string write_report(const std::vector<Experiment>& experiments, const ReportOptions& options) {
+  const std::string dir = options.results_dir;
+  fs::create_directories(fs::path(dir) / "plots");
+  std::ostringstream md;
+  md << "# curvbench results\n\n"
+     << "Reproduction of the numerical experiments of Wang, Jiao et al., *An Analysis and "
+        "Comparison of Parameterization-Based Computation of Differential Quantities for "
+        "Discrete Surfaces* (CAGD 2009), §5.\n\n"
+     << "Generated by " << build_info() << " on " << utc_timestamp()
+     << ". Regenerate with `make experiments`; the paper's claims are checked in "
+        "[CLAIMS.md](CLAIMS.md).\n\n"
+     << "Errors (paper §5): normals are absolute (RMS = L2, max = Linf of |n~ - n|); "
+        "curvatures are relative norm ratios |e|/|k|. Each table lists the error per mesh level "
+        "and, at the end of the row, the average convergence rate log(e1/eN)/log(h1/hN) with "
+        "the measured mean edge length h. Xu-2 on open surfaces is scored over interior "
+        "vertices only (paper §5.2).\n\n";
+
+  // Table 2.
+  const auto t2 = read_simple_csv(dir + "/table2.csv");
+  if (t2.size() > 1) {
+    md << "## Table 2. Numbers of coefficients in degree-d fittings versus numbers of points in "
+          "typical (d+1)/2 rings\n\n"
+       << "Interior vertex of a regular valence-6 mesh (the structured torus), centre included."
+          "\n\n| degree (d) | ";
+    for (size_t i = 1; i < t2.size(); ++i) md << t2[i][0] << " | ";
+    md << "\n|---|";
+    for (size_t i = 1; i < t2.size(); ++i) md << "---|";
+    md << "\n| #coeffs. | ";
+    for (size_t i = 1; i < t2.size(); ++i) md << t2[i][1] << " | ";
+    md << "\n| ring | ";
+    for (size_t i = 1; i < t2.size(); ++i) md << t2[i][2] << " | ";
+    md << "\n| #points (ours) | ";
+    for (size_t i = 1; i < t2.size(); ++i) md << t2[i][3] << " | ";
+    md << "\n| #points (paper) | ";
+    for (size_t i = 1; i < t2.size(); ++i) md << t2[i][4] << " | ";
+    md << "\n\n";
+  }
+
+  // Table 4.
+  const auto t4 = read_simple_csv(dir + "/table4.csv");
+  if (t4.size() > 1) {
+    const char* paper_rows[][5] = {{"320", "0.11", "3.60e-3", "9.30e-3", ""},
+                                   {"1760", "0.048", "1.12e-3", "3.47e-3", ""},
+                                   {"7320", "0.023", "2.59e-4", "9.03e-4", ""},
+                                   {"31136", "0.011", "6.71e-5", "2.25e-4", ""},
+                                   {"122464", "0.0057", "1.65e-5", "5.70e-5", ""}};
+    md << "## Table 4. Input position errors of torus meshes extracted by marching cubes\n\n"
+       << "Signed distance function of the torus (R = 1, r = 0.3) sampled at n points per axis "
+          "on [-1.5, 1.5]^3, one vertex per sign-changing grid edge (ALGORITHM_NOTES §10.1(a))."
+          " The paper's \"average edge length\" column equals half the true mean edge length "
+          "(see the last two columns).\n\n"
+       << "| n | #verts (ours / paper) | L2 (ours / paper) | Linf (ours / paper) | rate L2 | "
+          "rate Linf | mean edge length | its half / paper's column |\n"
+       << "|---|---|---|---|---|---|---|---|\n";
+    for (size_t i = 1; i < t4.size(); ++i) {
+      const auto& r = t4[i];
+      const double h = std::stod(r[2]), rms = std::stod(r[4]), mx = std::stod(r[5]);
+      std::string rate_l2 = "-", rate_inf = "-";
+      if (i > 1) {
+        const auto& p = t4[i - 1];
+        rate_l2 = fixed(std::log2(std::stod(p[4]) / rms));
+        rate_inf = fixed(std::log2(std::stod(p[5]) / mx));
+      }
+      const auto* paper = i - 1 < 5 ? paper_rows[i - 1] : nullptr;
+      md << "| " << r[0] << "^3 | " << r[1] << " / " << (paper ? paper[0] : "-") << " | "
+         << sci(rms) << " / " << (paper ? paper[2] : "-") << " | " << sci(mx) << " / "
+         << (paper ? paper[3] : "-") << " | " << rate_l2 << " | " << rate_inf << " | " << sci(h, 3)
+         << " | " << sci(0.5 * h, 2) << " / " << (paper ? paper[1] : "-") << " |\n";
+    }
+    md << "\n";
+  }
+
+  // Table 5 (performance issue), if present.
+  const std::string t5 = read_text(dir + "/table5_timing.md");
+  if (!t5.empty()) md << t5 << "\n";
+
+  // Figures.
+  int missing_plots = 0;
+  for (const auto& e : experiments) {
+    const std::string csv = dir + "/" + e.name + ".csv";
+    if (!fs::exists(csv)) {
+      md << "## " << e.title << " (" << e.name << ")\n\nNot run yet: " << csv << " is missing.\n\n";
+      continue;
+    }
+    const auto rows = read_error_csv(csv);
+    md << "## " << e.name << ": " << e.title << " (paper §" << e.section << ")\n\n"
+       << "Source: `experiments/" << fs::path(e.source).filename().string() << "`.\n\n";
+    for (const auto& panel : e.panels) {
+      md << "### " << panel.caption << "\n\n";
+      for (const auto& m : e.meshes) {
+        std::vector<const ErrorRow*> sel;
+        std::vector<ErrorRow> sel_rows;
+        for (const auto& r : rows)
+          if (r.family == m.family && r.quantity == to_string(panel.quantity) &&
+              r.norm == to_string(panel.norm)) {
+            sel.push_back(&r);
+            sel_rows.push_back(r);
+          }
+        if (sel.empty()) continue;
+        const auto series = series_of(sel);
+        std::set<int> levels;
+        std::map<int, const ErrorRow*> any_at;
+        for (const auto* r : sel) {
+          levels.insert(r->level);
+          any_at[r->level] = r;
+        }
+        md << "**" << family_caption(m.family) << "** (`" << m.family << "`, vertex set "
+           << sel.front()->vertex_set << (sel.front()->noise != "none" ? ", noise " : "")
+           << (sel.front()->noise != "none" ? sel.front()->noise : "") << ")\n\n| method |";
+        for (int l : levels) md << " level " << l << " |";
+        md << " rate |\n|---|";
+        for (size_t i = 0; i <= levels.size(); ++i) md << "---|";
+        md << "\n| *h (#verts)* |";
+        for (int l : levels) md << " " << sci(any_at[l]->h) << " (" << any_at[l]->vertices << ") |";
+        md << " |\n";
+        for (const auto& s : series) {
+          md << "| " << s.method << " |";
+          for (int l : levels) {
+            auto it = s.by_level.find(l);
+            md << " " << (it == s.by_level.end() ? "-" : sci(it->second->error)) << " |";
+          }
+          md << " **" << fixed(series_rate(s)) << "** |\n";
+        }
+        const std::string base = panel.id + "_" + m.family;
+        md << "\n";
+        if (options.plots) {
+          if (render_plot(dir + "/plots/" + base, panel.caption + " [" + m.family + "]", sel_rows))
+            md << "![" << panel.id << " " << m.family << "](plots/" << base << ".png) "
+               << "([svg](plots/" << base << ".svg))\n\n";
+          else
+            ++missing_plots;
+        }
+      }
+    }
+  }
+  if (missing_plots > 0)
+    std::fprintf(stderr, "report: %d plots not rendered (is gnuplot installed?)\n", missing_plots);
+  const std::string path = dir + "/REPORT.md";
+  write_file_atomic(path, md.str());
+  return path;
+}
+
+}  // namespace curvbench

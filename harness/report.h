@@ -1,0 +1,38 @@
+// results/REPORT.md and the convergence plots, built from the CSVs in the results folder.
+//
+//   results/<experiment>.csv   errors (results_table.h), written by `curvbench run`
+//   results/rates.csv          rates of every series
+//   results/table2.csv         ring sizes (paper Table 2)
+//   results/table4.csv         isosurface input errors (paper Table 4)
+//   results/table5_timing.md   Table 5 timing (performance issue), included if present
+//   results/plots/<panel>_<family>.{png,svg}   one log-log plot per figure panel and mesh family
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "harness/experiment.h"
+#include "harness/results_table.h"
+
+namespace curvbench {
+
+struct ReportOptions {
+  std::string results_dir = "results";
+  bool plots = true;  ///< render PNG and SVG with gnuplot (skipped with a warning if missing)
+};
+
+/// Writes results/table2.csv: ring sizes of an interior vertex of a regular valence-6 mesh.
+void write_table2_csv(const std::string& path);
+/// Writes results/table4.csv from the marching-cubes torus meshes up to max_grid_points.
+void write_table4_csv(const std::string& path, int max_grid_points);
+
+/// Builds REPORT.md (and the plots) for the given experiments from the CSVs in results_dir.
+/// Returns the path of REPORT.md.
+std::string write_report(const std::vector<Experiment>& experiments, const ReportOptions& options);
+
+/// Renders one panel's log-log plot (error vs h, one line per method, rate in the legend) to
+/// <base>.png and <base>.svg with gnuplot. Returns false if gnuplot is unavailable or fails.
+bool render_plot(const std::string& base, const std::string& title,
+                 const std::vector<ErrorRow>& rows);
+
+}  // namespace curvbench

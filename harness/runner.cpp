@@ -1,0 +1,149 @@
+#include "harness/runner.h"
+
+#include <chrono>
+#include <cstdio>
+#include <set>
+
+#include "core/errors.h"
+#include "meshgen/generate.h"
+#include "methods/estimator.h"
+
+namespace curvbench {
+
+namespace {
+
+std::string ring_label(double ring) {
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "%g", ring);
+  return buf;
+}
+
+std::string noise_label(const Experiment& e, const std::string& family) {
+  if (e.noise_order > 0) return "h^" + std::to_string(e.noise_order);
+  if (family == "torus-iso") return "isosurface";
+  return "none";
+}
+
+// The (quantity, norm) pairs of the experiment's panels, in first-seen order.
+std::vector<std::pair<Quantity, Norm>> panel_measures(const Experiment& e) {
+  std::vector<std::pair<Quantity, Norm>> out;
+  std::set<std::pair<Quantity, Norm>> seen;
+  for (const auto& p : e.panels)
+    if (seen.insert({p.quantity, p.norm}).second) out.push_back({p.quantity, p.norm});
+  return out;
+}
+
+}  // namespace
+
+const ScoredMesh& MeshCache::get(const std::string& family, int level, int noise_order,
+                                 std::uint64_t seed) {
+  const auto key = std::make_tuple(family, level, noise_order, seed);
+  auto it = meshes_.find(key);
+  if (it != meshes_.end()) return *it->second;
+  MeshSpec spec;
+  spec.family = family;
+  spec.level = level;
+  spec.noise_order = noise_order;
+  spec.seed = seed;
+  auto scored = std::make_unique<ScoredMesh>();
+  scored->generated = generate_mesh(spec);
+  const auto& g = scored->generated;
+  scored->exact.resize(g.mesh.num_vertices());
+  for (int v = 0; v < g.mesh.num_vertices(); ++v)
+    scored->exact[v] = g.surface->evaluate(g.exact_points.row(v).transpose());
+  return *(meshes_[key] = std::move(scored));
+}
+
+std::vector<RunCase> expand_cases(const std::vector<Experiment>& experiments) {
+  std::vector<RunCase> cases;
+  for (const auto& e : experiments)
+    for (const auto& m : e.meshes)
+      for (int level : m.levels)
+        for (const auto& method : e.methods) cases.push_back({&e, &m, level, &method});
+  return cases;
+}
+
+std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads) {
+  const Experiment& e = *c.experiment;
+  const ScoredMesh& sm = cache.get(c.mesh->family, c.level, e.noise_order, e.noise_seed);
+  const Mesh& mesh = sm.generated.mesh;
+
+  EstimatorOptions opt;
+  opt.ring = c.method->ring;
+  opt.noisy = e.noisy;
+  opt.threads = threads;
+  const auto estimator = make_estimator(c.method->spec, opt);
+  const std::vector<VertexEstimate> est = estimate_mesh(mesh, *estimator);
+
+  int reduced = 0, failed = 0;
+  for (const auto& x : est) {
+    reduced += x.status == VertexStatus::degree_reduced;
+    failed += x.status == VertexStatus::failed;
+  }
+
+  // Xu-2 is scored over interior vertices on open meshes (paper §5.2) unless told otherwise.
+  VertexSet set = e.vertex_set;
+  if (c.method->has_vertex_set)
+    set = c.method->vertex_set;
+  else if (estimator->name() == "xu" && mesh.has_boundary() && set == VertexSet::all)
+    set = VertexSet::interior;
+  const std::vector<int> vertices = select_vertices(mesh, set);
+
+  std::vector<ErrorRow> rows;
+  for (const auto& [q, norm] : panel_measures(e)) {
+    const ErrorValue ev = compute_error(q, norm, est, sm.exact, vertices);
+    ErrorRow r;
+    r.experiment = e.name;
+    r.surface = sm.generated.surface->name();
+    r.family = c.mesh->family;
+    r.level = c.level;
+    r.vertices = mesh.num_vertices();
+    r.h = mesh.mean_edge_length();
+    r.method = estimator->label();
+    r.degree = estimator->options().degree;
+    r.rings = ring_label(opt.ring > 0 ? opt.ring : estimator->default_ring());
+    r.noise = noise_label(e, c.mesh->family);
+    r.vertex_set = to_string(set);
+    r.quantity = to_string(q);
+    r.norm = to_string(norm);
+    r.error = ev.value;
+    r.counted = ev.vertices;
+    r.excluded = ev.excluded;
+    r.degree_reduced = reduced;
+    r.failed = failed;
+    rows.push_back(std::move(r));
+  }
+  return rows;
+}
+
+std::vector<ErrorRow> run_experiments(const std::vector<Experiment>& experiments,
+                                      const RunOptions& options) {
+  using clock = std::chrono::steady_clock;
+  const auto cases = expand_cases(experiments);
+  MeshCache cache;
+  // ETA from vertices: sizes are known from the levels only after generation, so weight each
+  // case by 4^level (every family's vertex count grows about 4x per level).
+  double total_work = 0.0, done_work = 0.0;
+  for (const auto& c : cases) total_work += static_cast<double>(1u << (2 * c.level));
+  std::vector<ErrorRow> rows;
+  const auto start = clock::now();
+  RunProgress p;
+  p.total = static_cast<int>(cases.size());
+  for (const auto& c : cases) {
+    const auto t0 = clock::now();
+    auto case_rows = run_case(c, cache, options.threads);
+    const auto t1 = clock::now();
+    done_work += static_cast<double>(1u << (2 * c.level));
+    ++p.done;
+    p.current = &c;
+    p.case_seconds = std::chrono::duration<double>(t1 - t0).count();
+    p.elapsed_seconds = std::chrono::duration<double>(t1 - start).count();
+    p.eta_seconds = p.elapsed_seconds * (total_work - done_work) / done_work;
+    p.vertices = case_rows.empty() ? 0 : case_rows.front().vertices;
+    if (options.progress) options.progress(p);
+    rows.insert(rows.end(), case_rows.begin(), case_rows.end());
+  }
+  return rows;
+}
+
+}  // namespace curvbench

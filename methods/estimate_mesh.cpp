@@ -1,0 +1,65 @@
+// Estimator base-class helpers and the parallel per-vertex loop; see estimator.h.
+#include <omp.h>
+
+#include <cctype>
+#include <string>
+
+#include "mesh/rings.h"
+#include "methods/estimator.h"
+
+namespace curvbench {
+
+const char* to_string(VertexStatus status) {
+  switch (status) {
+    case VertexStatus::ok:
+      return "ok";
+    case VertexStatus::degree_reduced:
+      return "degree_reduced";
+    case VertexStatus::failed:
+      return "failed";
+    case VertexStatus::excluded:
+      return "excluded";
+  }
+  return "unknown";
+}
+
+std::string Estimator::display_name() const {
+  std::string s = name();
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+std::string Estimator::label() const {
+  return display_name() + "-" + std::to_string(options_.degree);
+}
+
+double Estimator::default_ring() const {
+  // Paper §5.1 / Table 2: (d+1)/2; noisy input (§5.3): half a ring more.
+  return curvbench::default_ring(options_.degree) + (options_.noisy ? 0.5 : 0.0);
+}
+
+std::vector<VertexEstimate> estimate_mesh(const Mesh& mesh, const Estimator& estimator) {
+  const VertexMatrix normals = mesh.area_weighted_normals();
+  const MeshContext ctx{mesh, normals};
+  const int n = mesh.num_vertices();
+  std::vector<VertexEstimate> out(static_cast<size_t>(n));
+  int threads =
+      estimator.options().threads > 0 ? estimator.options().threads : omp_get_max_threads();
+  if (threads < 1) threads = 1;
+  if (threads > n) threads = n > 0 ? n : 1;
+  // Workspaces are made before the parallel region: make_workspace may allocate and throw, and
+  // an exception must not escape an OpenMP region.
+  std::vector<std::unique_ptr<Workspace>> workspaces;
+  workspaces.reserve(static_cast<size_t>(threads));
+  for (int t = 0; t < threads; ++t) workspaces.push_back(estimator.make_workspace(mesh));
+    // Every vertex is computed independently from read-only data with its own thread's scratch,
+    // so the result does not depend on the schedule or the number of threads.
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 64)
+  for (int v = 0; v < n; ++v) {
+    Workspace& ws = *workspaces[static_cast<size_t>(omp_get_thread_num())];
+    estimator.estimate(ctx, v, ws, out[static_cast<size_t>(v)]);
+  }
+  return out;
+}
+
+}  // namespace curvbench

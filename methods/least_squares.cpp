@@ -1,0 +1,97 @@
+// Column scaling and comparison solvers; see least_squares.h.
+#include "methods/least_squares.h"
+
+#include <cmath>
+
+namespace curvbench {
+
+void scale_columns(FitMatrix& A, int ncols, ColumnScaling scaling, ColVector& s) {
+  const Eigen::Index m = A.rows();
+  s.resize(ncols);
+  for (int j = 0; j < ncols; ++j) {
+    double norm = 1.0;
+    if (scaling == ColumnScaling::two_norm) {
+      double sum = 0.0;
+      for (Eigen::Index i = 0; i < m; ++i) sum += A(i, j) * A(i, j);
+      norm = std::sqrt(sum);
+    } else if (scaling == ColumnScaling::inf_norm) {
+      norm = 0.0;
+      for (Eigen::Index i = 0; i < m; ++i) norm = std::max(norm, std::abs(A(i, j)));
+    }
+    if (!(norm > 0.0) || !std::isfinite(norm)) norm = 1.0;
+    s(j) = norm;
+    if (norm != 1.0)
+      for (Eigen::Index i = 0; i < m; ++i) A(i, j) /= norm;
+  }
+}
+
+namespace {
+
+// X = V_r diag(1/sigma) U_r^T B over the kept singular values.
+template <typename Svd>
+int truncated_from(const Svd& svd, const RhsMatrix& B, double threshold, bool relative,
+                   CoeffMatrix& X) {
+  const auto& sigma = svd.singularValues();
+  const Eigen::Index p = sigma.size();
+  const double cut = relative ? (p > 0 ? threshold * sigma(0) : 0.0) : threshold;
+  X.setZero(svd.matrixV().rows(), B.cols());
+  int kept = 0;
+  for (Eigen::Index i = 0; i < p; ++i) {
+    if (!(sigma(i) > cut)) break;  // sorted in decreasing order
+    ++kept;
+    for (Eigen::Index c = 0; c < B.cols(); ++c) {
+      const double coef = svd.matrixU().col(i).dot(B.col(c)) / sigma(i);
+      X.col(c) += coef * svd.matrixV().col(i);
+    }
+  }
+  return kept;
+}
+
+}  // namespace
+
+int truncated_svd_solve(const FitMatrix& A, const RhsMatrix& B, SvdAlgorithm algorithm,
+                        double threshold, bool relative, CoeffMatrix& X,
+                        LeastSquaresScratch& scratch) {
+  if (algorithm == SvdAlgorithm::jacobi) {
+    scratch.jacobi.compute(A, Eigen::ComputeThinU | Eigen::ComputeThinV);
+    return truncated_from(scratch.jacobi, B, threshold, relative, X);
+  }
+  scratch.bdc.compute(Eigen::MatrixXd(A), Eigen::ComputeThinU | Eigen::ComputeThinV);
+  return truncated_from(scratch.bdc, B, threshold, relative, X);
+}
+
+int normal_equations_eigen_solve(const FitMatrix& A, const RhsMatrix& B, double threshold,
+                                 CoeffMatrix& X, LeastSquaresScratch& scratch) {
+  const Eigen::Index n = A.cols();
+  const Eigen::Index m = A.rows();
+  // Explicit loops: small sizes, fixed summation order (bit-reproducible, no Eigen threading).
+  scratch.ata.resize(n, n);
+  scratch.atb.resize(n, B.cols());
+  for (Eigen::Index a = 0; a < n; ++a) {
+    for (Eigen::Index b = 0; b <= a; ++b) {
+      double sum = 0.0;
+      for (Eigen::Index i = 0; i < m; ++i) sum += A(i, a) * A(i, b);
+      scratch.ata(a, b) = scratch.ata(b, a) = sum;
+    }
+    for (Eigen::Index c = 0; c < B.cols(); ++c) {
+      double sum = 0.0;
+      for (Eigen::Index i = 0; i < m; ++i) sum += A(i, a) * B(i, c);
+      scratch.atb(a, c) = sum;
+    }
+  }
+  scratch.eigen.compute(scratch.ata);
+  X.setZero(n, B.cols());
+  if (scratch.eigen.info() != Eigen::Success) return 0;
+  const auto& lambda = scratch.eigen.eigenvalues();  // increasing
+  const auto& U = scratch.eigen.eigenvectors();
+  int kept = 0;
+  for (Eigen::Index i = n - 1; i >= 0; --i) {
+    if (!(lambda(i) >= threshold)) break;
+    ++kept;
+    for (Eigen::Index c = 0; c < B.cols(); ++c)
+      X.col(c) += (U.col(i).dot(scratch.atb.col(c)) / lambda(i)) * U.col(i);
+  }
+  return kept;
+}
+
+}  // namespace curvbench

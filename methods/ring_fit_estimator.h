@@ -1,0 +1,122 @@
+// The shared per-vertex driver of the ring-based fitting methods (ALGORITHM_NOTES §5.5):
+// LHF-d, LOP-d and (through the parameterization hook) LSCM-d.
+//
+// Per vertex v (approximate normal m0 = area-weighted normal, frame of §3):
+//   r0 = options().ring, or default_ring() = (d+1)/2 (+0.5 when noisy)
+//   adaptive:     ring = collect_at_least(v, r0, min_neighbours(d), 2 r0)   (point-count rule)
+//   non-adaptive: ring = collect(v, r0)
+//   loop:
+//     uv  = parameterize(ring)                       hook; default: projection onto (t1, t2)
+//     rows: the centre (if options().include_centre, gamma = 1) then the ring neighbours in
+//           discovery order; gamma_i = max(0, m_i . m0) if use_normal_safeguard() else 1;
+//           rows with gamma_i <= 0 or non-finite (u, v) are dropped; at most kMaxRows rows
+//     data: height route     f_i = (p_i - p0) . m0                        (1 RHS, LHF)
+//           parametric route x_i - p0                                     (3 RHS, LOP, LSCM)
+//     weights eq. (15), safeguarded QR (polynomial_fit.h)  ->  d_used
+//     adaptive and d_used < d and ring < 2 r0 and the ring can grow: ring += 0.5, repeat
+//   quantities (core/shape_operator.h): height route curvature_from_height(t1, t2, m0, f_u, ...),
+//   parametric route curvature_from_parametric(x_u, x_v, x_uu, x_uv, x_vv).
+// Status: ok (d_used = d), degree_reduced (1 <= d_used < d), failed (d_used = 0, the hook
+// failed, or non-finite quantities): normal = m0, k1 = k2 = H = K = 0, d1 = t1, d2 = t2.
+// estimate() never throws and leaves no NaN (a vertex without faces reports its zero m0).
+//
+// ---- Extension point (LSCM and any other ring parameterization) -------------------------------
+// Derive from RingFitEstimator, pass FitRoute::parametric to the constructor, and override
+//
+//   bool parameterize(const RingView& ring, std::vector<Vec2>& uv,
+//                     ParamScratch* scratch) const override;
+//
+//   in:  ring.mesh, ring.approx_normals   the mesh and its area-weighted normals
+//        ring.centre                      the vertex v being estimated
+//        ring.neighbours                  RingCollector::neighbours(): V_r \ {v}, discovery order
+//        ring.faces                       RingCollector::faces(): the ring faces F_r
+//        ring.ring                        the ring r actually collected (after adaptive growth)
+//        ring.frame                       the §3 frame (t1, t2, m0) of the approximate normal
+//        scratch                          the object this estimator's make_param_scratch()
+//                                         returned for the calling thread (nullptr by default)
+//   out: uv resized to N = 1 + ring.neighbours.size(); uv[0] = centre, uv[i] = neighbours[i-1].
+//        The driver translates uv[0] to (0, 0). The map must preserve orientation: (u, v)
+//        counter-clockwise seen from the outward/upward side (flip v -> -v if the mapped patch
+//        has negative signed area), so that x_u x x_v points outward. A non-finite uv[i] drops
+//        that row.
+//   return false if no parameterization exists (e.g. the patch is not a disk): the vertex is
+//        then reported as failed (or, in the adaptive rank-failure loop, the previous fit is
+//        kept if there was one).
+//   It is called once per fit attempt (several times when the ring grows), from several threads
+//   at once (const; keep all mutable state in the scratch object), and must not throw.
+//
+// Optional overrides:
+//   std::unique_ptr<ParamScratch> make_param_scratch(const Mesh&) const
+//       per-thread state for parameterize() (e.g. an LscmMap); called once per thread before
+//       the parallel loop, may allocate and throw.
+//   bool use_normal_safeguard() const
+//       whether gamma_i = max(0, m_i . m0) of eq. (15) multiplies the weights; the default is
+//       options().normal_safeguard (LHF/LOP); ALGORITHM_NOTES §4 recommends gamma = 1 for LSCM.
+// Everything else (rings, rows, weights, solver, rank-failure rule, formulas, status) is shared.
+#pragma once
+
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "core/types.h"
+#include "methods/estimator.h"
+#include "methods/local_frame.h"
+#include "methods/polynomial_fit.h"
+
+namespace curvbench {
+
+/// Which formulas of paper Table 1 turn the fitted derivatives into quantities.
+enum class FitRoute {
+  height,      ///< fit the height f = (p - p0) . m0 (1 RHS); Table 1 height column (§6.1)
+  parametric,  ///< fit x - p0 (3 RHS); eqs. (1)-(8) (§6.2)
+};
+
+/// The ring handed to the parameterization hook (see the file comment).
+struct RingView {
+  const Mesh& mesh;
+  const VertexMatrix& approx_normals;
+  int centre;
+  double ring;
+  std::span<const int> neighbours;
+  std::span<const int> faces;
+  const LocalFrame& frame;
+};
+
+/// Per-thread state of a parameterization hook; derive from it.
+class ParamScratch {
+ public:
+  virtual ~ParamScratch() = default;
+};
+
+class RingFitEstimator : public Estimator {
+ public:
+  std::unique_ptr<Workspace> make_workspace(const Mesh& mesh) const final;
+  void estimate(const MeshContext& ctx, int v, Workspace& ws, VertexEstimate& out) const final;
+
+  FitRoute route() const { return route_; }
+  /// Least-squares settings used for every fit (degree, centre row, solver, QR tolerance).
+  const FitSettings& fit_settings() const { return settings_; }
+  /// Replaces the solver settings (comparison runs: SVD instead of the safeguarded QR). The
+  /// degree and include_centre always come from options().
+  void set_solver(LsqSolver solver, ColumnScaling scaling = ColumnScaling::two_norm,
+                  double threshold = 1e-8, bool relative_threshold = false);
+
+ protected:
+  /// Throws UsageError for a degree outside 1..kMaxDegree, a ring that is neither 0 nor one of
+  /// 1, 1.5, 2, ..., a negative QR tolerance, a non-finite weight power or negative threads.
+  RingFitEstimator(EstimatorOptions options, FitRoute route);
+
+  /// The parameterization hook; default: orthogonal projection onto the frame plane (LOP,
+  /// paper §4.2.2): uv_i = ((p_i - p0) . t1, (p_i - p0) . t2).
+  virtual bool parameterize(const RingView& ring, std::vector<Vec2>& uv,
+                            ParamScratch* scratch) const;
+  virtual std::unique_ptr<ParamScratch> make_param_scratch(const Mesh& mesh) const;
+  virtual bool use_normal_safeguard() const { return options().normal_safeguard; }
+
+ private:
+  FitRoute route_;
+  FitSettings settings_;
+};
+
+}  // namespace curvbench

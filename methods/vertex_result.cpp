@@ -1,0 +1,48 @@
+// VertexEstimate fillers; see vertex_result.h.
+#include "methods/vertex_result.h"
+
+#include <cmath>
+
+namespace curvbench {
+
+void set_failed(const Vec3& m0, const LocalFrame& frame, double ring, int points,
+                VertexEstimate& out) {
+  out.normal = m0;
+  out.k1 = out.k2 = out.H = out.K = 0.0;
+  out.d1 = frame.t1;
+  out.d2 = frame.t2;
+  out.degree = 0;
+  out.points = points;
+  out.ring = ring;
+  out.status = VertexStatus::failed;
+}
+
+void set_excluded(double ring, int points, VertexEstimate& out) {
+  out = VertexEstimate{};  // all NaN
+  out.degree = 0;
+  out.points = points;
+  out.ring = ring;
+  out.status = VertexStatus::excluded;
+}
+
+bool set_quantities(const Curvature& c, int degree, int requested, int points, double ring,
+                    VertexEstimate& out) {
+  const bool finite = c.normal.allFinite() && std::isfinite(c.k1) && std::isfinite(c.k2) &&
+                      std::isfinite(c.H) && std::isfinite(c.K) && c.d1.allFinite() &&
+                      c.d2.allFinite();
+  if (degree < 1 || !finite) return false;
+  out.normal = c.normal;
+  out.k1 = c.k1;
+  out.k2 = c.k2;
+  out.H = c.H;
+  out.K = c.K;
+  out.d1 = c.d1;
+  out.d2 = c.d2;
+  out.degree = degree;
+  out.points = points;
+  out.ring = ring;
+  out.status = degree >= requested ? VertexStatus::ok : VertexStatus::degree_reduced;
+  return true;
+}
+
+}  // namespace curvbench

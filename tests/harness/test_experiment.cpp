@@ -1,0 +1,147 @@
+// Experiment files: parsing, error messages, the shipped definitions, results CSV round trip.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+#include "core/errors.h"
+#include "harness/experiment.h"
+#include "harness/results_table.h"
+#include "meshgen/generate.h"
+#include "methods/estimator.h"
+#include "tests/harness/cli_runner.h"
+
+namespace curvbench {
+namespace {
+
+TEST(Experiment, ParsesEveryKey) {
+  const Experiment e = parse_experiment_text(
+      "# comment line\n"
+      "name     demo   # trailing comment\n"
+      "title    \"A demo, with commas\"\n"
+      "section  5.3\n"
+      "noise    order=2 seed=77\n"
+      "noisy    yes\n"
+      "vertex-set interior\n"
+      "mesh     bump-48 levels=1,2,3\n"
+      "method   lhf-2 ring=2.5\n"
+      "method   xu-2 vertex-set=all\n"
+      "panel    p1 \"Caption one.\" normal Linf\n",
+      "demo.exp");
+  EXPECT_EQ(e.name, "demo");
+  EXPECT_EQ(e.title, "A demo, with commas");
+  EXPECT_EQ(e.section, "5.3");
+  EXPECT_EQ(e.noise_order, 2);
+  EXPECT_EQ(e.noise_seed, 77u);
+  EXPECT_TRUE(e.noisy);
+  EXPECT_EQ(e.vertex_set, VertexSet::interior);
+  ASSERT_EQ(e.meshes.size(), 1u);
+  EXPECT_EQ(e.meshes[0].levels, (std::vector<int>{1, 2, 3}));
+  ASSERT_EQ(e.methods.size(), 2u);
+  EXPECT_DOUBLE_EQ(e.methods[0].ring, 2.5);
+  EXPECT_FALSE(e.methods[0].has_vertex_set);
+  EXPECT_TRUE(e.methods[1].has_vertex_set);
+  EXPECT_EQ(e.methods[1].vertex_set, VertexSet::all);
+  ASSERT_EQ(e.panels.size(), 1u);
+  EXPECT_EQ(e.panels[0].caption, "Caption one.");
+  EXPECT_EQ(e.panels[0].quantity, Quantity::normal);
+  EXPECT_EQ(e.panels[0].norm, Norm::Linf);
+}
+
+TEST(Experiment, ErrorsNameFileAndLine) {
+  const std::string base = "name x\nmesh bump-48 levels=1\nmethod lhf-2\npanel p c H L2\n";
+  auto expect_error = [](const std::string& text, const std::string& needle) {
+    try {
+      parse_experiment_text(text, "bad.exp");
+      ADD_FAILURE() << "expected InputError for: " << text;
+    } catch (const InputError& err) {
+      EXPECT_NE(std::string(err.what()).find(needle), std::string::npos) << err.what();
+    }
+  };
+  expect_error(base + "colour red\n", "bad.exp:5: unknown key 'colour'");
+  expect_error(base + "panel q c curvature L2\n", "bad.exp:5: unknown quantity");
+  expect_error(base + "noise order=5\n", "bad.exp:5: noise order must be 2 or 3");
+  expect_error(base + "mesh bump-48 levels=1,x\n", "bad.exp:5: 'x' is not an integer");
+  expect_error(base + "title \"open\n", "bad.exp:5: unterminated quote");
+  expect_error("mesh bump-48 levels=1\nmethod lhf-2\npanel p c H L2\n", "missing 'name'");
+  expect_error("name x\nmethod lhf-2\npanel p c H L2\n", "no 'mesh' line");
+  EXPECT_THROW(parse_experiment("/nonexistent/x.exp"), InputError);
+}
+
+// Every shipped experiment parses, names valid families, levels and methods, and has a unique
+// name and unique panel ids.
+TEST(Experiment, ShippedDefinitionsAreValid) {
+  const auto files = list_experiment_files(std::string(CURVBENCH_SOURCE_DIR) + "/experiments");
+  ASSERT_GE(files.size(), 9u);
+  std::set<std::string> names, panels;
+  const auto families = mesh_families();
+  for (const auto& f : files) {
+    const Experiment e = parse_experiment(f);
+    EXPECT_TRUE(names.insert(e.name).second) << "duplicate experiment " << e.name;
+    for (const auto& m : e.meshes) {
+      EXPECT_NE(std::find(families.begin(), families.end(), m.family), families.end())
+          << f << ": family " << m.family;
+      for (int l : m.levels) {
+        EXPECT_GE(l, 1);
+        EXPECT_LE(l, max_mesh_level(m.family)) << f;
+      }
+    }
+    for (const auto& m : e.methods) EXPECT_NO_THROW(make_estimator(m.spec, {})) << m.spec;
+    for (const auto& p : e.panels) EXPECT_TRUE(panels.insert(p.id).second) << p.id;
+  }
+}
+
+TEST(ResultsTable, CsvRoundTripAndRates) {
+  std::vector<ErrorRow> rows;
+  for (int level = 1; level <= 4; ++level) {
+    ErrorRow r;
+    r.experiment = "demo";
+    r.surface = "torus";
+    r.family = "torus-structured";
+    r.level = level;
+    r.vertices = 1000 << (2 * level);
+    r.h = 0.1 / (1 << (level - 1)) * (1.0 + 0.01 * level);
+    r.method = "LHF-2";
+    r.degree = 2;
+    r.rings = "1.5";
+    r.noise = "none";
+    r.vertex_set = "all";
+    r.quantity = "normal";
+    r.norm = "L2";
+    r.error = 0.3 * std::pow(r.h, 2.0);
+    rows.push_back(r);
+  }
+  rows.back().failed = 3;
+  const auto dir = testing::fresh_dir("results_csv");
+  const std::string path = (dir / "demo.csv").string();
+  write_error_csv(path, rows);
+  const auto back = read_error_csv(path);
+  ASSERT_EQ(back.size(), rows.size());
+  for (size_t i = 0; i < rows.size(); ++i) {
+    EXPECT_EQ(back[i].h, rows[i].h);  // %.17g round-trips exactly
+    EXPECT_EQ(back[i].error, rows[i].error);
+    EXPECT_EQ(back[i].vertices, rows[i].vertices);
+  }
+  EXPECT_EQ(back.back().failed, 3);
+  const auto rates = compute_rates(back);
+  ASSERT_EQ(rates.size(), 1u);
+  EXPECT_NEAR(rates[0].rate, 2.0, 1e-12);
+  EXPECT_EQ(rates[0].levels, "1-4");
+  ASSERT_EQ(rates[0].pairwise.size(), 3u);
+  for (double p : rates[0].pairwise) EXPECT_NEAR(p, 2.0, 1e-12);
+  // A damaged file is refused with its line number.
+  write_file_atomic((dir / "bad.csv").string(),
+                    "experiment,surface,family,level,vertices,h,method,degree,rings,noise,"
+                    "vertex_set,quantity,norm,error,counted,excluded,degree_reduced,failed\n"
+                    "demo,torus,f,1,10,0.1,LHF-2,2,1.5,none,all,normal,L2,abc,1,0,0,0\n");
+  try {
+    read_error_csv((dir / "bad.csv").string());
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.csv:2"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace curvbench
