@@ -555,7 +555,11 @@ void require_failure(Check& c, const Series& s, const std::string& prefix = "") 
 
 // ---- claim constants --------------------------------------------------------------------------
 
-const char* const kWell = "torus-structured";
+// The well-shaped torus (the paper's unstructured GAMBIT meshes): the structured staggered mesh
+// with seeded tangential jitter (ALGORITHM_NOTES §10.1(b)). The unjittered structured mesh is
+// too symmetric to stand in for it (every vertex has the same stencil: its principal directions
+// come out exact to roundoff and its Linf errors converge like its L2 errors).
+const char* const kWell = "torus-jittered";
 const char* const kPoor = "torus-iso-projected";
 const char* const kNoisyTorus = "torus-iso";
 const char* const kBumpIrr = "bump-irregular";
@@ -717,6 +721,10 @@ void claim_a4(const Data& d, Check& c) {
   }
 }
 
+// Errors below this are roundoff (e.g. principal directions on a perfectly symmetric mesh, ~1e-16)
+// and are treated as equal by the A5 comparison.
+constexpr double kRoundoffError = 1e-12;
+
 void claim_a5(const Data& d, Check& c) {
   using Key = std::tuple<std::string, std::string, int, std::string, std::string, std::string,
                          std::string, std::string, std::string>;
@@ -743,6 +751,8 @@ void claim_a5(const Data& d, Check& c) {
       diff = 0.0;
     else if (!std::isfinite(a) || !std::isfinite(b))
       diff = kInf;
+    else if (std::max(std::abs(a), std::abs(b)) < kRoundoffError)
+      diff = 0.0;  // both errors are roundoff: their ratio carries no information
     else if (a != b)
       diff = std::abs(a - b) / std::max(std::abs(a), std::abs(b));
     ++pairs;
@@ -983,6 +993,17 @@ void claim_c4(const Data& d, Check& c) {
     c.require(s->rate() <= 2.5, rate_line(*s, "<= 2.50"));
   for (const char* q : {"H", "K"})
     if (const Series* s = torus34(d, c, kPoor, "LSCM-4", q)) require_failure(c, *s);
+  // Not part of the band: the same map solved by OpenNL conjugate gradients (tolerance 1e-6),
+  // CGAL's LSCM solver without Eigen and most likely the paper's. Reported when it was run.
+  for (const auto& fam : kTori)
+    for (const char* q : {"normal", "H", "K"}) {
+      Check scratch;  // a missing series is not a missing piece of this claim
+      if (const Series* s = torus34(d, scratch, fam, "LSCM-CG-4", q)) {
+        const auto why = failure_reasons(*s);
+        c.info(rate_line(*s, "(conjugate-gradient LSCM map, not judged)") +
+               (why.empty() ? "; converges" : "; fails to converge"));
+      }
+    }
 }
 
 void claim_c5(const Data& d, Check& c) {
@@ -1448,7 +1469,7 @@ const std::vector<ClaimDef>& claim_defs() {
        "Degree-2 normals converge quadratically on the noise-free torus",
        "LHF-2, LOP-2 and LSCM-2: normals converge about quadratically in both L2 and Linf, on both "
        "mesh types (well-shaped and poor-shaped torus).",
-       "rate in [1.6, 2.6] (normal L2 and Linf; torus-structured and torus-iso-projected; rings "
+       "rate in [1.6, 2.6] (normal L2 and Linf; torus-jittered and torus-iso-projected; rings "
        "1.5)",
        claim_b1,
        {}},
@@ -1471,7 +1492,7 @@ const std::vector<ClaimDef>& claim_defs() {
       {"B4",
        "Xu-2 on well-shaped meshes: better in L2, substantially worse in Linf",
        "Xu-2 on well-shaped meshes: better than the others in L2 but substantially worse in Linf.",
-       "torus-structured: L2 error of Xu-2 < that of LHF-2 at >= 3 of 4 levels (normals and H); "
+       "torus-jittered: L2 error of Xu-2 < that of LHF-2 at >= 3 of 4 levels (normals and H); "
        "Linf error of Xu-2 >= 2x that of LHF-2 at the finest level (normals and H)",
        claim_b4,
        {}},
@@ -1517,7 +1538,7 @@ const std::vector<ClaimDef>& claim_defs() {
        "LSCM-4 an order below theory; fails on poor-shaped meshes",
        "LSCM-4 converges nearly an order below theory on well-shaped meshes. It fails to converge "
        "on poor-shaped meshes.",
-       "torus-structured: normals L2 rate <= 3.5, H L2 rate <= 2.5; torus-iso-projected: the "
+       "torus-jittered: normals L2 rate <= 3.5, H L2 rate <= 2.5; torus-iso-projected: the "
        "failure criterion for H and K (L2)",
        claim_c4,
        {}},

@@ -122,11 +122,13 @@ Command add_run_command(CLI::App& app) {
                      c.method->spec.c_str(), p.vertices, p.case_seconds,
                      duration(p.elapsed_seconds).c_str(), duration(p.eta_seconds).c_str());
       };
-      // Run experiment by experiment so each CSV lands as soon as it is complete.
-      for (const auto& e : selected) {
-        const auto rows = run_experiments({e}, ro);
-        write_error_csv(args->output + "/" + e.name + ".csv", rows);
-      }
+      // Each experiment's CSV lands as soon as its last case is done.
+      const std::string out_dir = args->output;
+      ro.experiment_done = [out_dir](const Experiment& e, const std::vector<ErrorRow>& rows) {
+        write_error_csv(out_dir + "/" + e.name + ".csv", rows);
+        std::fprintf(stderr, "[run] wrote %s/%s.csv\n", out_dir.c_str(), e.name.c_str());
+      };
+      run_experiments(selected, ro);
     }
 
     // Rates over every experiment CSV present (all of them, not only the ones just run).

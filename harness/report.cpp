@@ -59,7 +59,11 @@ std::vector<std::vector<std::string>> read_simple_csv(const std::string& path) {
 }
 
 std::string family_caption(const std::string& family) {
-  if (family == "torus-structured") return "well-shaped torus (structured staggered mesh)";
+  if (family == "torus-jittered")
+    return "well-shaped torus (staggered mesh with seeded tangential jitter; the stand-in for the "
+           "paper's GAMBIT meshes)";
+  if (family == "torus-structured")
+    return "perfectly structured torus (identical stencils everywhere; not in the paper)";
   if (family == "torus-iso-projected") return "poor-shaped torus (isosurface, projected)";
   if (family == "torus-iso") return "noisy torus (isosurface, unprojected)";
   if (family == "bump-48") return "4-8 mesh";
@@ -296,7 +300,15 @@ std::string write_report(const std::vector<Experiment>& experiments, const Repor
         const std::string base = panel.id + "_" + m.family;
         md << "\n";
         if (options.plots) {
-          if (render_plot(dir + "/plots/" + base, panel.caption + " [" + m.family + "]", sel_rows))
+          // Two title lines: "Fig. 6 (left). [family]" and the rest of the caption (gnuplot
+          // turns \n inside a double-quoted title into a line break).
+          const size_t after_fig = panel.caption.rfind("Fig. ", 0) == 0 ? 5 : 0;
+          const auto cut = panel.caption.find(". ", after_fig);
+          const std::string title = cut == std::string::npos
+                                        ? panel.caption + " [" + m.family + "]"
+                                        : panel.caption.substr(0, cut + 1) + " [" + m.family +
+                                              "]\\n" + panel.caption.substr(cut + 2);
+          if (render_plot(dir + "/plots/" + base, title, sel_rows))
             md << "![" << panel.id << " " << m.family << "](plots/" << base << ".png) "
                << "([svg](plots/" << base << ".svg))\n\n";
           else

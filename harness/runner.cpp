@@ -142,6 +142,13 @@ std::vector<ErrorRow> run_experiments(const std::vector<Experiment>& experiments
     p.vertices = case_rows.empty() ? 0 : case_rows.front().vertices;
     if (options.progress) options.progress(p);
     rows.insert(rows.end(), case_rows.begin(), case_rows.end());
+    const bool last_of_experiment = &c == &cases.back() || (&c + 1)->experiment != c.experiment;
+    if (last_of_experiment && options.experiment_done) {
+      std::vector<ErrorRow> mine;
+      for (const auto& r : rows)
+        if (r.experiment == c.experiment->name) mine.push_back(r);
+      options.experiment_done(*c.experiment, mine);
+    }
   }
   return rows;
 }

@@ -51,6 +51,8 @@ struct RunProgress {
 struct RunOptions {
   int threads = 0;                                   ///< 0 = OpenMP default
   std::function<void(const RunProgress&)> progress;  ///< called after each case
+  /// Called with an experiment's rows as soon as its last case is done (e.g. to write its CSV).
+  std::function<void(const Experiment&, const std::vector<ErrorRow>&)> experiment_done;
 };
 
 /// Expands the experiments into cases (experiment order, then mesh, level, method).

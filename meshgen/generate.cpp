@@ -24,11 +24,8 @@ struct FamilyInfo {
 };
 
 constexpr FamilyInfo kFamilies[] = {
-    {"torus-structured", 4},
-    {"torus-iso", 5},
-    {"torus-iso-projected", 5},
-    {"bump-48", max_bump_level()},
-    {"bump-irregular", max_bump_level()},
+    {"torus-structured", 4},    {"torus-jittered", 4},         {"torus-iso", 5},
+    {"torus-iso-projected", 5}, {"bump-48", max_bump_level()}, {"bump-irregular", max_bump_level()},
 };
 constexpr int kMaxNoiseOrder = 4;
 
@@ -66,6 +63,9 @@ GeneratedMesh generate_mesh(const MeshSpec& spec) {
   GeneratedMesh gm;
   if (spec.family == "torus-structured") {
     gm = torus_structured(spec.level, spec.jitter, spec.seed);
+  } else if (spec.family == "torus-jittered") {
+    gm = torus_structured(spec.level, true, spec.seed);
+    gm.family = spec.family;
   } else if (spec.family == "torus-iso" || spec.family == "torus-iso-projected") {
     gm = torus_isosurface(isosurface_grid_points(spec.level), spec.family == "torus-iso-projected");
     gm.family = spec.family;

@@ -4,6 +4,9 @@
 // Families and levels:
 //   torus-structured     levels 1..4  staggered well-shaped torus, n_u x n_v = 64x22 .. 512x176
 //                                     (torus_structured.h; --jitter allowed)
+//   torus-jittered       levels 1..4  the same with seeded tangential jitter of +-0.15 cells,
+//                                     vertices on the torus: the stand-in for the paper's
+//                                     unstructured GAMBIT meshes (breaks the stencil symmetry)
 //   torus-iso            levels 1..5  marching-cubes torus, n = 16..256 grid points per axis,
 //                                     vertices left where marching cubes put them (§5.3 noise)
 //   torus-iso-projected  levels 1..5  the same, vertices projected onto the torus (§5.1)

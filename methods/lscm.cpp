@@ -21,8 +21,14 @@ class LscmEstimator final : public RingFitEstimator {
   LscmEstimator(EstimatorOptions options, bool cgal, const LscmSettings& settings)
       : RingFitEstimator(options, FitRoute::parametric), cgal_(cgal), settings_(settings) {}
 
-  std::string name() const override { return cgal_ ? "lscm" : "lscm-fast"; }
-  std::string display_name() const override { return cgal_ ? "LSCM" : "LSCM-fast"; }
+  std::string name() const override {
+    if (!cgal_) return "lscm-fast";
+    return settings_.cgal_solver == CgalLscmSolver::opennl_cg ? "lscm-cg" : "lscm";
+  }
+  std::string display_name() const override {
+    if (!cgal_) return "LSCM-fast";
+    return settings_.cgal_solver == CgalLscmSolver::opennl_cg ? "LSCM-CG" : "LSCM";
+  }
 
  protected:
   bool parameterize(const RingView& ring, std::vector<Vec2>& uv,

@@ -21,6 +21,7 @@
   X("xu", 2, 2, make_xu_estimator)              \
   X("lscm", 1, 6, make_lscm_estimator)          \
   X("lscm-fast", 1, 6, make_lscm_fast_estimator) \
+  X("lscm-cg", 1, 6, make_lscm_cg_estimator)     \
   X("jet", 2, 4, make_jet_estimator)
 // clang-format on
 

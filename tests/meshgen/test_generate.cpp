@@ -26,10 +26,12 @@ std::string usage_error(const MeshSpec& spec) {
 }
 
 TEST(Generate, Families) {
-  const std::vector<std::string> expected = {"torus-structured", "torus-iso", "torus-iso-projected",
-                                             "bump-48", "bump-irregular"};
+  const std::vector<std::string> expected = {"torus-structured", "torus-jittered",
+                                             "torus-iso",        "torus-iso-projected",
+                                             "bump-48",          "bump-irregular"};
   EXPECT_EQ(mesh_families(), expected);
   EXPECT_EQ(max_mesh_level("torus-structured"), 4);
+  EXPECT_EQ(max_mesh_level("torus-jittered"), 4);
   EXPECT_EQ(max_mesh_level("torus-iso"), 5);
   EXPECT_EQ(max_mesh_level("torus-iso-projected"), 5);
   EXPECT_EQ(max_mesh_level("bump-48"), 5);
@@ -55,6 +57,13 @@ TEST(Generate, DispatchesToTheGenerators) {
   spec.jitter = true;
   spec.seed = 17;
   EXPECT_EQ(generate_mesh(spec).mesh.vertices(), torus_structured(2, true, 17).mesh.vertices());
+  // torus-jittered is the jittered structured mesh under its own family name.
+  MeshSpec jittered{"torus-jittered", 2, 0, 17};
+  const GeneratedMesh gj = generate_mesh(jittered);
+  EXPECT_EQ(gj.family, "torus-jittered");
+  EXPECT_EQ(gj.mesh.vertices(), torus_structured(2, true, 17).mesh.vertices());
+  EXPECT_EQ(gj.mesh.faces(), torus_structured(2, false, 17).mesh.faces());
+  EXPECT_NE(gj.mesh.vertices(), torus_structured(2, false, 17).mesh.vertices());
   spec = MeshSpec{"bump-48", 3};
   EXPECT_EQ(generate_mesh(spec).mesh.faces(), bump_48(3).mesh.faces());
   spec = MeshSpec{"bump-irregular", 2, 0, 23};

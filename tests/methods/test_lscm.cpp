@@ -449,20 +449,5 @@ TEST(LscmEstimator, Registry) {
   EXPECT_THROW(make_estimator("lscm", o), UsageError);
 }
 
-// Rough single-thread cost per vertex (run with --gtest_also_run_disabled_tests).
-TEST(LscmEstimator, DISABLED_Timing) {
-  const GeneratedMesh torus = torus_structured(3);
-  for (const char* name : {"lhf-2", "lop-2", "jet-2", "lscm-2", "lscm-fast-2"}) {
-    EstimatorOptions o;
-    o.threads = 1;
-    const auto est = make_estimator(name, o);
-    const auto t0 = std::chrono::steady_clock::now();
-    const auto r = estimate_mesh(torus.mesh, *est);
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::printf("%-12s %d vertices: %.3f s, %.2f us/vertex\n", name, torus.mesh.num_vertices(), s,
-                1e6 * s / torus.mesh.num_vertices());
-  }
-}
-
 }  // namespace
 }  // namespace curvbench
