@@ -1,5 +1,6 @@
 # Thin front end to CMake. `make experiments` and `make test` are the two commands a new user
 # needs; both install missing Debian packages first (as root) through tools/deps.sh.
+MAKEFLAGS += --no-print-directory
 BUILD ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release

@@ -14,6 +14,7 @@
 #include <tuple>
 
 #include "core/errors.h"
+#include "core/text.h"
 #include "harness/metrics.h"
 #include "harness/results_table.h"
 
@@ -126,17 +127,7 @@ struct Table {
   }
   const std::string& text(size_t row, size_t c) const { return rows[row][c]; }
   double number(size_t row, size_t c) const {
-    const std::string& s = rows[row][c];
-    if (s == "nan") return std::nan("");
-    if (s == "inf") return kInf;
-    if (s == "-inf") return -kInf;
-    try {
-      size_t pos = 0;
-      const double x = std::stod(s, &pos);
-      if (pos == s.size()) return x;
-    } catch (const std::exception&) {
-    }
-    throw InputError(path + ":" + std::to_string(lines[row]) + ": '" + s + "' is not a number");
+    return parse_double(rows[row][c], path + ":" + std::to_string(lines[row]));
   }
 };
 

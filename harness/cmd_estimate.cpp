@@ -21,6 +21,7 @@
 #include <unistd.h>
 
 #include "core/errors.h"
+#include "core/text.h"
 #include "harness/commands.h"
 #include "mesh/io.h"
 #include "methods/estimator.h"
@@ -38,13 +39,6 @@ struct EstimateOptions {
   bool noisy = false;
   std::string output;
 };
-
-std::string lower_extension(const std::string& path) {
-  const std::string ext = std::filesystem::path(path).extension().string();
-  std::string s = ext.empty() ? ext : ext.substr(1);
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
 
 // A temporary sibling of `path` keeping its extension (write_mesh picks the format from it).
 std::string temp_path(const std::string& path) {

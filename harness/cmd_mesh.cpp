@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/text.h"
 #include "harness/commands.h"
 #include "mesh/io.h"
 #include "meshgen/generate.h"
@@ -29,15 +30,6 @@ struct MeshOptions {
   bool table4 = false;
   int max_grid = 256;
 };
-
-std::string lower_extension(const std::string& path) {
-  const auto dot = path.find_last_of('.');
-  if (dot == std::string::npos || path.find_first_of("/\\", dot) != std::string::npos) return "";
-  std::string ext = path.substr(dot + 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
 
 // Per-vertex exact quantities at the exact points: ex ey ez, exact normal nx ny nz, k1 k2 H K.
 std::vector<VertexProperty> exact_properties(const GeneratedMesh& gm) {

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "core/text.h"
 
 namespace curvbench {
 
@@ -46,26 +47,6 @@ bool split_option(const std::string& word, std::string& key, std::string& value)
   key = word.substr(0, eq);
   value = word.substr(eq + 1);
   return true;
-}
-
-double to_double(const std::string& s, const std::string& where) {
-  try {
-    size_t pos = 0;
-    const double x = std::stod(s, &pos);
-    if (pos == s.size()) return x;
-  } catch (const std::exception&) {
-  }
-  throw InputError(where + ": '" + s + "' is not a number");
-}
-
-long to_int(const std::string& s, const std::string& where) {
-  try {
-    size_t pos = 0;
-    const long x = std::stol(s, &pos);
-    if (pos == s.size()) return x;
-  } catch (const std::exception&) {
-  }
-  throw InputError(where + ": '" + s + "' is not an integer");
 }
 
 bool to_bool(const std::string& s, const std::string& where) {
@@ -113,9 +94,9 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
           std::string k, v;
           if (!split_option(w[i], k, v)) throw InputError(where + ": expected key=value");
           if (k == "order")
-            e.noise_order = static_cast<int>(to_int(v, where));
+            e.noise_order = static_cast<int>(parse_integer(v, where));
           else if (k == "seed")
-            e.noise_seed = static_cast<std::uint64_t>(to_int(v, where));
+            e.noise_seed = static_cast<std::uint64_t>(parse_integer(v, where));
           else
             throw InputError(where + ": unknown noise option '" + k + "'");
         }
@@ -132,7 +113,7 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
           std::stringstream ss(v);
           std::string item;
           while (std::getline(ss, item, ','))
-            m.levels.push_back(static_cast<int>(to_int(item, where)));
+            m.levels.push_back(static_cast<int>(parse_integer(item, where)));
         }
         if (m.levels.empty()) throw InputError(where + ": no levels given");
         e.meshes.push_back(m);
@@ -144,7 +125,7 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
           std::string k, v;
           if (!split_option(w[i], k, v)) throw InputError(where + ": expected key=value");
           if (k == "ring")
-            m.ring = to_double(v, where);
+            m.ring = parse_double(v, where);
           else if (k == "vertex-set") {
             m.vertex_set = parse_vertex_set(v);
             m.has_vertex_set = true;

@@ -11,11 +11,16 @@
 #include <tuple>
 
 #include "core/errors.h"
+#include "core/text.h"
 #include "harness/metrics.h"
 
 namespace curvbench {
 
 namespace {
+
+int to_int(const std::string& s, const std::string& where) {
+  return static_cast<int>(parse_integer(s, where));
+}
 
 constexpr const char* kErrorHeader =
     "experiment,surface,family,level,vertices,h,method,degree,rings,noise,vertex_set,quantity,"
@@ -37,29 +42,6 @@ std::vector<std::string> split_csv(const std::string& line) {
   }
   out.push_back(cur);
   return out;
-}
-
-double parse_double(const std::string& s, const std::string& where) {
-  if (s == "nan") return std::nan("");
-  if (s == "inf") return INFINITY;
-  if (s == "-inf") return -INFINITY;
-  try {
-    size_t pos = 0;
-    const double x = std::stod(s, &pos);
-    if (pos == s.size()) return x;
-  } catch (const std::exception&) {
-  }
-  throw InputError(where + ": '" + s + "' is not a number");
-}
-
-int parse_int(const std::string& s, const std::string& where) {
-  try {
-    size_t pos = 0;
-    const int x = std::stoi(s, &pos);
-    if (pos == s.size()) return x;
-  } catch (const std::exception&) {
-  }
-  throw InputError(where + ": '" + s + "' is not an integer");
 }
 
 }  // namespace
@@ -147,21 +129,21 @@ std::vector<ErrorRow> read_error_csv(const std::string& path) {
     r.experiment = f[0];
     r.surface = f[1];
     r.family = f[2];
-    r.level = parse_int(f[3], where);
-    r.vertices = parse_int(f[4], where);
+    r.level = to_int(f[3], where);
+    r.vertices = to_int(f[4], where);
     r.h = parse_double(f[5], where);
     r.method = f[6];
-    r.degree = parse_int(f[7], where);
+    r.degree = to_int(f[7], where);
     r.rings = f[8];
     r.noise = f[9];
     r.vertex_set = f[10];
     r.quantity = f[11];
     r.norm = f[12];
     r.error = parse_double(f[13], where);
-    r.counted = parse_int(f[14], where);
-    r.excluded = parse_int(f[15], where);
-    r.degree_reduced = parse_int(f[16], where);
-    r.failed = parse_int(f[17], where);
+    r.counted = to_int(f[14], where);
+    r.excluded = to_int(f[15], where);
+    r.degree_reduced = to_int(f[16], where);
+    r.failed = to_int(f[17], where);
     rows.push_back(std::move(r));
   }
   return rows;

@@ -5,18 +5,13 @@
 #include <set>
 
 #include "core/errors.h"
+#include "core/text.h"
 #include "meshgen/generate.h"
 #include "methods/estimator.h"
 
 namespace curvbench {
 
 namespace {
-
-std::string ring_label(double ring) {
-  char buf[16];
-  std::snprintf(buf, sizeof buf, "%g", ring);
-  return buf;
-}
 
 std::string noise_label(const Experiment& e, const std::string& family) {
   if (e.noise_order > 0) return "h^" + std::to_string(e.noise_order);
@@ -101,7 +96,7 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads) 
     r.h = mesh.mean_edge_length();
     r.method = estimator->label();
     r.degree = estimator->options().degree;
-    r.rings = ring_label(opt.ring > 0 ? opt.ring : estimator->default_ring());
+    r.rings = format_g(opt.ring > 0 ? opt.ring : estimator->default_ring());
     r.noise = noise_label(e, c.mesh->family);
     r.vertex_set = to_string(set);
     r.quantity = to_string(q);

@@ -42,6 +42,7 @@
 #include <utility>
 
 #include "core/errors.h"
+#include "core/text.h"
 
 namespace curvbench {
 
@@ -77,12 +78,6 @@ std::string quote(std::string_view token) {
   }
   if (token.size() > n) out += "...";
   return out + "'";
-}
-
-std::string lower_extension(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
 }
 
 // ---- file input --------------------------------------------------------------------------------
@@ -1004,11 +999,11 @@ void check_properties(const Mesh& mesh, const std::vector<VertexProperty>& prope
 }  // namespace
 
 Mesh read_mesh(const std::string& path, MeshReadReport* report) {
-  const std::string ext = lower_extension(path);
-  if (ext != ".off" && ext != ".obj" && ext != ".ply")
-    fail(path, ext.empty() ? "no file extension (expected .off, .obj or .ply)"
-                           : "unknown extension '" + ext + "' (expected .off, .obj or .ply)");
-  const std::string format = ext.substr(1);
+  const std::string format = lower_extension(path);
+  if (format != "off" && format != "obj" && format != "ply")
+    fail(path, format.empty()
+                   ? "no file extension (expected .off, .obj or .ply)"
+                   : "unknown extension '." + format + "' (expected .off, .obj or .ply)");
 
   std::string text = read_file(path);
   SoupCounts counts;
@@ -1095,14 +1090,14 @@ void write_ply(const std::string& path, const Mesh& mesh,
 void write_mesh(const std::string& path, const Mesh& mesh,
                 const std::vector<VertexProperty>& properties) {
   const std::string ext = lower_extension(path);
-  if (ext == ".ply") {
+  if (ext == "ply") {
     write_ply(path, mesh, properties);
-  } else if (ext == ".off") {
+  } else if (ext == "off") {
     if (!properties.empty())
       throw UsageError(path + ": OFF cannot store vertex properties; write .ply instead");
     write_off(path, mesh);
   } else {
-    throw UsageError(path + ": cannot write extension '" + ext + "' (expected .off or .ply)");
+    throw UsageError(path + ": cannot write extension '." + ext + "' (expected .off or .ply)");
   }
 }
 

@@ -8,6 +8,7 @@
 
 #include "core/errors.h"
 #include "core/shape_operator.h"
+#include "core/text.h"
 #include "mesh/rings.h"
 #include "methods/vertex_result.h"
 #include "methods/weights.h"
@@ -15,12 +16,6 @@
 namespace curvbench {
 
 namespace {
-
-std::string format_number(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", x);
-  return buf;
-}
 
 struct RingFitWorkspace final : Workspace {
   explicit RingFitWorkspace(const Mesh& mesh) : rings(mesh) { uv.reserve(256); }
@@ -42,7 +37,7 @@ RingFitEstimator::RingFitEstimator(EstimatorOptions options, FitRoute route)
   const bool half_ring = std::isfinite(o.ring) && o.ring >= 1.0 &&
                          std::abs(2.0 * o.ring - std::round(2.0 * o.ring)) < 1e-12;
   if (!(o.ring == 0.0 || half_ring))
-    throw UsageError("ring " + format_number(o.ring) +
+    throw UsageError("ring " + format_g(o.ring) +
                      " is not supported (valid: 0 = default, or 1, 1.5, 2, 2.5, ...)");
   if (!(o.qr_tolerance >= 0.0) || !std::isfinite(o.qr_tolerance))
     throw UsageError("QR tolerance must be finite and >= 0");

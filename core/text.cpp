@@ -1,0 +1,49 @@
+#include "core/text.h"
+
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+
+#include "core/errors.h"
+
+namespace curvbench {
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  if (!ext.empty()) ext.erase(0, 1);
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+std::string format_g(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", x);
+  return buf;
+}
+
+double parse_double(const std::string& s, const std::string& where) {
+  if (s == "nan") return std::numeric_limits<double>::quiet_NaN();
+  if (s == "inf") return std::numeric_limits<double>::infinity();
+  if (s == "-inf") return -std::numeric_limits<double>::infinity();
+  try {
+    size_t pos = 0;
+    const double x = std::stod(s, &pos);
+    if (pos == s.size()) return x;
+  } catch (const std::exception&) {
+  }
+  throw InputError(where + ": '" + s + "' is not a number");
+}
+
+long long parse_integer(const std::string& s, const std::string& where) {
+  try {
+    size_t pos = 0;
+    const long long x = std::stoll(s, &pos);
+    if (pos == s.size()) return x;
+  } catch (const std::exception&) {
+  }
+  throw InputError(where + ": '" + s + "' is not an integer");
+}
+
+}  // namespace curvbench

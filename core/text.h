@@ -1,0 +1,21 @@
+// Small text helpers shared by the readers and the command line.
+#pragma once
+
+#include <string>
+
+namespace curvbench {
+
+/// Lower-case file extension without the dot: "ply" for "dir/Mesh.PLY", "" when there is none.
+std::string lower_extension(const std::string& path);
+
+/// x as "%g" prints it ("1.5", "2", "1e-08").
+std::string format_g(double x);
+
+/// Parses the whole token as a double ("nan", "inf" and "-inf" included). Throws InputError
+/// "<where>: '<s>' is not a number" otherwise.
+double parse_double(const std::string& s, const std::string& where);
+
+/// Parses the whole token as an integer. Throws InputError "<where>: '<s>' is not an integer".
+long long parse_integer(const std::string& s, const std::string& where);
+
+}  // namespace curvbench
