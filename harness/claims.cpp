@@ -149,12 +149,19 @@ std::optional<Table> read_table(const std::string& path) {
   Table t;
   t.path = path;
   std::string line;
-  if (!std::getline(in, line)) throw InputError(path + ": empty file (no header)");
+  int lineno = 0;
+  bool have_header = false;
+  while (std::getline(in, line)) {  // skip comment lines ('#', provenance) before the header
+    ++lineno;
+    if (line.rfind('#', 0) == 0) continue;
+    have_header = true;
+    break;
+  }
+  if (!have_header) throw InputError(path + ": empty file (no header)");
   t.header = split(line);
-  int lineno = 1;
   while (std::getline(in, line)) {
     ++lineno;
-    if (line.empty() || line == "\r") continue;
+    if (line.empty() || line == "\r" || line.rfind('#', 0) == 0) continue;
     auto f = split(line);
     if (f.size() != t.header.size())
       throw InputError(path + ":" + std::to_string(lineno) + ": expected " +
@@ -236,7 +243,8 @@ class Data {
     for (const auto& p : csvs) {
       std::ifstream in(p);
       std::string head;
-      std::getline(in, head);
+      while (std::getline(in, head) && head.rfind('#', 0) == 0) {
+      }
       // The errors header starts like this; read_error_csv validates the whole header.
       if (head.rfind("experiment,surface,family,level,", 0) != 0) continue;
       auto rows = read_error_csv(p.string());

@@ -126,6 +126,20 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
           if (!split_option(w[i], k, v)) throw InputError(where + ": expected key=value");
           if (k == "ring")
             m.ring = parse_double(v, where);
+          else if (k == "label") {
+            if (v.empty() || v.find(',') != std::string::npos)
+              throw InputError(where + ": a label must be non-empty and contain no comma");
+            m.label = v;
+          } else if (k == "centre")
+            m.include_centre = to_bool(v, where);
+          else if (k == "qr-tol")
+            m.qr_tolerance = parse_double(v, where);
+          else if (k == "safeguard")
+            m.normal_safeguard = to_bool(v, where);
+          else if (k == "adaptive")
+            m.adaptive = to_bool(v, where);
+          else if (k == "weight-power")
+            m.weight_power = parse_double(v, where);
           else if (k == "vertex-set") {
             m.vertex_set = parse_vertex_set(v);
             m.has_vertex_set = true;

@@ -10,6 +10,8 @@
 //   noisy       yes                             input is noisy: default rings +0.5 (paper §5.3)
 //   vertex-set  all                             all | interior | boundary-ring (default all)
 //   method      lhf-2 [ring=2.5] [vertex-set=interior]   one line per method and degree
+//               ablation options: centre=yes|no qr-tol=X safeguard=yes|no adaptive=yes|no
+//               weight-power=X, and label="LHF-2 interp" to tell variants apart
 //   panel       fig3-left "Fig. 3 (left). ..." normal L2  one table/plot per mesh family
 //
 // Xu-2 is scored over interior vertices on meshes with a boundary (paper §5.2) unless a
@@ -31,9 +33,16 @@ struct ExperimentMesh {
 
 struct ExperimentMethod {
   std::string spec;   ///< e.g. "lhf-2" (accepted by make_estimator)
+  std::string label;  ///< name in tables and plots; empty = the estimator's label ("LHF-2")
   double ring = 0.0;  ///< 0 = method default
   bool has_vertex_set = false;
   VertexSet vertex_set = VertexSet::all;
+  // Estimator options other than ring/noisy/threads (ablations); defaults as EstimatorOptions.
+  bool include_centre = true;    ///< centre=yes|no (no: interpolate through the vertex)
+  double qr_tolerance = 1e-3;    ///< qr-tol=X
+  bool normal_safeguard = true;  ///< safeguard=yes|no (gamma of eq. 15)
+  bool adaptive = true;          ///< adaptive=yes|no (half-ring growth)
+  double weight_power = -1.0;    ///< weight-power=X (< 0: eq. 15's d/4)
 };
 
 struct ExperimentPanel {

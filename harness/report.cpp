@@ -49,6 +49,7 @@ std::vector<std::vector<std::string>> read_simple_csv(const std::string& path) {
   std::ifstream in(path);
   std::string line;
   while (std::getline(in, line)) {
+    if (line.rfind('#', 0) == 0) continue;  // provenance comment
     std::vector<std::string> f;
     std::stringstream ss(line);
     std::string cell;
@@ -107,7 +108,8 @@ void write_table2_csv(const std::string& path) {
   RingCollector rc(g.mesh);
   const int paper[] = {7, 13, 19, 31, 37, 55};
   std::ostringstream out;
-  out << "degree,coefficients,ring,points_with_centre,paper_points\n";
+  out << provenance_comment() << "\n"
+      << "degree,coefficients,ring,points_with_centre,paper_points\n";
   for (int d = 1; d <= 6; ++d) {
     rc.collect(0, default_ring(d));
     out << d << ',' << num_coefficients(d) << ',' << default_ring(d) << ','
@@ -119,7 +121,8 @@ void write_table2_csv(const std::string& path) {
 void write_table4_csv(const std::string& path, int max_grid_points) {
   const auto rows = table4(max_grid_points);
   std::ostringstream out;
-  out << "grid_points,vertices,mean_edge_length,paper_edge_length,rms_error,max_error\n";
+  out << provenance_comment() << "\n"
+      << "grid_points,vertices,mean_edge_length,paper_edge_length,rms_error,max_error\n";
   for (const auto& r : rows)
     out << r.grid_points << ',' << r.vertices << ',' << format_double(r.mean_edge_length) << ','
         << format_double(0.5 * r.mean_edge_length) << ',' << format_double(r.rms_error) << ','
@@ -135,6 +138,8 @@ bool render_plot(const std::string& base, const std::string& title,
   std::ostringstream gp;
   gp << "set logscale xy\nset format y '10^{%L}'\nset xlabel 'mean edge length h'\n"
         "set ylabel 'error'\nset key outside right top\nset grid\nset xrange [*:*] reverse\n"
+     << "set label 1 \"" << build_info() << ", " << utc_timestamp()
+     << "\" at screen 0.01, screen 0.02 font ',8' noenhanced\n"
      << "set title \"" << title << "\" noenhanced\n";
   for (size_t i = 0; i < series.size(); ++i) {
     gp << "$S" << i << " << EOD\n";

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "core/build_info.h"
 #include "core/errors.h"
 #include "core/text.h"
 #include "harness/metrics.h"
@@ -83,7 +84,7 @@ void write_file_atomic(const std::string& path, const std::string& content) {
 
 void write_error_csv(const std::string& path, const std::vector<ErrorRow>& rows) {
   std::ostringstream out;
-  out << kErrorHeader << "\n";
+  out << provenance_comment() << "\n" << kErrorHeader << "\n";
   for (const auto& r : rows) {
     out << r.experiment << ',' << r.surface << ',' << r.family << ',' << r.level << ','
         << r.vertices << ',' << format_double(r.h) << ',' << r.method << ',' << r.degree << ','
@@ -96,7 +97,7 @@ void write_error_csv(const std::string& path, const std::vector<ErrorRow>& rows)
 
 void write_rate_csv(const std::string& path, const std::vector<RateRow>& rows) {
   std::ostringstream out;
-  out << kRateHeader << "\n";
+  out << provenance_comment() << "\n" << kRateHeader << "\n";
   for (const auto& r : rows) {
     out << r.experiment << ',' << r.family << ',' << r.method << ',' << r.degree << ',' << r.rings
         << ',' << r.noise << ',' << r.vertex_set << ',' << r.quantity << ',' << r.norm << ','
@@ -114,13 +115,21 @@ std::vector<ErrorRow> read_error_csv(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open results CSV");
   std::string line;
-  if (!std::getline(in, line) || line != kErrorHeader)
-    throw InputError(path + ":1: unexpected header (not an errors CSV of this version)");
+  int lineno = 0;
+  bool have_header = false;
+  while (std::getline(in, line)) {  // comment lines ('#', provenance) come before the header
+    ++lineno;
+    if (line.rfind('#', 0) == 0) continue;
+    have_header = true;
+    break;
+  }
+  if (!have_header || line != kErrorHeader)
+    throw InputError(path + ":" + std::to_string(lineno) +
+                     ": unexpected header (not an errors CSV of this version)");
   std::vector<ErrorRow> rows;
-  int lineno = 1;
   while (std::getline(in, line)) {
     ++lineno;
-    if (line.empty()) continue;
+    if (line.empty() || line.rfind('#', 0) == 0) continue;
     const std::string where = path + ":" + std::to_string(lineno);
     const auto f = split_csv(line);
     if (f.size() != 18)

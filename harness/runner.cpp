@@ -65,6 +65,11 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads) 
 
   EstimatorOptions opt;
   opt.ring = c.method->ring;
+  opt.include_centre = c.method->include_centre;
+  opt.qr_tolerance = c.method->qr_tolerance;
+  opt.normal_safeguard = c.method->normal_safeguard;
+  opt.adaptive = c.method->adaptive;
+  opt.weight_power = c.method->weight_power;
   opt.noisy = e.noisy;
   opt.threads = threads;
   const auto estimator = make_estimator(c.method->spec, opt);
@@ -94,7 +99,7 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads) 
     r.level = c.level;
     r.vertices = mesh.num_vertices();
     r.h = mesh.mean_edge_length();
-    r.method = estimator->label();
+    r.method = c.method->label.empty() ? estimator->label() : c.method->label;
     r.degree = estimator->options().degree;
     r.rings = format_g(opt.ring > 0 ? opt.ring : estimator->default_ring());
     r.noise = noise_label(e, c.mesh->family);

@@ -410,7 +410,11 @@ struct CgalLscmMap::Impl {
   CgalMesh::Property_map<CgalVertex, bool> pinned;
 
   Impl() {
-    uv = mesh.add_property_map<CgalVertex, CgalKernel::Point_2>("v:curvbench_uv").first;
+    // A defined default matters: CGAL's Point_2() leaves its coordinates uninitialised, and the
+    // OpenNL conjugate-gradient solver starts from the map's current values.
+    uv = mesh.add_property_map<CgalVertex, CgalKernel::Point_2>("v:curvbench_uv",
+                                                                CgalKernel::Point_2(0.0, 0.0))
+             .first;
     pinned = mesh.add_property_map<CgalVertex, bool>("v:curvbench_pinned", false).first;
   }
 

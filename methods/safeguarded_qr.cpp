@@ -31,7 +31,9 @@ QrSolveResult safeguarded_qr_solve(FitMatrix& A, RhsMatrix& B, int degree, bool 
     double sigma = 0.0;
     for (int i = j; i < m; ++i) sigma += A(i, j) * A(i, j);
     const double norm = std::sqrt(sigma);
-    if (!(norm >= tol)) {  // |R_jj| < tol (or NaN): first nearly dependent column
+    // |R_jj| < tol, an exactly dependent column (norm 0, also when tol = 0), or NaN: the first
+    // nearly dependent column.
+    if (!(norm >= tol) || !(norm > 0.0)) {
       rank = j;
       break;
     }

@@ -1,6 +1,7 @@
 // Runs build/curvbench as a child process and captures its exit code and output.
 #pragma once
 
+#include <unistd.h>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -25,9 +26,11 @@ inline CliResult run_cli(const std::string& args) {
   return r;
 }
 
-/// A fresh, empty directory under the system temp dir, unique per test.
+/// A fresh, empty directory under the system temp dir, unique per test process (ctest runs the
+/// tests of one fixture as parallel processes, so the name alone is not enough).
 inline std::filesystem::path fresh_dir(const std::string& name) {
-  auto dir = std::filesystem::temp_directory_path() / ("curvbench_test_" + name);
+  auto dir = std::filesystem::temp_directory_path() /
+             ("curvbench_test_" + name + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

@@ -27,6 +27,8 @@ TEST(Experiment, ParsesEveryKey) {
       "mesh     bump-48 levels=1,2,3\n"
       "method   lhf-2 ring=2.5\n"
       "method   xu-2 vertex-set=all\n"
+      "method   lhf-4 centre=no qr-tol=1e-8 safeguard=no adaptive=no weight-power=0.5 "
+      "label=\"LHF-4 ablated\"\n"
       "panel    p1 \"Caption one.\" normal Linf\n",
       "demo.exp");
   EXPECT_EQ(e.name, "demo");
@@ -38,7 +40,16 @@ TEST(Experiment, ParsesEveryKey) {
   EXPECT_EQ(e.vertex_set, VertexSet::interior);
   ASSERT_EQ(e.meshes.size(), 1u);
   EXPECT_EQ(e.meshes[0].levels, (std::vector<int>{1, 2, 3}));
-  ASSERT_EQ(e.methods.size(), 2u);
+  ASSERT_EQ(e.methods.size(), 3u);
+  const ExperimentMethod& ab = e.methods[2];
+  EXPECT_EQ(ab.label, "LHF-4 ablated");
+  EXPECT_FALSE(ab.include_centre);
+  EXPECT_DOUBLE_EQ(ab.qr_tolerance, 1e-8);
+  EXPECT_FALSE(ab.normal_safeguard);
+  EXPECT_FALSE(ab.adaptive);
+  EXPECT_DOUBLE_EQ(ab.weight_power, 0.5);
+  EXPECT_TRUE(e.methods[0].include_centre);  // defaults are EstimatorOptions' defaults
+  EXPECT_DOUBLE_EQ(e.methods[0].qr_tolerance, EstimatorOptions{}.qr_tolerance);
   EXPECT_DOUBLE_EQ(e.methods[0].ring, 2.5);
   EXPECT_FALSE(e.methods[0].has_vertex_set);
   EXPECT_TRUE(e.methods[1].has_vertex_set);
@@ -64,6 +75,8 @@ TEST(Experiment, ErrorsNameFileAndLine) {
   expect_error(base + "noise order=5\n", "bad.exp:5: noise order must be 2 or 3");
   expect_error(base + "mesh bump-48 levels=1,x\n", "bad.exp:5: 'x' is not an integer");
   expect_error(base + "title \"open\n", "bad.exp:5: unterminated quote");
+  expect_error(base + "method lhf-2 label=\"a,b\"\n", "bad.exp:5: a label must be");
+  expect_error(base + "method lhf-2 centre=maybe\n", "bad.exp:5: expected yes or no");
   expect_error("mesh bump-48 levels=1\nmethod lhf-2\npanel p c H L2\n", "missing 'name'");
   expect_error("name x\nmethod lhf-2\npanel p c H L2\n", "no 'mesh' line");
   EXPECT_THROW(parse_experiment("/nonexistent/x.exp"), InputError);

@@ -199,6 +199,12 @@ TEST(SafeguardedQr, CrossShapedPointsDropTheQuadraticBlock) {
   EXPECT_EQ(r.degree, 1);
   EXPECT_NEAR(r.taylor(kFu, 0), 2.0, 1e-13);
   EXPECT_NEAR(r.taylor(kFv, 0), -3.0, 1e-13);
+  // The uv column is exactly zero, so even tolerance 0 must reject it (not divide by R_jj = 0).
+  s.qr_tolerance = 0.0;
+  const FitResult r0 = fit_polynomial(u, v, f, RowVector(), s, scratch);
+  EXPECT_EQ(r0.degree, 1);
+  EXPECT_NEAR(r0.taylor(kFu, 0), 2.0, 1e-13);
+  EXPECT_NEAR(r0.taylor(kFv, 0), -3.0, 1e-13);
 }
 
 TEST(SafeguardedQr, ToleranceDecidesNearlyDependentColumns) {

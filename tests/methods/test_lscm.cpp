@@ -417,7 +417,7 @@ TEST(LscmEstimator, NotesVariantIsCloseToCgal) {
 
 TEST(LscmEstimator, NoNanOnAMeshWithBoundaryAndThreadIndependent) {
   const GeneratedMesh bump = bump_48(1);
-  for (const char* name : {"lscm-2", "lscm-fast-2", "lscm-fast-4"}) {
+  for (const char* name : {"lscm-2", "lscm-fast-2", "lscm-fast-4", "lscm-cg-4"}) {
     EstimatorOptions o1, o2;
     o1.threads = 1;
     o2.threads = 2;
