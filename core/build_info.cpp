@@ -20,4 +20,8 @@ std::string utc_timestamp() {
   return buf;
 }
 
+std::string provenance_comment() {
+  return "# " + build_info() + ", generated " + utc_timestamp();
+}
+
 }  // namespace curvbench
