@@ -1,5 +1,6 @@
 #include "harness/report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -257,7 +258,13 @@ std::string write_report(const std::vector<Experiment>& experiments, const Repor
 
   // Figures.
   int missing_plots = 0;
-  for (const auto& e : experiments) {
+  // The paper's figures first (experiments named fig...), then the extra studies.
+  std::vector<const Experiment*> ordered;
+  for (const auto& e : experiments) ordered.push_back(&e);
+  std::stable_partition(ordered.begin(), ordered.end(),
+                        [](const Experiment* e) { return e->name.rfind("fig", 0) == 0; });
+  for (const Experiment* ep : ordered) {
+    const Experiment& e = *ep;
     const std::string csv = dir + "/" + e.name + ".csv";
     if (!fs::exists(csv)) {
       md << "## " << e.title << " (" << e.name << ")\n\nNot run yet: " << csv << " is missing.\n\n";
