@@ -1,5 +1,6 @@
 # Thin front end to CMake. `make experiments` and `make test` are the two commands a new user
 # needs; both install missing Debian packages first (as root) through tools/deps.sh.
+# `make bench` runs the Google Benchmark suites and writes results/table5_timing.{csv,md}.
 MAKEFLAGS += --no-print-directory
 BUILD ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)

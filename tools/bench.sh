@@ -1,17 +1,52 @@
 #!/usr/bin/env bash
-# `make bench`: runs every Google Benchmark binary built from bench/ (issue 6 adds the Table 5
-# suites and results/table5_timing.{csv,md}).
+# `make bench`: runs the Google Benchmark suites built from bench/ (the build is done by
+# `make bench` already) and regenerates the paper's Table 5:
+#   results/table5_timing.csv   mesh,level,verts,tris,method,degree,threads,seconds,tris_per_second
+#   results/table5_timing.md    Table 5 layout, paper times beside ours, ratios, machine, flags
+# Raw Google Benchmark JSON goes to BUILD/bench/*.json. The conversion is done by the bench
+# binaries themselves (--table5_rows / --table5_dir; see bench/table5.h), files written atomically.
+# Usage: tools/bench.sh [BUILD_DIR]   (extra Google Benchmark flags via BENCH_ARGS)
 set -euo pipefail
 BUILD=${1:-build}
-shopt -s nullglob
-ran=0
-for b in "$BUILD"/bench_*; do
-  [[ -x "$b" ]] || continue
-  echo "== $b"
-  "$b" --benchmark_counters_tabular=true
-  ran=1
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
+RESULTS="$ROOT/results"
+OUT="$BUILD/bench"
+ARGS=(--benchmark_counters_tabular=true ${BENCH_ARGS:-})
+start=$(date +%s)
+
+for b in bench_solvers bench_estimators; do
+  if [[ ! -x "$BUILD/$b" ]]; then
+    echo "bench: $BUILD/$b is not built (configure with -DCURVBENCH_BUILD_BENCH=ON)" >&2
+    exit 1
+  fi
 done
-if [[ $ran -eq 0 ]]; then
-  echo "bench: no benchmark suites are built yet (see issue 6)" >&2
-  exit 1
-fi
+mkdir -p "$OUT" "$RESULTS"
+
+# Build type and flags, quoted in table5_timing.md.
+cache_value() { sed -n "s/^$1:[A-Z]*=//p" "$BUILD/CMakeCache.txt" 2>/dev/null | head -n1; }
+type=$(cache_value CMAKE_BUILD_TYPE)
+type_upper=$(echo "$type" | tr '[:lower:]' '[:upper:]')
+flags="$(cache_value CMAKE_CXX_FLAGS) $(cache_value "CMAKE_CXX_FLAGS_${type_upper}")"
+flags=$(echo "$flags" | xargs)
+build_info="CMAKE_BUILD_TYPE=${type:-unknown}, CXX flags '${flags}' (+ OpenMP; no -march=native, no -ffast-math)"
+
+echo "== $BUILD/bench_solvers (safeguarded QR vs SVD, neighbourhood gathering)"
+"$BUILD/bench_solvers" "${ARGS[@]}" --benchmark_out="$OUT/bench_solvers.json" \
+  --benchmark_out_format=json --table5_rows="$OUT/solver_rows.csv"
+
+echo "== $BUILD/bench_estimators (Table 5 methods, levels 1-4)"
+"$BUILD/bench_estimators" "${ARGS[@]}" --benchmark_out="$OUT/bench_estimators.json" \
+  --benchmark_out_format=json --table5_dir="$RESULTS" --table5_extra="$OUT/solver_rows.csv" \
+  --build_info="$build_info"
+
+# Any further suites (bench/*.cpp added later).
+shopt -s nullglob
+for b in "$BUILD"/bench_*; do
+  name=$(basename "$b")
+  [[ -x "$b" && -f "$b" ]] || continue
+  [[ "$name" == bench_solvers || "$name" == bench_estimators ]] && continue
+  echo "== $b"
+  "$b" "${ARGS[@]}" --benchmark_out="$OUT/$name.json" --benchmark_out_format=json
+done
+
+echo "bench: wrote results/table5_timing.csv and results/table5_timing.md in $(($(date +%s) - start)) s"

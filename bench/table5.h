@@ -1,0 +1,152 @@
+// Shared helpers of the benchmark suites (bench_estimators, bench_solvers) for the paper's
+// Table 5 (§5.4): timing samples recorded by the benchmark bodies, the rows of
+// results/table5_timing.csv and atomic file writes.
+//
+// CSV columns: mesh,level,verts,tris,method,degree,threads,seconds,tris_per_second
+//   seconds          median over every timed whole-mesh pass (all iterations of all repetitions)
+//   tris_per_second  tris / seconds
+// Header-only: each bench/*.cpp is its own executable.
+#pragma once
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace curvbench::bench {
+
+inline constexpr const char* kTable5Header =
+    "mesh,level,verts,tris,method,degree,threads,seconds,tris_per_second";
+
+/// One (mesh level, method, threads) case and the wall times of its whole-mesh passes.
+struct Sample {
+  std::string mesh;
+  int level = 0;
+  long verts = 0;
+  long tris = 0;
+  std::string method;  ///< label, e.g. "LHF-2", "LHF-2 QR"
+  int degree = 0;
+  int threads = 1;
+  std::vector<double> seconds;
+};
+
+/// Registry of samples in registration order (benchmarks run in that order).
+class SampleLog {
+ public:
+  Sample& get(const Sample& key) {
+    const std::string id = key.mesh + "|" + std::to_string(key.level) + "|" + key.method + "|" +
+                           std::to_string(key.threads);
+    auto it = index_.find(id);
+    if (it != index_.end()) return samples_[it->second];
+    index_[id] = samples_.size();
+    samples_.push_back(key);
+    return samples_.back();
+  }
+  const std::vector<Sample>& samples() const { return samples_; }
+
+ private:
+  std::map<std::string, size_t> index_;
+  std::vector<Sample> samples_;
+};
+
+inline double median(std::vector<double> x) {
+  if (x.empty()) return 0.0;
+  std::sort(x.begin(), x.end());
+  const size_t n = x.size();
+  return n % 2 == 1 ? x[n / 2] : 0.5 * (x[n / 2 - 1] + x[n / 2]);
+}
+
+/// A row of table5_timing.csv (seconds already the median).
+struct Table5Row {
+  std::string mesh;
+  int level = 0;
+  long verts = 0;
+  long tris = 0;
+  std::string method;
+  int degree = 0;
+  int threads = 1;
+  double seconds = 0.0;
+};
+
+inline std::vector<Table5Row> rows_from_samples(const SampleLog& log) {
+  std::vector<Table5Row> rows;
+  for (const Sample& s : log.samples()) {
+    if (s.seconds.empty()) continue;  // filtered out
+    rows.push_back(
+        {s.mesh, s.level, s.verts, s.tris, s.method, s.degree, s.threads, median(s.seconds)});
+  }
+  return rows;
+}
+
+inline std::string format_rows(const std::vector<Table5Row>& rows) {
+  std::string out = std::string(kTable5Header) + "\n";
+  char buf[512];
+  for (const Table5Row& r : rows) {
+    std::snprintf(buf, sizeof buf, "%s,%d,%ld,%ld,%s,%d,%d,%.6g,%.6g\n", r.mesh.c_str(), r.level,
+                  r.verts, r.tris, r.method.c_str(), r.degree, r.threads, r.seconds,
+                  r.seconds > 0.0 ? static_cast<double>(r.tris) / r.seconds : 0.0);
+    out += buf;
+  }
+  return out;
+}
+
+/// Reads a file written by format_rows (throws std::runtime_error naming the file).
+inline std::vector<Table5Row> read_rows(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": cannot open");
+  std::string line;
+  if (!std::getline(in, line) || line != kTable5Header)
+    throw std::runtime_error(path + ": not a table5 timing file");
+  std::vector<Table5Row> rows;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    std::vector<std::string> f;
+    std::stringstream ss(line);
+    std::string cell;
+    while (std::getline(ss, cell, ',')) f.push_back(cell);
+    if (f.size() != 9) throw std::runtime_error(path + ": bad row '" + line + "'");
+    rows.push_back({f[0], std::stoi(f[1]), std::stol(f[2]), std::stol(f[3]), f[4], std::stoi(f[5]),
+                    std::stoi(f[6]), std::stod(f[7])});
+  }
+  return rows;
+}
+
+/// Writes `content` to a temporary sibling and renames it over `path`.
+inline void write_atomic(const std::string& path, const std::string& content) {
+  const std::filesystem::path p(path);
+  std::filesystem::path tmp = p;
+  tmp += ".tmp" + std::to_string(::getpid());  // same directory, so rename is atomic
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    out << content;
+    out.close();
+    if (!out) throw std::runtime_error(tmp.string() + ": write failed");
+  }
+  std::filesystem::rename(tmp, p);
+}
+
+/// Removes the flag --name=VALUE from argv (before benchmark::Initialize) and returns VALUE.
+inline std::string take_flag(int& argc, char** argv, const std::string& name) {
+  const std::string prefix = "--" + name + "=";
+  std::string value;
+  int out = 1;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a.rfind(prefix, 0) == 0) {
+      value = a.substr(prefix.size());
+    } else {
+      argv[out++] = argv[i];
+    }
+  }
+  argc = out;
+  return value;
+}
+
+}  // namespace curvbench::bench
