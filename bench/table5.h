@@ -20,6 +20,8 @@
 #include <string>
 #include <vector>
 
+#include "core/build_info.h"
+
 namespace curvbench::bench {
 
 inline constexpr const char* kTable5Header =
@@ -86,7 +88,7 @@ inline std::vector<Table5Row> rows_from_samples(const SampleLog& log) {
 }
 
 inline std::string format_rows(const std::vector<Table5Row>& rows) {
-  std::string out = std::string(kTable5Header) + "\n";
+  std::string out = provenance_comment() + "\n" + std::string(kTable5Header) + "\n";
   char buf[512];
   for (const Table5Row& r : rows) {
     std::snprintf(buf, sizeof buf, "%s,%d,%ld,%ld,%s,%d,%d,%.6g,%.6g\n", r.mesh.c_str(), r.level,
@@ -102,8 +104,9 @@ inline std::vector<Table5Row> read_rows(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error(path + ": cannot open");
   std::string line;
-  if (!std::getline(in, line) || line != kTable5Header)
-    throw std::runtime_error(path + ": not a table5 timing file");
+  while (std::getline(in, line) && line.rfind('#', 0) == 0) {  // provenance comment
+  }
+  if (line != kTable5Header) throw std::runtime_error(path + ": not a table5 timing file");
   std::vector<Table5Row> rows;
   while (std::getline(in, line)) {
     if (line.empty()) continue;
