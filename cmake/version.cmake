@@ -7,12 +7,20 @@
 set(CURVBENCH_GIT_DESCRIBE "unknown")
 find_package(Git QUIET)
 if(GIT_FOUND AND EXISTS "${SOURCE_DIR}/.git")
-  execute_process(COMMAND ${GIT_EXECUTABLE} describe --always --dirty --tags
+  execute_process(COMMAND ${GIT_EXECUTABLE} describe --always --tags
                   WORKING_DIRECTORY ${SOURCE_DIR}
                   OUTPUT_VARIABLE _describe OUTPUT_STRIP_TRAILING_WHITESPACE
                   RESULT_VARIABLE _rc ERROR_QUIET)
   if(_rc EQUAL 0 AND _describe)
     set(CURVBENCH_GIT_DESCRIBE "${_describe}")
+    # "-dirty" describes the code: changes under results/ (regenerated outputs) do not count.
+    execute_process(COMMAND ${GIT_EXECUTABLE} status --porcelain --untracked-files=no -- .
+                            ":(exclude)results"
+                    WORKING_DIRECTORY ${SOURCE_DIR}
+                    OUTPUT_VARIABLE _changes OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
+    if(_changes)
+      set(CURVBENCH_GIT_DESCRIBE "${CURVBENCH_GIT_DESCRIBE}-dirty")
+    endif()
   endif()
 endif()
 configure_file(${INPUT} ${OUTPUT}.tmp @ONLY)
