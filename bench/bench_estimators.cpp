@@ -93,15 +93,10 @@ void register_all() {
     EstimatorOptions o;
     o.degree = m.degree;
     const std::string label = make_estimator(m.name, o)->label();
-    benchmark::RegisterBenchmark(
-        ("Estimate/" + label + "/threads:" + std::to_string(m.threads)).c_str(), BM_Estimate, m)
-        ->DenseRange(1, kLevels)
-        ->ArgName("level")
-        ->UseRealTime()
-        ->MinTime(0.1)
-        ->Repetitions(3)
-        ->Unit(benchmark::kMillisecond)
-        ->Complexity(benchmark::oN);
+    level_sweep(benchmark::RegisterBenchmark(
+                    ("Estimate/" + label + "/threads:" + std::to_string(m.threads)).c_str(),
+                    BM_Estimate, m),
+                kLevels);
   }
 }
 

@@ -219,14 +219,8 @@ void BM_Rings(benchmark::State& state) {
 
 void register_all() {
   for (const SolverSpec& sp : kSolvers)
-    benchmark::RegisterBenchmark((std::string("Fit/") + sp.name).c_str(), BM_Fit, sp)
-        ->DenseRange(1, kLevels)
-        ->ArgName("level")
-        ->UseRealTime()
-        ->MinTime(0.1)
-        ->Repetitions(3)
-        ->Unit(benchmark::kMillisecond)
-        ->Complexity(benchmark::oN);
+    level_sweep(benchmark::RegisterBenchmark((std::string("Fit/") + sp.name).c_str(), BM_Fit, sp),
+                kLevels);
   for (const SolverSpec& sp : kSolvers)
     benchmark::RegisterBenchmark((std::string("Solve/") + sp.name).c_str(), BM_Solve, sp)
         ->Arg(kSolveLevel)

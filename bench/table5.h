@@ -20,9 +20,23 @@
 #include <string>
 #include <vector>
 
+#include <benchmark/benchmark.h>
+
 #include "core/build_info.h"
 
 namespace curvbench::bench {
+
+/// The settings every per-level sweep shares: mesh levels 1..levels as the argument, wall time,
+/// 3 repetitions of at least 0.1 s, milliseconds, and an O(N) complexity fit.
+inline benchmark::internal::Benchmark* level_sweep(benchmark::internal::Benchmark* b, int levels) {
+  return b->DenseRange(1, levels)
+      ->ArgName("level")
+      ->UseRealTime()
+      ->MinTime(0.1)
+      ->Repetitions(3)
+      ->Unit(benchmark::kMillisecond)
+      ->Complexity(benchmark::oN);
+}
 
 inline constexpr const char* kTable5Header =
     "mesh,level,verts,tris,method,degree,threads,seconds,tris_per_second";
