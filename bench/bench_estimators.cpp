@@ -320,8 +320,8 @@ int main(int argc, char** argv) {
         const std::vector<Table5Row> more = read_rows(extra);
         rows.insert(rows.end(), more.begin(), more.end());
       }
-      write_atomic(dir + "/table5_timing.csv", format_rows(rows));
-      write_atomic(dir + "/table5_timing.md", make_markdown(rows, build_info));
+      write_file_atomic(dir + "/table5_timing.csv", format_rows(rows));
+      write_file_atomic(dir + "/table5_timing.md", make_markdown(rows, build_info));
       std::fprintf(stderr, "bench_estimators: wrote %s/table5_timing.csv and .md (%zu rows)\n",
                    dir.c_str(), rows.size());
     } catch (const std::exception& e) {

@@ -257,7 +257,7 @@ int main(int argc, char** argv) {
   benchmark::Shutdown();
   if (!rows_file.empty()) {
     try {
-      write_atomic(rows_file, format_rows(rows_from_samples(g_log)));
+      write_file_atomic(rows_file, format_rows(rows_from_samples(g_log)));
     } catch (const std::exception& e) {
       std::fprintf(stderr, "bench_solvers: %s\n", e.what());
       return 1;

@@ -23,6 +23,7 @@
 #include <benchmark/benchmark.h>
 
 #include "core/build_info.h"
+#include "harness/results_table.h"
 
 namespace curvbench::bench {
 
@@ -115,38 +116,15 @@ inline std::string format_rows(const std::vector<Table5Row>& rows) {
 
 /// Reads a file written by format_rows (throws std::runtime_error naming the file).
 inline std::vector<Table5Row> read_rows(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot open");
-  std::string line;
-  while (std::getline(in, line) && line.rfind('#', 0) == 0) {  // provenance comment
-  }
-  if (line != kTable5Header) throw std::runtime_error(path + ": not a table5 timing file");
+  const CsvTable t = read_csv_table(path);
+  std::string header;
+  for (const auto& h : t.header) header += (header.empty() ? "" : ",") + h;
+  if (header != kTable5Header) throw std::runtime_error(path + ": not a table5 timing file");
   std::vector<Table5Row> rows;
-  while (std::getline(in, line)) {
-    if (line.empty()) continue;
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) f.push_back(cell);
-    if (f.size() != 9) throw std::runtime_error(path + ": bad row '" + line + "'");
-    rows.push_back({f[0], std::stoi(f[1]), std::stol(f[2]), std::stol(f[3]), f[4], std::stoi(f[5]),
-                    std::stoi(f[6]), std::stod(f[7])});
-  }
+  for (size_t i = 0; i < t.rows.size(); ++i)
+    rows.push_back({t.text(i, 0), t.integer(i, 1), t.integer(i, 2), t.integer(i, 3), t.text(i, 4),
+                    t.integer(i, 5), t.integer(i, 6), t.number(i, 7)});
   return rows;
-}
-
-/// Writes `content` to a temporary sibling and renames it over `path`.
-inline void write_atomic(const std::string& path, const std::string& content) {
-  const std::filesystem::path p(path);
-  std::filesystem::path tmp = p;
-  tmp += ".tmp" + std::to_string(::getpid());  // same directory, so rename is atomic
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    out << content;
-    out.close();
-    if (!out) throw std::runtime_error(tmp.string() + ": write failed");
-  }
-  std::filesystem::rename(tmp, p);
 }
 
 /// Removes the flag --name=VALUE from argv (before benchmark::Initialize) and returns VALUE.

@@ -114,63 +114,11 @@ class Check {
 
 // ---- simple CSV tables with a header (table2/table4/table5_timing) ----------------------------
 
-struct Table {
-  std::string path;
-  std::vector<std::string> header;
-  std::vector<std::vector<std::string>> rows;
-  std::vector<int> lines;  // file line of each row
-
-  size_t col(const std::string& name) const {
-    for (size_t i = 0; i < header.size(); ++i)
-      if (header[i] == name) return i;
-    throw InputError(path + ":1: no column '" + name + "'");
-  }
-  const std::string& text(size_t row, size_t c) const { return rows[row][c]; }
-  double number(size_t row, size_t c) const {
-    return parse_double(rows[row][c], path + ":" + std::to_string(lines[row]));
-  }
-};
-
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> out(1);
-  for (char ch : line) {
-    if (ch == ',')
-      out.emplace_back();
-    else if (ch != '\r')
-      out.back() += ch;
-  }
-  return out;
-}
+using Table = CsvTable;
 
 std::optional<Table> read_table(const std::string& path) {
   if (!fs::exists(path)) return std::nullopt;
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open");
-  Table t;
-  t.path = path;
-  std::string line;
-  int lineno = 0;
-  bool have_header = false;
-  while (std::getline(in, line)) {  // skip comment lines ('#', provenance) before the header
-    ++lineno;
-    if (line.rfind('#', 0) == 0) continue;
-    have_header = true;
-    break;
-  }
-  if (!have_header) throw InputError(path + ": empty file (no header)");
-  t.header = split(line);
-  while (std::getline(in, line)) {
-    ++lineno;
-    if (line.empty() || line == "\r" || line.rfind('#', 0) == 0) continue;
-    auto f = split(line);
-    if (f.size() != t.header.size())
-      throw InputError(path + ":" + std::to_string(lineno) + ": expected " +
-                       std::to_string(t.header.size()) + " fields, got " +
-                       std::to_string(f.size()));
-    t.rows.push_back(std::move(f));
-    t.lines.push_back(lineno);
-  }
-  return t;
+  return read_csv_table(path);
 }
 
 // ---- error series -----------------------------------------------------------------------------

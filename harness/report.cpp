@@ -45,18 +45,12 @@ std::string read_text(const std::string& path) {
   return ss.str();
 }
 
+// Header then rows of a results CSV; empty when the file does not exist (not generated yet).
 std::vector<std::vector<std::string>> read_simple_csv(const std::string& path) {
-  std::vector<std::vector<std::string>> out;
-  std::ifstream in(path);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind('#', 0) == 0) continue;  // provenance comment
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) f.push_back(cell);
-    out.push_back(f);
-  }
+  if (!fs::exists(path)) return {};
+  CsvTable t = read_csv_table(path);
+  std::vector<std::vector<std::string>> out{std::move(t.header)};
+  for (auto& row : t.rows) out.push_back(std::move(row));
   return out;
 }
 

@@ -19,10 +19,6 @@ namespace curvbench {
 
 namespace {
 
-int to_int(const std::string& s, const std::string& where) {
-  return static_cast<int>(parse_integer(s, where));
-}
-
 constexpr const char* kErrorHeader =
     "experiment,surface,family,level,vertices,h,method,degree,rings,noise,vertex_set,quantity,"
     "norm,error,counted,excluded,degree_reduced,failed";
@@ -111,48 +107,75 @@ void write_rate_csv(const std::string& path, const std::vector<RateRow>& rows) {
   write_file_atomic(path, out.str());
 }
 
-std::vector<ErrorRow> read_error_csv(const std::string& path) {
+size_t CsvTable::col(const std::string& name) const {
+  for (size_t i = 0; i < header.size(); ++i)
+    if (header[i] == name) return i;
+  throw InputError(path + ": no column '" + name + "'");
+}
+
+double CsvTable::number(size_t row, size_t c) const {
+  return parse_double(rows[row][c], path + ":" + std::to_string(lines[row]));
+}
+
+int CsvTable::integer(size_t row, size_t c) const {
+  return static_cast<int>(parse_integer(rows[row][c], path + ":" + std::to_string(lines[row])));
+}
+
+CsvTable read_csv_table(const std::string& path) {
   std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open results CSV");
+  if (!in) throw InputError(path + ": cannot open");
+  CsvTable t;
+  t.path = path;
   std::string line;
   int lineno = 0;
   bool have_header = false;
-  while (std::getline(in, line)) {  // comment lines ('#', provenance) come before the header
-    ++lineno;
-    if (line.rfind('#', 0) == 0) continue;
-    have_header = true;
-    break;
-  }
-  if (!have_header || line != kErrorHeader)
-    throw InputError(path + ":" + std::to_string(lineno) +
-                     ": unexpected header (not an errors CSV of this version)");
-  std::vector<ErrorRow> rows;
   while (std::getline(in, line)) {
     ++lineno;
-    if (line.empty() || line.rfind('#', 0) == 0) continue;
-    const std::string where = path + ":" + std::to_string(lineno);
-    const auto f = split_csv(line);
-    if (f.size() != 18)
-      throw InputError(where + ": expected 18 fields, got " + std::to_string(f.size()));
+    if (line.empty() || line == "\r" || line.rfind('#', 0) == 0) continue;
+    auto fields = split_csv(line);
+    if (!have_header) {
+      t.header = std::move(fields);
+      have_header = true;
+      continue;
+    }
+    if (fields.size() != t.header.size())
+      throw InputError(path + ":" + std::to_string(lineno) + ": expected " +
+                       std::to_string(t.header.size()) + " fields, got " +
+                       std::to_string(fields.size()));
+    t.rows.push_back(std::move(fields));
+    t.lines.push_back(lineno);
+  }
+  if (!have_header) throw InputError(path + ": empty file (no header)");
+  return t;
+}
+
+std::vector<ErrorRow> read_error_csv(const std::string& path) {
+  const CsvTable t = read_csv_table(path);
+  std::string header;
+  for (const auto& h : t.header) header += (header.empty() ? "" : ",") + h;
+  if (header != kErrorHeader)
+    throw InputError(path + ": unexpected header (not an errors CSV of this version)");
+  std::vector<ErrorRow> rows;
+  for (size_t i = 0; i < t.rows.size(); ++i) {
     ErrorRow r;
-    r.experiment = f[0];
-    r.surface = f[1];
-    r.family = f[2];
-    r.level = to_int(f[3], where);
-    r.vertices = to_int(f[4], where);
-    r.h = parse_double(f[5], where);
-    r.method = f[6];
-    r.degree = to_int(f[7], where);
-    r.rings = f[8];
-    r.noise = f[9];
-    r.vertex_set = f[10];
-    r.quantity = f[11];
-    r.norm = f[12];
-    r.error = parse_double(f[13], where);
-    r.counted = to_int(f[14], where);
-    r.excluded = to_int(f[15], where);
-    r.degree_reduced = to_int(f[16], where);
-    r.failed = to_int(f[17], where);
+    r.experiment = t.text(i, 0);
+    r.surface = t.text(i, 1);
+    r.family = t.text(i, 2);
+    r.level = t.integer(i, 3);
+    r.vertices = t.integer(i, 4);
+    r.h = t.number(i, 5);
+    r.method = t.text(i, 6);
+    r.degree = t.integer(i, 7);
+    r.rings = t.text(i, 8);
+    r.noise = t.text(i, 9);
+    r.vertex_set = t.text(i, 10);
+    r.quantity = t.text(i, 11);
+    r.norm = t.text(i, 12);
+    r.error = t.number(i, 13);
+    r.counted = t.integer(i, 14);
+    r.excluded = t.integer(i, 15);
+    r.degree_reduced = t.integer(i, 16);
+    r.failed = t.integer(i, 17);
     rows.push_back(std::move(r));
   }
   return rows;

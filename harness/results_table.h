@@ -56,6 +56,27 @@ std::vector<ErrorRow> read_error_csv(const std::string& path);
 /// computes the average rate over the first and last level, plus the pairwise rates.
 std::vector<RateRow> compute_rates(const std::vector<ErrorRow>& rows);
 
+/// A CSV file with a header row, as curvbench writes them: lines starting with '#' (the
+/// provenance comment) and empty lines are skipped, fields are split at commas.
+struct CsvTable {
+  std::string path;
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;  ///< each has header.size() fields
+  std::vector<int> lines;                      ///< file line of each row, for messages
+
+  /// Index of a header column; throws InputError naming the file if it is missing.
+  size_t col(const std::string& name) const;
+  const std::string& text(size_t row, size_t c) const { return rows[row][c]; }
+  /// The field as a number ("nan"/"inf" allowed); throws InputError "<path>:<line>: ...".
+  double number(size_t row, size_t c) const;
+  /// The field as an int; throws InputError "<path>:<line>: ...".
+  int integer(size_t row, size_t c) const;
+};
+
+/// Reads a CsvTable. Throws InputError if the file cannot be opened, has no header, or a row
+/// has a different number of fields than the header ("<path>:<line>: expected N fields, got M").
+CsvTable read_csv_table(const std::string& path);
+
 /// Writes `content` to `path` atomically (temporary file in the same folder + rename).
 void write_file_atomic(const std::string& path, const std::string& content);
 
