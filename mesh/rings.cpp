@@ -87,7 +87,7 @@ bool RingCollector::half_step() {
 }
 
 // One half ring further: 0 -> 1 (the first step is an integer step), k -> k+½, k+½ -> k+1.
-bool RingCollector::advance() {
+bool RingCollector::grow() {
   const size_t before = faces_.size();
   if (half_steps_ == 0) {
     integer_step();
@@ -102,17 +102,13 @@ bool RingCollector::advance() {
   return faces_.size() > before;
 }
 
-bool RingCollector::grow() {
-  return advance();
-}
-
 void RingCollector::collect(int v, double ring) {
   const long target = std::lround(2.0 * ring);
   if (!(ring >= 1.0) || std::abs(0.5 * static_cast<double>(target) - ring) > 1e-9)
     throw UsageError("ring size must be a multiple of 0.5 and at least 1, got " +
                      std::to_string(ring));
   begin(v);
-  while (half_steps_ < target) advance();
+  while (half_steps_ < target) grow();
 }
 
 double RingCollector::collect_at_least(int v, double r0, int min_neighbours, double max_ring) {
@@ -121,7 +117,7 @@ double RingCollector::collect_at_least(int v, double r0, int min_neighbours, dou
   int stalled = 0;  // two half steps in a row that add nothing: the component is exhausted
   while (static_cast<int>(verts_.size()) - 1 < min_neighbours && half_steps_ < max_steps &&
          stalled < 2) {
-    stalled = advance() ? 0 : stalled + 1;
+    stalled = grow() ? 0 : stalled + 1;
   }
   return ring();
 }

@@ -59,7 +59,6 @@ class RingCollector {
 
  private:
   void begin(int v);
-  bool advance();
   bool integer_step();
   bool half_step();
   bool add_face(int f);

@@ -38,6 +38,15 @@ double Estimator::default_ring() const {
   return curvbench::default_ring(options_.degree) + (options_.noisy ? 0.5 : 0.0);
 }
 
+double Estimator::collect_neighbourhood(RingCollector& rings, int v) const {
+  const double r0 = options_.ring > 0.0 ? options_.ring : default_ring();
+  if (options_.adaptive)
+    rings.collect_at_least(v, r0, min_neighbours(options_.degree), 2.0 * r0);
+  else
+    rings.collect(v, r0);
+  return r0;
+}
+
 std::vector<VertexEstimate> estimate_mesh(const Mesh& mesh, const Estimator& estimator) {
   const VertexMatrix normals = mesh.area_weighted_normals();
   const MeshContext ctx{mesh, normals};

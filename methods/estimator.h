@@ -14,6 +14,7 @@
 
 #include "core/types.h"
 #include "mesh/mesh.h"
+#include "mesh/rings.h"
 
 namespace curvbench {
 
@@ -83,6 +84,11 @@ class Estimator {
 
   /// Ring used when options().ring == 0.
   virtual double default_ring() const;
+
+  /// The starting neighbourhood of vertex v, the same for every ring-based method (paper §4.1,
+  /// ALGORITHM_NOTES §1.2): ring r0 = options().ring or default_ring(); when options().adaptive,
+  /// grown by half rings until min_neighbours(degree) neighbours or ring 2 r0. Returns r0.
+  double collect_neighbourhood(RingCollector& rings, int v) const;
 
   virtual std::unique_ptr<Workspace> make_workspace(const Mesh& mesh) const = 0;
 

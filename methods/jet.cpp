@@ -85,13 +85,8 @@ class JetEstimator final : public Estimator {
     const Vec3 m0 = ctx.approx_normals.row(v).transpose();
     const LocalFrame frame = make_local_frame(m0);
     const int d = options_.degree;
-    const double r0 = options_.ring > 0.0 ? options_.ring : default_ring();
     try {
-      if (options_.adaptive) {
-        ws.rings.collect_at_least(v, r0, min_neighbours(d), 2.0 * r0);
-      } else {
-        ws.rings.collect(v, r0);
-      }
+      collect_neighbourhood(ws.rings, v);
       const size_t needed = static_cast<size_t>(num_coefficients(d));
       while (1 + ws.rings.neighbours().size() < needed && ws.rings.grow()) {
       }

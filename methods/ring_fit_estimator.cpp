@@ -142,17 +142,12 @@ void RingFitEstimator::estimate(const MeshContext& ctx, int v, Workspace& base,
   const Vec3 m0 = ctx.approx_normals.row(v).transpose();
   const LocalFrame frame = make_local_frame(m0);
   const int d = options_.degree;
-  const double r0 = options_.ring > 0.0 ? options_.ring : default_ring();
-  const double max_ring = 2.0 * r0;
   const int min_nb = min_neighbours(d);
   const bool safeguard = use_normal_safeguard();
   try {
-    double ring = r0;
-    if (options_.adaptive) {
-      ring = ws.rings.collect_at_least(v, r0, min_nb, max_ring);
-    } else {
-      ws.rings.collect(v, r0);
-    }
+    const double r0 = collect_neighbourhood(ws.rings, v);
+    const double max_ring = 2.0 * r0;
+    double ring = ws.rings.ring();
     FitResult fit;
     bool have_fit = false;
     double fit_ring = ring;
