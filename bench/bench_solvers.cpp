@@ -9,9 +9,10 @@
 //                           or 2-norm column scaling + truncated SVD (JacobiSVD / BDCSVD)
 //   Rings/level:L           RingCollector::collect_at_least over all vertices with LHF-2's
 //                           parameters (1.5-ring, >= 9 neighbours, up to a 3-ring)
-// The LHF-2 systems are those of the driver's first fit attempt (ring_fit_estimator.cpp): local
-// frame of the area-weighted normal, centre row plus neighbours with gamma = max(0, m_i . m0) > 0,
-// heights (p_i - p0) . m0, eq. (15) weights. They are built once, outside the timing.
+// The LHF-2 systems are those of the driver's first fit attempt, taken from the estimator itself
+// (RingFitEstimator::first_system): local frame of the area-weighted normal, centre row plus
+// neighbours with gamma = max(0, m_i . m0) > 0, heights (p_i - p0) . m0, eq. (15) weights. They
+// are built once, outside the timing.
 // SVD settings are RingFitEstimator::set_solver's defaults (absolute threshold 1e-8, 2-norm
 // column scaling).
 //
@@ -29,9 +30,11 @@
 #include "bench/table5.h"
 #include "mesh/rings.h"
 #include "meshgen/generate.h"
+#include "methods/estimator.h"
 #include "methods/least_squares.h"
 #include "methods/local_frame.h"
 #include "methods/polynomial_fit.h"
+#include "methods/ring_fit_estimator.h"
 #include "methods/safeguarded_qr.h"
 #include "methods/weights.h"
 
@@ -55,36 +58,23 @@ Systems build_systems(const Mesh& mesh) {
   Systems s;
   s.verts = mesh.num_vertices();
   s.tris = mesh.num_faces();
+  // Exactly the systems LHF-2 fits first at every vertex, assembled by the estimator itself.
+  EstimatorOptions o;
+  o.degree = kDegree;
+  const auto est = make_estimator("lhf", o);
+  const auto& lhf = dynamic_cast<const RingFitEstimator&>(*est);
   const VertexMatrix normals = mesh.area_weighted_normals();
-  RingCollector rings(mesh);
-  const double r0 = default_ring(kDegree);
-  RowVector u, v, gamma, w;
+  const MeshContext ctx{mesh, normals};
+  const auto ws = lhf.make_workspace(mesh);
+  RingFitEstimator::FitSystem sys;
   for (int c = 0; c < mesh.num_vertices(); ++c) {
-    const Vec3 m0 = normals.row(c).transpose();
-    const LocalFrame frame = make_local_frame(m0);
-    rings.collect_at_least(c, r0, min_neighbours(kDegree), 2.0 * r0);
-    const Vec3 p0 = mesh.position(c);
     s.begin.push_back(static_cast<int>(s.u.size()));
-    std::vector<double> uu = {0.0}, vv = {0.0}, ff = {0.0}, gg = {1.0};  // the centre row
-    for (int nb : rings.neighbours()) {
-      if (static_cast<int>(uu.size()) >= kMaxRows) break;
-      const double g = normal_safeguard_gamma(normals.row(nb).transpose(), m0);
-      if (!(g > 0.0)) continue;
-      const Vec3 d = mesh.position(nb) - p0;
-      uu.push_back(d.dot(frame.t1));
-      vv.push_back(d.dot(frame.t2));
-      ff.push_back(d.dot(frame.m));
-      gg.push_back(g);
-    }
-    const int m = static_cast<int>(uu.size());
-    u = Eigen::Map<const Eigen::VectorXd>(uu.data(), m);
-    v = Eigen::Map<const Eigen::VectorXd>(vv.data(), m);
-    gamma = Eigen::Map<const Eigen::VectorXd>(gg.data(), m);
-    compute_weights(u, v, gamma, weight_exponent(kDegree, -1.0), w);
-    s.u.insert(s.u.end(), uu.begin(), uu.end());
-    s.v.insert(s.v.end(), vv.begin(), vv.end());
-    s.f.insert(s.f.end(), ff.begin(), ff.end());
-    s.w.insert(s.w.end(), w.data(), w.data() + m);
+    if (!lhf.first_system(ctx, c, *ws, sys)) continue;
+    const auto m = static_cast<size_t>(sys.u.size());
+    s.u.insert(s.u.end(), sys.u.data(), sys.u.data() + m);
+    s.v.insert(s.v.end(), sys.v.data(), sys.v.data() + m);
+    s.f.insert(s.f.end(), sys.f.data(), sys.f.data() + m);  // one right-hand side (heights)
+    s.w.insert(s.w.end(), sys.w.data(), sys.w.data() + m);
   }
   s.begin.push_back(static_cast<int>(s.u.size()));
   return s;

@@ -82,10 +82,10 @@ bool RingFitEstimator::parameterize(const RingView& ring, std::vector<Vec2>& uv,
 
 namespace {
 
-// One fit on the ring currently held by ws.rings. Returns false if the hook failed.
-bool fit_current_ring(const RingFitEstimator& est, bool hook_ok, const MeshContext& ctx, int v,
-                      const LocalFrame& frame, bool safeguard, RingFitWorkspace& ws,
-                      FitResult& result) {
+// The weighted system (ws.u, ws.v, ws.f, ws.w) of the ring currently held by ws.rings, from the
+// parameterization in ws.uv. Returns false if the hook failed.
+bool assemble_current_ring(const RingFitEstimator& est, bool hook_ok, const MeshContext& ctx, int v,
+                           const LocalFrame& frame, bool safeguard, RingFitWorkspace& ws) {
   if (!hook_ok || ws.uv.size() != 1 + ws.rings.neighbours().size()) return false;
   const EstimatorOptions& o = est.options();
   const std::span<const int> nb = ws.rings.neighbours();
@@ -130,6 +130,14 @@ bool fit_current_ring(const RingFitEstimator& est, bool hook_ok, const MeshConte
     }
   }
   compute_weights(ws.u, ws.v, ws.gamma, weight_exponent(o.degree, o.weight_power), ws.w);
+  return true;
+}
+
+// One fit on the ring currently held by ws.rings. Returns false if the hook failed.
+bool fit_current_ring(const RingFitEstimator& est, bool hook_ok, const MeshContext& ctx, int v,
+                      const LocalFrame& frame, bool safeguard, RingFitWorkspace& ws,
+                      FitResult& result) {
+  if (!assemble_current_ring(est, hook_ok, ctx, v, frame, safeguard, ws)) return false;
   result = fit_polynomial(ws.u, ws.v, ws.f, ws.w, est.fit_settings(), ws.fit);
   return true;
 }
@@ -188,6 +196,24 @@ void RingFitEstimator::estimate(const MeshContext& ctx, int v, Workspace& base,
   } catch (...) {  // e.g. std::bad_alloc while a buffer grows; estimate() must not throw
     set_failed(m0, frame, 0.0, 0, out);
   }
+}
+
+bool RingFitEstimator::first_system(const MeshContext& ctx, int v, Workspace& base,
+                                    FitSystem& out) const {
+  auto& ws = static_cast<RingFitWorkspace&>(base);
+  const LocalFrame frame = make_local_frame(ctx.approx_normals.row(v).transpose());
+  collect_neighbourhood(ws.rings, v);
+  const RingView view{
+      ctx.mesh, ctx.approx_normals, v, ws.rings.ring(), ws.rings.neighbours(), ws.rings.faces(),
+      frame};
+  const bool hook_ok = parameterize(view, ws.uv, ws.param.get());
+  if (!assemble_current_ring(*this, hook_ok, ctx, v, frame, use_normal_safeguard(), ws))
+    return false;
+  out.u = ws.u;
+  out.v = ws.v;
+  out.f = ws.f;
+  out.w = ws.w;
+  return true;
 }
 
 }  // namespace curvbench

@@ -97,6 +97,16 @@ class RingFitEstimator : public Estimator {
   FitRoute route() const { return route_; }
   /// Least-squares settings used for every fit (degree, centre row, solver, QR tolerance).
   const FitSettings& fit_settings() const { return settings_; }
+  /// The weighted least-squares system the driver fits first at vertex v (starting
+  /// neighbourhood, before any rank-failure growth): rows (u, v), right-hand sides f and
+  /// weights w of eq. (15). For benchmarks that time the solve alone. Returns false if there is
+  /// none (the parameterization hook failed). `ws` comes from make_workspace().
+  struct FitSystem {
+    RowVector u, v, w;
+    RhsMatrix f;
+  };
+  bool first_system(const MeshContext& ctx, int v, Workspace& ws, FitSystem& out) const;
+
   /// Replaces the solver settings (comparison runs: SVD instead of the safeguarded QR). The
   /// degree and include_centre always come from options().
   void set_solver(LsqSolver solver, ColumnScaling scaling = ColumnScaling::two_norm,
