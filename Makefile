@@ -1,13 +1,27 @@
 # Thin front end to CMake. `make experiments` and `make test` are the two commands a new user
 # needs; both install missing Debian packages first (as root) through tools/deps.sh.
 # `make bench` runs the Google Benchmark suites and writes results/table5_timing.{csv,md}.
+# `make test-sanitize` builds the whole test suite with AddressSanitizer and
+# UndefinedBehaviorSanitizer in build-sanitize/ and runs it (CI runs it after `make test`).
+# `make fuzz` builds a libFuzzer target per mesh reader (OFF, OBJ, PLY) with clang in build-fuzz/
+# and runs each for FUZZ_SECONDS (default 60), failing on any crash, sanitizer report, timeout or
+# out-of-memory (fuzz/run.sh; seeds in tests/corpus/).
 MAKEFLAGS += --no-print-directory
 BUILD ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 RUN_ARGS ?=
+SANITIZE_BUILD ?= build-sanitize
+# -O1 with assertions on (Eigen's index checks, CGAL's preconditions): sanitizers see more, and
+# the build stays about as fast as the Release one.
+SANITIZE_CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g"
+SANITIZE_ENV = ASAN_OPTIONS=detect_leaks=1:check_initialization_order=1:strict_init_order=1 \
+	UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SECONDS ?= 60
+FUZZ_CXX ?= clang++
 
-.PHONY: all deps configure build test experiments bench clean format
+.PHONY: all deps configure build test experiments bench clean format test-sanitize fuzz
 
 all: build
 
@@ -28,6 +42,19 @@ experiments: build
 
 bench: build
 	@bash tools/bench.sh $(BUILD)
+
+test-sanitize: deps
+	@cmake -S . -B $(SANITIZE_BUILD) -DCURVBENCH_SANITIZE=ON -DCURVBENCH_BUILD_BENCH=OFF \
+	  $(SANITIZE_CMAKE_FLAGS) > /dev/null
+	@$(SANITIZE_ENV) cmake --build $(SANITIZE_BUILD) -j $(JOBS)
+	@cd $(SANITIZE_BUILD) && $(SANITIZE_ENV) ctest --output-on-failure -j $(JOBS)
+
+fuzz:
+	@bash tools/deps.sh fuzz
+	@cmake -S . -B $(FUZZ_BUILD) -DCURVBENCH_FUZZ=ON -DCMAKE_CXX_COMPILER=$(FUZZ_CXX) \
+	  -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" > /dev/null
+	@cmake --build $(FUZZ_BUILD) -j $(JOBS)
+	@bash fuzz/run.sh $(FUZZ_BUILD) $(FUZZ_SECONDS)
 
 format:
 	@clang-format -i $$(git ls-files '*.h' '*.cpp')

@@ -1,12 +1,18 @@
 // `curvbench estimate MESH --method M --degree D [--rings R] [--threads N] [--noisy] [--timing]
-//  --output OUT.csv|OUT.ply`: per-vertex normals and curvatures of one estimator.
+//  [--skip-invalid] --output OUT.csv|OUT.ply`: per-vertex normals and curvatures of one estimator.
 //
 // CSV: a header, then one row per vertex
 //   vertex,nx,ny,nz,k1,k2,H,K,d1x,d1y,d1z,d2x,d2y,d2z,degree,points,status
 // with "%.17g" numbers, "nan" for NaN and the status as a word (ok, degree_reduced, failed,
 // excluded). PLY: the mesh with the same per-vertex properties (status as its integer code
 // 0..3, plus the ring used). The file is written to a temporary name and renamed, so a failed
-// run never leaves a truncated OUT. A one-line summary goes to stderr.
+// run never leaves a truncated OUT. A one-line summary goes to stderr, after a one-line warning
+// for each kind of element the reader dropped (faces with fewer than 3 vertices or a repeated
+// index; with --skip-invalid, vertices with NaN/Inf coordinates and their faces).
+//
+// With --skip-invalid the output has only the remaining vertices: the CSV "vertex" column then
+// holds each vertex's index in the input file; the PLY gets a "source_vertex" property (the same
+// index) and a header comment saying so.
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -38,6 +44,7 @@ struct EstimateOptions {
   int threads = 0;
   bool noisy = false;
   bool timing = false;
+  bool skip_invalid = false;
   std::string output;
 };
 
@@ -58,8 +65,9 @@ void put_double(std::FILE* f, double x) {
 }
 
 // Writes to `path`; errors name `shown` (the user's output file).
+// `source`: the file index of each vertex (empty: the identity).
 void write_csv(const std::string& path, const std::string& shown,
-               const std::vector<VertexEstimate>& est) {
+               const std::vector<VertexEstimate>& est, const std::vector<int>& source) {
   std::FILE* f = std::fopen(path.c_str(), "w");
   if (f == nullptr) throw InputError(shown + ": cannot open for writing");
   std::fputs("vertex,nx,ny,nz,k1,k2,H,K,d1x,d1y,d1z,d2x,d2y,d2z,degree,points,status\n", f);
@@ -68,7 +76,7 @@ void write_csv(const std::string& path, const std::string& shown,
     const std::array<double, 13> vals = {
         e.normal.x(), e.normal.y(), e.normal.z(), e.k1,     e.k2,     e.H,     e.K,
         e.d1.x(),     e.d1.y(),     e.d1.z(),     e.d2.x(), e.d2.y(), e.d2.z()};
-    std::fprintf(f, "%zu", v);
+    std::fprintf(f, "%zu", source.empty() ? v : static_cast<size_t>(source[v]));
     for (double x : vals) {
       std::fputc(',', f);
       put_double(f, x);
@@ -132,7 +140,8 @@ int run_estimate(const EstimateOptions& o, bool degree_given) {
     return std::chrono::duration<double>(Clock::now() - t).count();
   };
   const auto t_read = Clock::now();
-  const Mesh mesh = read_mesh(o.mesh);
+  MeshReadReport report;
+  const Mesh mesh = read_input_mesh(o.mesh, o.skip_invalid, report);
   const double read_seconds = since(t_read);
   const auto t0 = Clock::now();
   const std::vector<VertexEstimate> res = estimate_mesh(mesh, *est);
@@ -143,9 +152,21 @@ int run_estimate(const EstimateOptions& o, bool degree_given) {
   const std::string tmp = temp_path(o.output);
   try {
     if (ext == "csv") {
-      write_csv(tmp, o.output, res);
+      write_csv(tmp, o.output, res, report.source_vertex);
     } else {
-      write_mesh(tmp, mesh, ply_properties(res));
+      std::vector<VertexProperty> props = ply_properties(res);
+      std::vector<std::string> comments;
+      if (!report.source_vertex.empty()) {
+        props.push_back(
+            {"source_vertex",
+             std::vector<double>(report.source_vertex.begin(), report.source_vertex.end()), true});
+        comments.push_back("--skip-invalid: " + std::to_string(report.vertices_skipped) + " of " +
+                           std::to_string(report.vertices_in_file) +
+                           " input vertices (NaN/Inf coordinates) and " +
+                           std::to_string(report.faces_skipped) +
+                           " faces dropped; source_vertex = index in the input file");
+      }
+      write_mesh(tmp, mesh, props, comments);
     }
     std::error_code ec;
     std::filesystem::rename(tmp, o.output, ec);
@@ -194,6 +215,10 @@ Command add_estimate_command(CLI::App& app) {
   sub->add_flag("--noisy", o->noisy, "Noisy input: default ring + 0.5 (paper §5.3)");
   sub->add_flag("--timing", o->timing,
                 "Print per-stage wall times (read, neighbourhoods+fit, write) to stderr");
+  sub->add_flag("--skip-invalid", o->skip_invalid,
+                "Drop vertices with a NaN/Inf coordinate and the faces using them instead of "
+                "failing; the output then has only the remaining vertices (CSV 'vertex' = index "
+                "in the input file; PLY: property 'source_vertex' and a header comment)");
   sub->add_option("--output", o->output, "Output file (.csv or .ply)")->required();
   return [o, degree]() { return run_estimate(*o, degree->count() > 0); };
 }

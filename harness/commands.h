@@ -5,6 +5,10 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <string>
+
+#include "mesh/io.h"
+#include "mesh/mesh.h"
 
 namespace curvbench::cli {
 
@@ -14,5 +18,9 @@ Command add_info_command(CLI::App& app);
 Command add_mesh_command(CLI::App& app);
 Command add_estimate_command(CLI::App& app);
 Command add_run_command(CLI::App& app);
+
+/// Reads the mesh a command was given (read_mesh with --skip-invalid as `skip_invalid`), printing
+/// each read warning (dropped faces, skipped vertices) to stderr as "curvbench: warning: ...".
+Mesh read_input_mesh(const std::string& path, bool skip_invalid, MeshReadReport& report);
 
 }  // namespace curvbench::cli

@@ -1,7 +1,10 @@
 #include "harness/report.h"
 
+#include <sys/wait.h>
+
 #include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -37,12 +40,9 @@ std::string fixed(double x, int digits = 2) {
   return buf;
 }
 
+// The text of an optional input; empty when the file does not exist.
 std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return {};
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  return fs::exists(path) ? read_file(path) : "";
 }
 
 // Header then rows of a results CSV; empty when the file does not exist (not generated yet).
@@ -151,13 +151,15 @@ bool render_plot(const std::string& base, const std::string& title,
          << " title \"" << series[i].method << " (rate " << fixed(rate) << ")\" noenhanced";
   }
   plot << "\n";
-  const std::string script_path = base + ".gp";
+  // Script and images under temporary names (swept by remove_stale_temp_files if killed).
+  const std::string script_path = temp_path(base + ".gp");
+  const std::string png = temp_path(base + ".png"), svg = temp_path(base + ".svg");
   {
     std::ofstream out(script_path);
-    out << gp.str() << "set terminal pngcairo size 900,560 font 'sans,11'\nset output '" << base
-        << ".png.tmp'\n"
-        << plot.str() << "set terminal svg size 900,560 font 'sans,11'\nset output '" << base
-        << ".svg.tmp'\n"
+    out << gp.str() << "set terminal pngcairo size 900,560 font 'sans,11'\nset output '" << png
+        << "'\n"
+        << plot.str() << "set terminal svg size 900,560 font 'sans,11'\nset output '" << svg
+        << "'\n"
         << plot.str() << "unset output\n";
   }
   const std::string cmd = "gnuplot '" + script_path + "' > /dev/null 2>&1";
@@ -165,12 +167,16 @@ bool render_plot(const std::string& base, const std::string& title,
   std::error_code ec;
   fs::remove(script_path, ec);
   if (rc != 0) {
-    fs::remove(base + ".png.tmp", ec);
-    fs::remove(base + ".svg.tmp", ec);
+    fs::remove(png, ec);
+    fs::remove(svg, ec);
+    // The shell reports a child killed by signal s as exit status 128 + s.
+    const int status = WIFEXITED(rc) ? WEXITSTATUS(rc) - 128 : WIFSIGNALED(rc) ? WTERMSIG(rc) : 0;
+    if (status == SIGINT || status == SIGTERM) std::raise(status);
     return false;
   }
-  fs::rename(base + ".png.tmp", base + ".png", ec);
-  fs::rename(base + ".svg.tmp", base + ".svg", ec);
+  fs::rename(png, base + ".png", ec);
+  if (ec) return false;
+  fs::rename(svg, base + ".svg", ec);
   return !ec;
 }
 
@@ -306,6 +312,7 @@ std::string write_report(const std::vector<Experiment>& experiments, const Repor
         const std::string base = panel.id + "_" + m.family;
         md << "\n";
         if (options.plots) {
+          if (options.stop && options.stop()) return "";
           // Two title lines: "Fig. 6 (left). [family]" and the rest of the caption (gnuplot
           // turns \n inside a double-quoted title into a line break).
           const size_t after_fig = panel.caption.rfind("Fig. ", 0) == 0 ? 5 : 0;

@@ -8,6 +8,7 @@
 //   results/plots/<panel>_<family>.{png,svg}   one log-log plot per figure panel and mesh family
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,8 @@ namespace curvbench {
 struct ReportOptions {
   std::string results_dir = "results";
   bool plots = true;  ///< render PNG and SVG with gnuplot (skipped with a warning if missing)
+  /// Polled before each plot; true = give up (REPORT.md is then not written).
+  std::function<bool()> stop;
 };
 
 /// Writes results/table2.csv: ring sizes of an interior vertex of a regular valence-6 mesh.
@@ -27,11 +30,13 @@ void write_table2_csv(const std::string& path);
 void write_table4_csv(const std::string& path, int max_grid_points);
 
 /// Builds REPORT.md (and the plots) for the given experiments from the CSVs in results_dir.
-/// Returns the path of REPORT.md.
+/// Returns the path of REPORT.md, or "" if options.stop asked to stop (REPORT.md untouched).
 std::string write_report(const std::vector<Experiment>& experiments, const ReportOptions& options);
 
 /// Renders one panel's log-log plot (error vs h, one line per method, rate in the legend) to
-/// <base>.png and <base>.svg with gnuplot. Returns false if gnuplot is unavailable or fails.
+/// <base>.png and <base>.svg with gnuplot, each under its temp_path() name first and then renamed
+/// into place. Returns false if gnuplot is unavailable or fails. If gnuplot was killed by SIGINT
+/// or SIGTERM (std::system ignores them in the caller meanwhile), the signal is re-raised.
 bool render_plot(const std::string& base, const std::string& title,
                  const std::vector<ErrorRow>& rows);
 

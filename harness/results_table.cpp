@@ -1,7 +1,10 @@
 #include "harness/results_table.h"
 
+#include <signal.h>
 #include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -51,6 +54,10 @@ std::string format_double(double x) {
   return buf;
 }
 
+std::string temp_path(const std::string& path) {
+  return path + ".tmp." + std::to_string(::getpid());
+}
+
 void write_file_atomic(const std::string& path, const std::string& content) {
   namespace fs = std::filesystem;
   const fs::path target(path);
@@ -58,7 +65,7 @@ void write_file_atomic(const std::string& path, const std::string& content) {
     std::error_code ec;
     fs::create_directories(target.parent_path(), ec);
   }
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+  const std::string tmp = temp_path(path);
   {
     std::ofstream out(tmp, std::ios::binary);
     if (!out) throw InputError(path + ": cannot write (" + tmp + ")");
@@ -78,9 +85,41 @@ void write_file_atomic(const std::string& path, const std::string& content) {
   }
 }
 
-void write_error_csv(const std::string& path, const std::vector<ErrorRow>& rows) {
+int remove_stale_temp_files(const std::string& directory) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_directory(directory, ec)) return 0;
+  std::vector<fs::path> stale;
+  for (auto it = fs::recursive_directory_iterator(directory, ec);
+       !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+    if (!it->is_regular_file(ec)) continue;
+    const std::string name = it->path().filename().string();
+    const auto at = name.rfind(".tmp.");
+    if (at == std::string::npos || at + 5 == name.size()) continue;
+    const std::string pid_text = name.substr(at + 5);
+    if (pid_text.find_first_not_of("0123456789") != std::string::npos || pid_text.size() > 9)
+      continue;
+    const pid_t pid = static_cast<pid_t>(std::stol(pid_text));
+    // Still running (or not ours to signal): keep. Gone (ESRCH): its writer is dead.
+    if (pid > 0 && ::kill(pid, 0) == -1 && errno == ESRCH) stale.push_back(it->path());
+  }
+  int removed = 0;
+  for (const auto& p : stale) removed += fs::remove(p, ec) ? 1 : 0;
+  return removed;
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) throw InputError(path + ": read failed");
+  return ss.str();
+}
+
+std::string error_csv_text(const std::vector<ErrorRow>& rows, const std::string& comment) {
   std::ostringstream out;
-  out << provenance_comment() << "\n" << kErrorHeader << "\n";
+  out << comment << "\n" << kErrorHeader << "\n";
   for (const auto& r : rows) {
     out << r.experiment << ',' << r.surface << ',' << r.family << ',' << r.level << ','
         << r.vertices << ',' << format_double(r.h) << ',' << r.method << ',' << r.degree << ','
@@ -88,7 +127,11 @@ void write_error_csv(const std::string& path, const std::vector<ErrorRow>& rows)
         << ',' << format_double(r.error) << ',' << r.counted << ',' << r.excluded << ','
         << r.degree_reduced << ',' << r.failed << "\n";
   }
-  write_file_atomic(path, out.str());
+  return out.str();
+}
+
+void write_error_csv(const std::string& path, const std::vector<ErrorRow>& rows) {
+  write_file_atomic(path, error_csv_text(rows, provenance_comment()));
 }
 
 void write_rate_csv(const std::string& path, const std::vector<RateRow>& rows) {
@@ -122,8 +165,11 @@ int CsvTable::integer(size_t row, size_t c) const {
 }
 
 CsvTable read_csv_table(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open");
+  return parse_csv_table(read_file(path), path);
+}
+
+CsvTable parse_csv_table(const std::string& text, const std::string& path) {
+  std::istringstream in(text);
   CsvTable t;
   t.path = path;
   std::string line;
@@ -150,7 +196,11 @@ CsvTable read_csv_table(const std::string& path) {
 }
 
 std::vector<ErrorRow> read_error_csv(const std::string& path) {
-  const CsvTable t = read_csv_table(path);
+  return parse_error_csv(read_file(path), path);
+}
+
+std::vector<ErrorRow> parse_error_csv(const std::string& text, const std::string& path) {
+  const CsvTable t = parse_csv_table(text, path);
   std::string header;
   for (const auto& h : t.header) header += (header.empty() ? "" : ",") + h;
   if (header != kErrorHeader)

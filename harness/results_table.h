@@ -45,12 +45,18 @@ struct RateRow {
   std::vector<double> pairwise;
 };
 
-/// Writes rows as CSV (header + rows) atomically (temporary file + rename).
+/// Writes rows as CSV (provenance comment + header + rows) atomically (write_file_atomic).
 void write_error_csv(const std::string& path, const std::vector<ErrorRow>& rows);
 void write_rate_csv(const std::string& path, const std::vector<RateRow>& rows);
 
+/// The text of an errors CSV: `comment` (one or more '#' lines, without the final newline),
+/// the header, then the rows. write_error_csv uses provenance_comment() as the comment.
+std::string error_csv_text(const std::vector<ErrorRow>& rows, const std::string& comment);
+
 /// Reads an errors CSV written by write_error_csv. Throws InputError naming file and line.
 std::vector<ErrorRow> read_error_csv(const std::string& path);
+/// The same from the file's text; `name` names it in error messages.
+std::vector<ErrorRow> parse_error_csv(const std::string& text, const std::string& name);
 
 /// Groups rows by (experiment, family, method, rings, noise, vertex_set, quantity, norm) and
 /// computes the average rate over the first and last level, plus the pairwise rates.
@@ -76,9 +82,25 @@ struct CsvTable {
 /// Reads a CsvTable. Throws InputError if the file cannot be opened, has no header, or a row
 /// has a different number of fields than the header ("<path>:<line>: expected N fields, got M").
 CsvTable read_csv_table(const std::string& path);
+/// The same from the file's text; `name` names it in error messages.
+CsvTable parse_csv_table(const std::string& text, const std::string& name);
 
-/// Writes `content` to `path` atomically (temporary file in the same folder + rename).
+/// Writes `content` to `path` atomically: to temp_path(path) in the same folder, then renamed
+/// into place, so readers (and an interrupted or killed run) never see a truncated file. Creates
+/// the folder if needed. Throws InputError naming the path on failure.
 void write_file_atomic(const std::string& path, const std::string& content);
+
+/// The temporary name under which `path` is written before the rename: "<path>.tmp.<pid>".
+/// Every output of curvbench (CSVs, Markdown, plots) goes through such a name.
+std::string temp_path(const std::string& path);
+
+/// Removes the temporary files "<name>.tmp.<pid>" under `directory` (recursively) left behind
+/// by a process that no longer runs (e.g. killed with SIGKILL while writing); files of running
+/// processes are kept. Returns the number removed; a missing directory removes nothing.
+int remove_stale_temp_files(const std::string& directory);
+
+/// The whole content of a file; throws InputError naming the path if it cannot be read.
+std::string read_file(const std::string& path);
 
 /// "%.17g" with "nan"/"inf" spelled out.
 std::string format_double(double x);

@@ -2,10 +2,12 @@
 
 #include <chrono>
 #include <cstdio>
+#include <optional>
 #include <set>
 
 #include "core/errors.h"
 #include "core/text.h"
+#include "harness/case_store.h"
 #include "meshgen/generate.h"
 #include "methods/estimator.h"
 
@@ -19,7 +21,12 @@ std::string noise_label(const Experiment& e, const std::string& family) {
   return "none";
 }
 
-// The (quantity, norm) pairs of the experiment's panels, in first-seen order.
+double case_work(const RunCase& c) {
+  return static_cast<double>(1u << (2 * c.level));
+}
+
+}  // namespace
+
 std::vector<std::pair<Quantity, Norm>> panel_measures(const Experiment& e) {
   std::vector<std::pair<Quantity, Norm>> out;
   std::set<std::pair<Quantity, Norm>> seen;
@@ -27,8 +34,6 @@ std::vector<std::pair<Quantity, Norm>> panel_measures(const Experiment& e) {
     if (seen.insert({p.quantity, p.norm}).second) out.push_back({p.quantity, p.norm});
   return out;
 }
-
-}  // namespace
 
 const ScoredMesh& MeshCache::get(const std::string& family, int level, int noise_order,
                                  std::uint64_t seed) {
@@ -116,41 +121,64 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads) 
   return rows;
 }
 
-std::vector<ErrorRow> run_experiments(const std::vector<Experiment>& experiments,
-                                      const RunOptions& options) {
+RunSummary run_experiments(const std::vector<Experiment>& experiments, const RunOptions& options) {
   using clock = std::chrono::steady_clock;
   const auto cases = expand_cases(experiments);
-  MeshCache cache;
+  std::optional<CaseStore> store;
+  if (!options.store_dir.empty()) store.emplace(options.store_dir);
+  // Stored rows of the unchanged cases, read up front so the ETA covers only the work left.
+  std::vector<std::optional<std::vector<ErrorRow>>> stored(cases.size());
+  if (store && !options.force)
+    for (size_t i = 0; i < cases.size(); ++i) stored[i] = store->load(cases[i]);
   // ETA from vertices: sizes are known from the levels only after generation, so weight each
   // case by 4^level (every family's vertex count grows about 4x per level).
   double total_work = 0.0, done_work = 0.0;
-  for (const auto& c : cases) total_work += static_cast<double>(1u << (2 * c.level));
-  std::vector<ErrorRow> rows;
+  for (size_t i = 0; i < cases.size(); ++i)
+    if (!stored[i]) total_work += case_work(cases[i]);
+  MeshCache cache;
+  RunSummary summary;
+  summary.total = static_cast<int>(cases.size());
   const auto start = clock::now();
   RunProgress p;
-  p.total = static_cast<int>(cases.size());
-  for (const auto& c : cases) {
+  p.total = summary.total;
+  for (size_t i = 0; i < cases.size(); ++i) {
+    const RunCase& c = cases[i];
     const auto t0 = clock::now();
-    auto case_rows = run_case(c, cache, options.threads);
+    std::vector<ErrorRow> case_rows;
+    p.reused = stored[i].has_value();
+    if (p.reused) {
+      case_rows = std::move(*stored[i]);
+      ++summary.reused;
+    } else {
+      case_rows = run_case(c, cache, options.threads);
+      if (store) store->save(c, case_rows);
+      done_work += case_work(c);
+      ++summary.computed;
+    }
     const auto t1 = clock::now();
-    done_work += static_cast<double>(1u << (2 * c.level));
     ++p.done;
     p.current = &c;
     p.case_seconds = std::chrono::duration<double>(t1 - t0).count();
     p.elapsed_seconds = std::chrono::duration<double>(t1 - start).count();
-    p.eta_seconds = p.elapsed_seconds * (total_work - done_work) / done_work;
+    p.eta_seconds = done_work > 0 ? p.elapsed_seconds * (total_work - done_work) / done_work : 0.0;
     p.vertices = case_rows.empty() ? 0 : case_rows.front().vertices;
     if (options.progress) options.progress(p);
-    rows.insert(rows.end(), case_rows.begin(), case_rows.end());
-    const bool last_of_experiment = &c == &cases.back() || (&c + 1)->experiment != c.experiment;
+    summary.rows.insert(summary.rows.end(), case_rows.begin(), case_rows.end());
+    const bool last_of_experiment =
+        i + 1 == cases.size() || cases[i + 1].experiment != c.experiment;
     if (last_of_experiment && options.experiment_done) {
       std::vector<ErrorRow> mine;
-      for (const auto& r : rows)
+      for (const auto& r : summary.rows)
         if (r.experiment == c.experiment->name) mine.push_back(r);
       options.experiment_done(*c.experiment, mine);
     }
+    if (i + 1 < cases.size() && options.stop && options.stop()) {
+      summary.interrupted = true;
+      return summary;
+    }
   }
-  return rows;
+  if (store) store->prune(cases);
+  return summary;
 }
 
 }  // namespace curvbench

@@ -1,5 +1,7 @@
 // Runs experiments: generates each mesh level, runs each method, scores it against the exact
-// surface, and returns the long-format error rows (results_table.h).
+// surface, and returns the long-format error rows (results_table.h). With a case store
+// (case_store.h) every finished case is kept on disk, and a later run reuses the cases whose
+// inputs and code version are unchanged; a stop request is honoured between cases.
 #pragma once
 
 #include <functional>
@@ -7,6 +9,7 @@
 #include <memory>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "harness/experiment.h"
@@ -39,12 +42,13 @@ struct RunCase {
 };
 
 struct RunProgress {
-  int done = 0;   ///< cases finished
+  int done = 0;   ///< cases finished (computed or reused)
   int total = 0;  ///< cases in the run
   const RunCase* current = nullptr;
+  bool reused = false;  ///< the current case's rows came from the store
   double case_seconds = 0.0;
   double elapsed_seconds = 0.0;
-  double eta_seconds = 0.0;  ///< estimate from vertices processed so far
+  double eta_seconds = 0.0;  ///< estimate from the work (4^level) of the cases left to compute
   int vertices = 0;
 };
 
@@ -53,16 +57,32 @@ struct RunOptions {
   std::function<void(const RunProgress&)> progress;  ///< called after each case
   /// Called with an experiment's rows as soon as its last case is done (e.g. to write its CSV).
   std::function<void(const Experiment&, const std::vector<ErrorRow>&)> experiment_done;
+  /// Folder of the case store (case_store.h); empty = no store, every case is computed.
+  std::string store_dir;
+  bool force = false;  ///< recompute every case even if stored (the store is rewritten)
+  /// Polled after each case; true = stop there (the finished cases are stored).
+  std::function<bool()> stop;
+};
+
+struct RunSummary {
+  std::vector<ErrorRow> rows;  ///< rows of the finished cases, in case order
+  int total = 0;               ///< cases in the run
+  int reused = 0;              ///< finished cases taken from the store
+  int computed = 0;            ///< finished cases computed in this run
+  bool interrupted = false;    ///< stopped before the last case
 };
 
 /// Expands the experiments into cases (experiment order, then mesh, level, method).
 std::vector<RunCase> expand_cases(const std::vector<Experiment>& experiments);
 
+/// The (quantity, norm) pairs of the experiment's panels, in first-seen order: the rows of a case.
+std::vector<std::pair<Quantity, Norm>> panel_measures(const Experiment& e);
+
 /// Runs one case and returns its rows: every panel's (quantity, norm) on the case's vertex set.
 std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads);
 
-/// Runs all cases of the experiments, reporting progress; rows in case order.
-std::vector<ErrorRow> run_experiments(const std::vector<Experiment>& experiments,
-                                      const RunOptions& options);
+/// Runs all cases of the experiments (taking the unchanged ones from the store, if any),
+/// reporting progress, until done or options.stop() says to stop.
+RunSummary run_experiments(const std::vector<Experiment>& experiments, const RunOptions& options);
 
 }  // namespace curvbench

@@ -4,10 +4,12 @@
 //   1. A validating pre-read of our own (check_off / check_obj / check_ply). It walks the whole
 //      file without ever allocating by a declared count, refuses headers that declare more
 //      elements than the file could hold, and reports the first problem with its line number (or
-//      element number for binary PLY): bad header, truncated body, non-numeric token, non-finite
-//      coordinate, negative or out-of-range index, face with fewer than 3 vertices.
+//      element number for binary PLY): bad header, truncated body, data after the declared
+//      elements (wrong counts), non-numeric token, non-finite coordinate (recorded instead with
+//      skip_invalid), negative or out-of-range index.
 //   2. CGAL::IO::read_OFF / read_OBJ / read_PLY into a polygon soup (points + index lists), which
-//      is then fan-triangulated into a Mesh.
+//      soup_to_mesh filters (polygons with fewer than 3 vertices or a repeated index dropped;
+//      skipped vertices and their polygons dropped) and fan-triangulates into a Mesh.
 // The pre-read exists because CGAL 5.5's readers accept much malformed input silently and
 // allocate by header counts before reading (see the notes above each check_* function); after it
 // has passed, CGAL only sees input it handles correctly.
@@ -238,6 +240,26 @@ struct SoupCounts {
   unsigned long long faces = 0;
 };
 
+/// Non-finite coordinates met by a pre-read. With skip_invalid they are recorded instead of
+/// refused: the vertex (to be dropped with its faces) and the token's bytes in the text, which
+/// read_mesh overwrites with "0" before CGAL reads it (CGAL's stream extraction cannot parse
+/// "nan" or "inf" and would fail the whole file).
+struct NonFinite {
+  bool skip_invalid = false;
+  std::vector<unsigned long long> vertices;                // increasing, no repeats
+  std::vector<std::pair<std::size_t, std::size_t>> spans;  // (offset, length) in the text
+
+  /// Records vertex `v`'s coordinate `token` (a view into `text`); false if not skipping.
+  bool skip(std::string_view text, std::string_view token, unsigned long long v) {
+    if (!skip_invalid) return false;
+    if (vertices.empty() || vertices.back() != v) vertices.push_back(v);
+    spans.emplace_back(static_cast<std::size_t>(token.data() - text.data()), token.size());
+    return true;
+  }
+};
+
+constexpr const char* kSkipHint = " (--skip-invalid drops such vertices)";
+
 void check_not_empty(const std::string& path, const SoupCounts& counts) {
   if (counts.vertices == 0) fail(path, "empty mesh: no vertices");
   if (counts.faces == 0) fail(path, "empty mesh: no faces");
@@ -263,7 +285,10 @@ void check_face_index(const std::string& path, std::size_t line, unsigned long l
 // from double to size_t (a size "3.9" or an index "1.7" is truncated, a huge size is resized to
 // before the line is checked); ignores extra indices; accepts faces with 0, 1 or 2 vertices; reads
 // binary OFF without the per-face color count of the Geomview format (every face after the first
-// is misread); and reads STOFF texture coordinates through uninitialized members.
+// is misread); reads STOFF texture coordinates through uninitialized members; and converts color
+// entries without range checks (a color-map index 1e300 is cast to int: undefined behaviour;
+// found by fuzzing, tests/corpus/regressions/off_*color*). Colors are not used by curvbench, so
+// the pre-read records where they are (`colors`) and read_mesh blanks them out before CGAL reads.
 
 struct OffLayout {
   bool colors = false;
@@ -295,7 +320,17 @@ OffLayout parse_off_keyword(const std::string& path, std::size_t line, std::stri
   return layout;
 }
 
-SoupCounts check_off(const std::string& path, std::string_view text) {
+// (offset, length) of a stretch of the file text.
+using TextSpan = std::pair<std::size_t, std::size_t>;
+
+// The span from the start of token `first` to the end of token `last` (views into text).
+TextSpan token_span(std::string_view text, std::string_view first, std::string_view last) {
+  const auto begin = static_cast<std::size_t>(first.data() - text.data());
+  return {begin, static_cast<std::size_t>(last.data() + last.size() - text.data()) - begin};
+}
+
+SoupCounts check_off(const std::string& path, std::string_view text, NonFinite& nonfinite,
+                     std::vector<TextSpan>& colors) {
   Lines lines(text);
   std::vector<std::string_view> tok;
   if (!lines.next_tokens(tok, true)) fail(path, "bad OFF header: the file is empty");
@@ -328,9 +363,11 @@ SoupCounts check_off(const std::string& path, std::string_view text) {
               "bad OFF header: edge count " + quote(counts[2]) + " is not an integer");
 
   // Refuse counts the file cannot hold before anything is sized by them: a vertex line takes at
-  // least 6 bytes ("0 0 0\n"), a face line at least 8 ("3 0 1 2\n"); the last newline may miss.
+  // least 6 bytes ("0 0 0\n"), a face line at least 2 (the empty face "0\n", dropped later); the
+  // last newline may miss. (The walk below then finds every declared line before CGAL sizes its
+  // arrays by the counts, so CGAL's allocations stay proportional to the file's size.)
   const unsigned long long body = text.size() - lines.offset() + 1;
-  if (n.vertices > body || n.faces > body || 6 * n.vertices + 8 * n.faces > body)
+  if (n.vertices > body || n.faces > body || 6 * n.vertices + 2 * n.faces > body)
     fail(path, "OFF header declares " + std::to_string(n.vertices) + " vertices and " +
                    std::to_string(n.faces) + " faces, more than a " + std::to_string(text.size()) +
                    "-byte file can hold (truncated file or corrupt header)");
@@ -357,10 +394,12 @@ SoupCounts check_off(const std::string& path, std::string_view text) {
       double x;
       const Number r = parse_double(tok[i], &x);
       if (r == Number::kBad) fail_line(path, line, what + ": non-numeric token " + quote(tok[i]));
-      if (r == Number::kOverflow || !std::isfinite(x))
+      if (r == Number::kOverflow || !std::isfinite(x)) {
+        if (i < 3 && nonfinite.skip(text, tok[i], v)) continue;
         fail_line(path, line,
                   what + (i < 3 ? " has a non-finite coordinate " : " has a non-finite value ") +
-                      quote(tok[i]));
+                      quote(tok[i]) + (i < 3 ? kSkipHint : ""));
+      }
       if (layout.homogeneous && i == 3 && x == 0.0)
         fail_line(path, line, what + " has homogeneous weight w = 0");
     }
@@ -373,6 +412,7 @@ SoupCounts check_off(const std::string& path, std::string_view text) {
       fail_line(
           path, line,
           what + " has a color with " + std::to_string(color) + " components (expected 1, 3 or 4)");
+    if (color > 0) colors.push_back(token_span(text, tok[coords + normals], tok.back()));
   }
 
   for (unsigned long long f = 0; f < n.faces; ++f) {
@@ -384,10 +424,10 @@ SoupCounts check_off(const std::string& path, std::string_view text) {
     long long size;
     if (!parse_integer(tok[0], &size) || size < 0)
       fail_line(path, line,
-                what + ": vertex count " + quote(tok[0]) + " is not a non-negative integer");
-    if (size < 3)
-      fail_line(path, line,
-                what + " has " + std::to_string(size) + " vertices; at least 3 are needed");
+                what + ": vertex count " + quote(tok[0]) + " is not a non-negative integer" +
+                    (f == 0 ? " (the header declares " + std::to_string(n.vertices) +
+                                  " vertices: wrong counts?)"
+                            : ""));
     if (tok.size() - 1 < static_cast<unsigned long long>(size))
       short_line(line, what,
                  " declares " + std::to_string(size) + " vertices but lists " +
@@ -398,12 +438,19 @@ SoupCounts check_off(const std::string& path, std::string_view text) {
         fail_line(path, line, what + ": vertex index " + quote(tok[j]) + " is not an integer");
       check_face_index(path, line, f, index, n.vertices);
     }
+    // A face may carry a color in any OFF variant (Geomview); anything else is misplaced data.
     const std::size_t color = tok.size() - 1 - static_cast<std::size_t>(size);
-    if (layout.colors && color != 0 && color != 1 && color != 3 && color != 4)
-      fail_line(
-          path, line,
-          what + " has a color with " + std::to_string(color) + " components (expected 1, 3 or 4)");
+    if (color != 0 && color != 1 && color != 3 && color != 4)
+      fail_line(path, line,
+                what + " has " + std::to_string(color) +
+                    " values after its indices (a color has 1, 3 or 4; wrong counts in the "
+                    "header?)");
+    if (color > 0) colors.push_back(token_span(text, tok[tok.size() - color], tok.back()));
   }
+  if (lines.next_tokens(tok, true))
+    fail_line(path, lines.number(),
+              "data after the last of the " + std::to_string(n.vertices) + " vertices and " +
+                  std::to_string(n.faces) + " faces the header declares (wrong counts?)");
   return n;
 }
 
@@ -427,7 +474,7 @@ bool obj_ignored_statement(std::string_view s) {
   return std::find(std::begin(kIgnored), std::end(kIgnored), s) != std::end(kIgnored);
 }
 
-SoupCounts check_obj(const std::string& path, std::string_view text) {
+SoupCounts check_obj(const std::string& path, std::string_view text, NonFinite& nonfinite) {
   Lines lines(text);
   std::vector<std::string_view> tok;
   SoupCounts n;
@@ -445,16 +492,13 @@ SoupCounts check_obj(const std::string& path, std::string_view text) {
         double x;
         const Number r = parse_double(tok[i], &x);
         if (r == Number::kBad) fail_line(path, line, what + ": non-numeric token " + quote(tok[i]));
-        if (r == Number::kOverflow || !std::isfinite(x))
-          fail_line(path, line, what + " has a non-finite coordinate " + quote(tok[i]));
+        if ((r == Number::kOverflow || !std::isfinite(x)) &&
+            !nonfinite.skip(text, tok[i], n.vertices))
+          fail_line(path, line, what + " has a non-finite coordinate " + quote(tok[i]) + kSkipHint);
       }
       ++n.vertices;
     } else if (tok[0] == "f") {
       const std::string what = "face " + std::to_string(n.faces);
-      if (tok.size() < 4)
-        fail_line(
-            path, line,
-            what + " has " + std::to_string(tok.size() - 1) + " vertices; at least 3 are needed");
       for (std::size_t j = 1; j < tok.size(); ++j) {
         // v, v/vt, v//vn or v/vt/vn: the vertex index is before the first '/'.
         const std::string_view v = tok[j].substr(0, tok[j].find('/'));
@@ -664,7 +708,7 @@ long long read_binary_integer(const char* p, const PlyTypeInfo& t, bool big_endi
   }
 }
 
-SoupCounts check_ply(const std::string& path, std::string_view text) {
+SoupCounts check_ply(const std::string& path, std::string_view text, NonFinite& nonfinite) {
   const PlyHeader h = parse_ply_header(path, text);
 
   // What CGAL's read_PLY needs: a vertex element with float/double x, y, z ...
@@ -750,12 +794,16 @@ SoupCounts check_ply(const std::string& path, std::string_view text) {
           const bool is_coordinate = &e == vertex && (&p == xyz[0] || &p == xyz[1] || &p == xyz[2]);
           const double limit = type.type == PlyType::kFloat ? std::numeric_limits<float>::max()
                                                             : std::numeric_limits<double>::max();
-          if (r == Number::kOverflow || !(std::fabs(x) <= limit))
-            fail_line(path, tokens.line(),
-                      what +
-                          (is_coordinate ? " has a non-finite coordinate "
-                                         : ": non-finite or out-of-range value ") +
-                          quote(t) + (is_coordinate ? "" : " of property '" + p.name + "'"));
+          if (r == Number::kOverflow || !(std::fabs(x) <= limit)) {
+            if (is_coordinate && nonfinite.skip(text, t, j)) return 0;
+            fail_line(
+                path, tokens.line(),
+                what +
+                    (is_coordinate ? " has a non-finite coordinate "
+                                   : ": non-finite or out-of-range value ") +
+                    quote(t) +
+                    (is_coordinate ? std::string(kSkipHint) : " of property '" + p.name + "'"));
+          }
           return 0;
         };
         for (const PlyProperty& p : e.properties) {
@@ -765,10 +813,6 @@ SoupCounts check_ply(const std::string& path, std::string_view text) {
           }
           const long long len = value(p, *p.size, "list length");
           const bool is_face_list = &e == face && &p == indices;
-          if (is_face_list && len < 3)
-            fail_line(path, tokens.line(),
-                      "face " + std::to_string(j) + " has " + std::to_string(len) +
-                          " vertices; at least 3 are needed");
           for (long long k = 0; k < len; ++k) {
             const long long v = value(p, *p.type, "entry");
             if (is_face_list) check_face_index(path, tokens.line(), j, v, n.vertices);
@@ -776,6 +820,10 @@ SoupCounts check_ply(const std::string& path, std::string_view text) {
         }
       }
     }
+    if (tokens.next(&t))
+      fail_line(path, tokens.line(),
+                "data " + quote(t) + " after the last element the header declares (" + declared +
+                    "; wrong counts?)");
   } else {
     const bool big = h.format == PlyFormat::kBinaryBigEndian;
     const char* at = text.data() + h.body;
@@ -800,9 +848,6 @@ SoupCounts check_ply(const std::string& path, std::string_view text) {
             fail(path, e.name + " " + std::to_string(j) + ": list '" + p.name +
                            "' has negative length " + std::to_string(len));
           const bool is_face_list = &e == face && &p == indices;
-          if (is_face_list && len < 3)
-            fail(path, "face " + std::to_string(j) + " has " + std::to_string(len) +
-                           " vertices; at least 3 are needed");
           // Compare by division: len * size could overflow.
           if (static_cast<unsigned long long>(len) >
               static_cast<unsigned long long>(end - at) / p.type->size)
@@ -822,60 +867,137 @@ SoupCounts check_ply(const std::string& path, std::string_view text) {
         }
       }
     }
+    // Trailing blanks (a final newline) are harmless; anything else means wrong counts.
+    const auto extra = std::find_if(at, end, [](char c) { return !is_blank(c) && c != '\n'; });
+    if (extra != end)
+      fail(path, std::to_string(end - at) + " bytes after the last element the header declares (" +
+                     declared + "; wrong counts?)");
   }
   return n;
 }
 
 // ---- soup -> mesh ------------------------------------------------------------------------------
 
+/// True if polygon p names a vertex twice. O(k log k) for a k-gon.
+bool has_repeated_index(const Polygon& p, std::vector<std::size_t>& scratch) {
+  if (p.size() == 3) return p[0] == p[1] || p[1] == p[2] || p[0] == p[2];
+  scratch.assign(p.begin(), p.end());
+  std::sort(scratch.begin(), scratch.end());
+  return std::adjacent_find(scratch.begin(), scratch.end()) != scratch.end();
+}
+
+/// Builds the Mesh from CGAL's soup: drops polygons with fewer than 3 vertices or a repeated
+/// index; refuses non-finite coordinates or, with skip_invalid, drops those vertices and the
+/// polygons using them and renumbers; fan-triangulates (v0, vi, vi+1) the rest.
 Mesh soup_to_mesh(const std::string& path, const std::string& format,
                   const std::vector<Point>& points, const std::vector<Polygon>& polygons,
-                  MeshReadReport* report) {
+                  const NonFinite& nonfinite, MeshReadReport* report) {
   const std::size_t n = points.size();
   if (n == 0) fail(path, "empty mesh: no vertices");
   if (polygons.empty()) fail(path, "empty mesh: no faces");
   if (n > kMaxCount) fail(path, "too many vertices");
 
+  // Vertices to skip: non-finite tokens seen by the text pre-reads (already replaced by 0 for
+  // CGAL) and non-finite values CGAL decoded from binary PLY.
+  std::vector<unsigned char> skip(n, 0);
+  for (const unsigned long long v : nonfinite.vertices) skip[v] = 1;
+  std::vector<int> skipped;
+  for (std::size_t v = 0; v < n; ++v) {
+    const Point& q = points[v];
+    if (!skip[v] && std::isfinite(q.x()) && std::isfinite(q.y()) && std::isfinite(q.z())) continue;
+    if (!nonfinite.skip_invalid) {
+      std::ostringstream msg;
+      msg << "vertex " << v << " has a non-finite coordinate (" << q.x() << ", " << q.y() << ", "
+          << q.z() << ")" << kSkipHint;
+      fail(path, msg.str());
+    }
+    skip[v] = 1;
+    skipped.push_back(static_cast<int>(v));
+  }
+  // New index of each kept vertex (file order).
+  std::vector<int> index(n, -1);
+  std::vector<int> source;
+  int kept_vertices = 0;
+  for (std::size_t v = 0; v < n; ++v)
+    if (!skip[v]) index[v] = kept_vertices++;
+  if (kept_vertices == 0)
+    fail(path, "empty mesh: all " + std::to_string(n) + " vertices have a non-finite coordinate");
+  if (!skipped.empty()) {
+    source.reserve(static_cast<std::size_t>(kept_vertices));
+    for (std::size_t v = 0; v < n; ++v)
+      if (!skip[v]) source.push_back(static_cast<int>(v));
+  }
+
+  // Classify the polygons.
+  enum Fate : unsigned char { kKeep, kFew, kSkipped, kRepeated };
+  std::vector<unsigned char> fate(polygons.size(), kKeep);
+  std::vector<std::size_t> scratch;
   unsigned long long triangles = 0;
-  int triangulated = 0;
+  int kept = 0, triangulated = 0, few = 0, repeated = 0, faces_skipped = 0;
   for (std::size_t f = 0; f < polygons.size(); ++f) {
     const Polygon& p = polygons[f];
-    if (p.size() < 3)
-      fail(path, "face " + std::to_string(f) + " has " + std::to_string(p.size()) +
-                     " vertices; at least 3 are needed");
     for (const std::size_t i : p)
       if (i >= n)
         fail(path, "face " + std::to_string(f) + " references vertex " + std::to_string(i) +
                        ", out of range [0, " + std::to_string(n) + ")");
-    triangles += p.size() - 2;
-    if (p.size() > 3) ++triangulated;
+    if (p.size() < 3) {
+      fate[f] = kFew, ++few;
+    } else if (std::any_of(p.begin(), p.end(), [&](std::size_t i) { return skip[i] != 0; })) {
+      fate[f] = kSkipped, ++faces_skipped;
+    } else if (has_repeated_index(p, scratch)) {
+      fate[f] = kRepeated, ++repeated;
+    } else {
+      ++kept;
+      triangles += p.size() - 2;
+      if (p.size() > 3) ++triangulated;
+    }
   }
   if (triangles > kMaxCount) fail(path, "too many triangles after fan triangulation");
+  if (kept == 0) {
+    std::string why;
+    for (const auto& [k, what] : {std::pair{few, "with fewer than 3 vertices"},
+                                  std::pair{repeated, "with a repeated vertex index"},
+                                  std::pair{faces_skipped, "using a NaN/Inf vertex"}})
+      if (k > 0) why += (why.empty() ? "" : ", ") + std::to_string(k) + " " + what;
+    fail(path, "empty mesh: no faces left after dropping all " + std::to_string(polygons.size()) +
+                   " (" + why + ")");
+  }
 
-  VertexMatrix V(static_cast<Eigen::Index>(n), 3);
+  VertexMatrix V(kept_vertices, 3);
   for (std::size_t v = 0; v < n; ++v) {
-    const auto r = static_cast<Eigen::Index>(v);
+    if (skip[v]) continue;
+    const Eigen::Index r = index[v];
     V(r, 0) = points[v].x();
     V(r, 1) = points[v].y();
     V(r, 2) = points[v].z();
   }
-  // Fan triangulation (v0, vi, vi+1) of each polygon.
+  // Fan triangulation (v0, vi, vi+1) of each kept polygon.
   FaceMatrix F(static_cast<Eigen::Index>(triangles), 3);
   Eigen::Index t = 0;
-  for (const Polygon& p : polygons) {
+  for (std::size_t f = 0; f < polygons.size(); ++f) {
+    if (fate[f] != kKeep) continue;
+    const Polygon& p = polygons[f];
     for (std::size_t i = 1; i + 1 < p.size(); ++i, ++t) {
-      F(t, 0) = static_cast<int>(p[0]);
-      F(t, 1) = static_cast<int>(p[i]);
-      F(t, 2) = static_cast<int>(p[i + 1]);
+      F(t, 0) = index[p[0]];
+      F(t, 1) = index[p[i]];
+      F(t, 2) = index[p[i + 1]];
     }
   }
 
   Mesh mesh(std::move(V), std::move(F), path);
   if (report != nullptr) {
+    *report = MeshReadReport{};
     report->format = format;
-    report->polygons_read = static_cast<int>(polygons.size());
+    report->polygons_read = kept;
     report->polygons_triangulated = triangulated;
     report->triangles = static_cast<int>(triangles);
+    report->faces_with_few_vertices = few;
+    report->faces_with_repeated_index = repeated;
+    report->vertices_in_file = static_cast<int>(n);
+    report->vertices_skipped = static_cast<int>(skipped.size());
+    report->faces_skipped = faces_skipped;
+    report->skipped_vertices = std::move(skipped);
+    report->source_vertex = std::move(source);
   }
   return mesh;
 }
@@ -998,7 +1120,7 @@ void check_properties(const Mesh& mesh, const std::vector<VertexProperty>& prope
 
 }  // namespace
 
-Mesh read_mesh(const std::string& path, MeshReadReport* report) {
+Mesh read_mesh(const std::string& path, MeshReadReport* report, const MeshReadOptions& options) {
   const std::string format = lower_extension(path);
   if (format != "off" && format != "obj" && format != "ply")
     fail(path, format.empty()
@@ -1007,17 +1129,27 @@ Mesh read_mesh(const std::string& path, MeshReadReport* report) {
 
   std::string text = read_file(path);
   SoupCounts counts;
+  NonFinite nonfinite;
+  nonfinite.skip_invalid = options.skip_invalid;
   if (format == "off") {
-    counts = check_off(path, text);
+    std::vector<TextSpan> colors;
+    counts = check_off(path, text, nonfinite, colors);
+    for (const auto& [offset, length] : colors)
+      std::fill_n(text.begin() + static_cast<std::ptrdiff_t>(offset), length, ' ');
   } else if (format == "obj") {
-    counts = check_obj(path, text);
+    counts = check_obj(path, text, nonfinite);
     // CGAL's OBJ face reader separates indices by ' ' only.
     std::replace_if(
         text.begin(), text.end(), [](char c) { return c == '\t' || c == '\v' || c == '\f'; }, ' ');
   } else {
-    counts = check_ply(path, text);
+    counts = check_ply(path, text, nonfinite);
   }
   check_not_empty(path, counts);
+  // Skipped non-finite coordinates become a "0" CGAL can read; the vertices are dropped later.
+  for (const auto& [offset, length] : nonfinite.spans) {
+    text[offset] = '0';
+    std::fill_n(text.begin() + static_cast<std::ptrdiff_t>(offset) + 1, length - 1, ' ');
+  }
 
   std::vector<Point> points;
   std::vector<Polygon> polygons;
@@ -1036,13 +1168,57 @@ Mesh read_mesh(const std::string& path, MeshReadReport* report) {
                    std::to_string(points.size()) + " vertices and " +
                    std::to_string(polygons.size()) + " faces, the pre-read " +
                    std::to_string(counts.vertices) + " and " + std::to_string(counts.faces));
-  return soup_to_mesh(path, format, points, polygons, report);
+  return soup_to_mesh(path, format, points, polygons, nonfinite, report);
 }
 
-void write_off(const std::string& path, const Mesh& mesh) {
+std::vector<std::string> read_warnings(const std::string& path, const MeshReadReport& report) {
+  std::vector<std::string> out;
+  const auto plural = [](int k, const char* one, const char* many) {
+    return std::to_string(k) + " " + (k == 1 ? one : many);
+  };
+  if (report.faces_dropped() > 0) {
+    std::string w = path + ": dropped " + plural(report.faces_dropped(), "face", "faces") + " (";
+    if (report.faces_with_few_vertices > 0)
+      w += std::to_string(report.faces_with_few_vertices) + " with fewer than 3 vertices";
+    if (report.faces_with_few_vertices > 0 && report.faces_with_repeated_index > 0) w += ", ";
+    if (report.faces_with_repeated_index > 0)
+      w += std::to_string(report.faces_with_repeated_index) + " with a repeated vertex index";
+    out.push_back(w + ")");
+  }
+  if (report.vertices_skipped > 0) {
+    std::string w = path + ": skipped " + plural(report.vertices_skipped, "vertex", "vertices") +
+                    " with a NaN/Inf coordinate (";
+    const std::size_t shown = std::min<std::size_t>(report.skipped_vertices.size(), 5);
+    for (std::size_t i = 0; i < shown; ++i)
+      w += (i == 0 ? "file vertex " : ", ") + std::to_string(report.skipped_vertices[i]);
+    if (report.skipped_vertices.size() > shown) w += ", ...";
+    w += ") and the " + plural(report.faces_skipped, "face", "faces") + " using " +
+         (report.vertices_skipped == 1 ? "it; " : "them; ") +
+         std::to_string(report.vertices_in_file - report.vertices_skipped) + " of " +
+         std::to_string(report.vertices_in_file) + " vertices kept, renumbered in file order";
+    out.push_back(w);
+  }
+  return out;
+}
+
+namespace {
+
+void check_comments(const std::vector<std::string>& comments) {
+  for (const std::string& c : comments)
+    if (c.find_first_of("\r\n") != std::string::npos)
+      throw UsageError("file comment '" + c + "' is not a single line");
+}
+
+}  // namespace
+
+void write_off(const std::string& path, const Mesh& mesh,
+               const std::vector<std::string>& comments) {
+  check_comments(comments);
   AtomicFile file(path);
-  file.buffer() += "OFF\n" + std::to_string(mesh.num_vertices()) + " " +
-                   std::to_string(mesh.num_faces()) + " 0\n";
+  file.buffer() += "OFF\n";
+  for (const std::string& c : comments) file.buffer() += "# " + c + "\n";
+  file.buffer() +=
+      std::to_string(mesh.num_vertices()) + " " + std::to_string(mesh.num_faces()) + " 0\n";
   for (int v = 0; v < mesh.num_vertices(); ++v) {
     std::string& out = file.buffer();
     for (int c = 0; c < 3; ++c) {
@@ -1058,11 +1234,14 @@ void write_off(const std::string& path, const Mesh& mesh) {
 }
 
 void write_ply(const std::string& path, const Mesh& mesh,
-               const std::vector<VertexProperty>& properties) {
+               const std::vector<VertexProperty>& properties,
+               const std::vector<std::string>& comments) {
   check_properties(mesh, properties);
+  check_comments(comments);
   AtomicFile file(path);
   std::string& header = file.buffer();
   header += "ply\nformat binary_little_endian 1.0\ncomment written by curvbench\n";
+  for (const std::string& c : comments) header += "comment " + c + "\n";
   header += "element vertex " + std::to_string(mesh.num_vertices()) + "\n";
   header += "property double x\nproperty double y\nproperty double z\n";
   for (const VertexProperty& p : properties)
@@ -1088,14 +1267,15 @@ void write_ply(const std::string& path, const Mesh& mesh,
 }
 
 void write_mesh(const std::string& path, const Mesh& mesh,
-                const std::vector<VertexProperty>& properties) {
+                const std::vector<VertexProperty>& properties,
+                const std::vector<std::string>& comments) {
   const std::string ext = lower_extension(path);
   if (ext == "ply") {
-    write_ply(path, mesh, properties);
+    write_ply(path, mesh, properties, comments);
   } else if (ext == "off") {
     if (!properties.empty())
       throw UsageError(path + ": OFF cannot store vertex properties; write .ply instead");
-    write_off(path, mesh);
+    write_off(path, mesh, comments);
   } else {
     throw UsageError(path + ": cannot write extension '." + ext + "' (expected .off or .ply)");
   }

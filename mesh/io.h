@@ -1,7 +1,8 @@
 // Mesh file input and output.
 //
 // Reading: OFF, OBJ and PLY (ASCII and binary), chosen by extension (case-insensitive), through
-// CGAL's polygon-soup readers. Polygons with more than three vertices are fan-triangulated.
+// CGAL's polygon-soup readers. Polygons with more than three vertices are fan-triangulated;
+// polygons with fewer than three vertices or a repeated vertex index are dropped and counted.
 // Writing: OFF (full double precision) and PLY (binary little-endian) with optional per-vertex
 // properties (normal, curvatures, directions, ...) for MeshLab / ParaView.
 //
@@ -15,17 +16,45 @@
 
 namespace curvbench {
 
-/// What the reader saw, beyond the mesh itself (reported by `curvbench info`).
+/// Reader options.
+struct MeshReadOptions {
+  /// Drop vertices with a NaN or Inf coordinate and every polygon using them (the remaining
+  /// vertices are renumbered in file order) instead of throwing InputError.
+  bool skip_invalid = false;
+};
+
+/// What the reader saw, beyond the mesh itself (reported by `curvbench info`). The file holds
+/// polygons_read + faces_with_few_vertices + faces_with_repeated_index + faces_skipped polygons.
 struct MeshReadReport {
-  std::string format;             ///< "off", "obj" or "ply"
-  int polygons_read = 0;          ///< faces in the file, before triangulation
-  int polygons_triangulated = 0;  ///< faces with more than 3 vertices, fan-triangulated
-  int triangles = 0;              ///< triangles in the resulting mesh
+  std::string format;                 ///< "off", "obj" or "ply"
+  int polygons_read = 0;              ///< polygons kept (triangulated into the mesh)
+  int polygons_triangulated = 0;      ///< kept polygons with more than 3 vertices, fan-triangulated
+  int triangles = 0;                  ///< triangles in the resulting mesh
+  int faces_with_few_vertices = 0;    ///< polygons with 0, 1 or 2 vertices: dropped
+  int faces_with_repeated_index = 0;  ///< polygons naming a vertex twice: dropped
+  int vertices_in_file = 0;           ///< vertices in the file
+  int vertices_skipped = 0;           ///< vertices with a NaN/Inf coordinate dropped (skip_invalid)
+  int faces_skipped = 0;              ///< polygons dropped because they use a skipped vertex
+  std::vector<int> skipped_vertices;  ///< file indices of the skipped vertices, increasing
+  /// File index of each mesh vertex when vertices were skipped; empty when the mesh vertices are
+  /// the file's (the identity).
+  std::vector<int> source_vertex;
+
+  int faces_dropped() const { return faces_with_few_vertices + faces_with_repeated_index; }
 };
 
 /// Reads a triangle mesh. Throws InputError on a missing/unreadable file, an unknown extension,
-/// a malformed file, an index out of range, a NaN/Inf coordinate, or an empty mesh.
-Mesh read_mesh(const std::string& path, MeshReadReport* report = nullptr);
+/// a malformed file (bad header or body, counts that disagree with the body, non-numeric token),
+/// an index out of range or negative, a NaN/Inf coordinate (unless options.skip_invalid), or a
+/// mesh left without vertices or faces. Header counts or polygon sizes the file cannot hold are
+/// refused before anything is allocated by them. Polygons with fewer than 3 vertices or with a
+/// repeated vertex index are dropped and counted in the report.
+Mesh read_mesh(const std::string& path, MeshReadReport* report = nullptr,
+               const MeshReadOptions& options = {});
+
+/// One-line warnings (without a prefix or newline) about what read_mesh dropped or skipped:
+/// empty when nothing was. `path` names the file.
+std::vector<std::string> read_warnings(const std::string& path, const MeshReadReport& report);
 
 /// A named per-vertex scalar written as a PLY vertex property ("nx", "k1", "status", ...).
 struct VertexProperty {
@@ -34,15 +63,21 @@ struct VertexProperty {
   bool integer = false;        ///< written as PLY int instead of double
 };
 
-/// Writes OFF (ASCII, %.17g). Throws InputError if the file cannot be written.
-void write_off(const std::string& path, const Mesh& mesh);
+/// Writes OFF (ASCII, %.17g) with one "# " comment line per entry of `comments` after the
+/// keyword. Throws InputError if the file cannot be written.
+void write_off(const std::string& path, const Mesh& mesh,
+               const std::vector<std::string>& comments = {});
 
-/// Writes binary little-endian PLY with x, y, z and the given per-vertex properties.
+/// Writes binary little-endian PLY with x, y, z and the given per-vertex properties, and one
+/// header comment line per entry of `comments` (each must be a single line).
 void write_ply(const std::string& path, const Mesh& mesh,
-               const std::vector<VertexProperty>& properties = {});
+               const std::vector<VertexProperty>& properties = {},
+               const std::vector<std::string>& comments = {});
 
 /// Writes OFF or PLY by extension (.off / .ply); throws UsageError for other extensions.
+/// `comments` go into the header of either format.
 void write_mesh(const std::string& path, const Mesh& mesh,
-                const std::vector<VertexProperty>& properties = {});
+                const std::vector<VertexProperty>& properties = {},
+                const std::vector<std::string>& comments = {});
 
 }  // namespace curvbench

@@ -83,7 +83,7 @@ Mesh::Mesh(VertexMatrix vertices, FaceMatrix faces, const std::string& source)
     return x.key != y.key ? x.key < y.key : (x.face != y.face ? x.face < y.face : x.k < y.k);
   });
 
-  ff_.assign(static_cast<size_t>(3) * m, -1);
+  ff_.assign(static_cast<size_t>(3) * m, kBoundary);
   boundary_vertex_.assign(n, 0);
   num_edges_ = num_boundary_edges_ = num_nonmanifold_edges_ = num_inconsistent_edges_ = 0;
   double total_length = 0.0;
@@ -104,6 +104,7 @@ Mesh::Mesh(VertexMatrix vertices, FaceMatrix faces, const std::string& source)
       if (he[i].forward == he[i + 1].forward) ++num_inconsistent_edges_;
     } else {
       ++num_nonmanifold_edges_;
+      for (size_t h = i; h < j; ++h) ff_[3 * he[h].face + he[h].k] = kNonManifold;
     }
     i = j;
   }

@@ -8,6 +8,7 @@
 // threads.
 #pragma once
 
+#include <algorithm>
 #include <span>
 #include <string>
 #include <vector>
@@ -39,7 +40,11 @@ class Mesh {
   }
 
   /// Face across edge k of face f; -1 when the edge is a boundary edge or non-manifold.
-  int face_neighbor(int f, int k) const { return ff_[3 * f + k]; }
+  int face_neighbor(int f, int k) const { return std::max(ff_[3 * f + k], -1); }
+  /// True if edge k of face f has exactly one incident face.
+  bool is_boundary_edge(int f, int k) const { return ff_[3 * f + k] == kBoundary; }
+  /// True if edge k of face f has three or more incident faces.
+  bool is_nonmanifold_edge(int f, int k) const { return ff_[3 * f + k] == kNonManifold; }
 
   /// True for a vertex on a boundary edge (an edge with exactly one incident face).
   bool is_boundary_vertex(int v) const { return boundary_vertex_[v] != 0; }
@@ -69,11 +74,14 @@ class Mesh {
   VertexMatrix area_weighted_normals() const;
 
  private:
+  static constexpr int kBoundary = -1;     // ff_ entry of a boundary edge
+  static constexpr int kNonManifold = -2;  // ff_ entry of a non-manifold edge
+
   VertexMatrix V_;
   FaceMatrix F_;
   std::vector<int> vf_offsets_{0};  // n+1
   std::vector<int> vf_faces_;       // sum of valences
-  std::vector<int> ff_;             // 3m
+  std::vector<int> ff_;             // 3m: neighbour face, kBoundary or kNonManifold
   std::vector<unsigned char> boundary_vertex_;
   int num_edges_ = 0;
   int num_boundary_edges_ = 0;

@@ -17,7 +17,7 @@
 //     k1 <-> k2, d1 <-> d2), which keeps k1 >= k2 and (d1, d2, n) right-handed.
 // Output: normal, k1 >= k2, d1, d2, H = (k1+k2)/2, K = k1 k2, degree = d, points = number of
 // points fitted, ring = ring collected. Failure (too few points, non-finite result, exception):
-// status failed, normal = approximate normal, k = 0 (vertex_result.h).
+// status failed, every value NaN (vertex_result.h).
 // Cost: the ring points go to a reused vector; CGAL allocates its matrices in every call (that
 // is the reference's cost).
 #include <CGAL/Eigen_svd.h>
@@ -83,7 +83,6 @@ class JetEstimator final : public Estimator {
                 VertexEstimate& out) const override {
     auto& ws = static_cast<JetWorkspace&>(base);
     const Vec3 m0 = ctx.approx_normals.row(v).transpose();
-    const LocalFrame frame = make_local_frame(m0);
     const int d = options_.degree;
     try {
       collect_neighbourhood(ws.rings, v);
@@ -93,7 +92,7 @@ class JetEstimator final : public Estimator {
       const double ring = ws.rings.ring();
       const int count = 1 + static_cast<int>(ws.rings.neighbours().size());
       if (static_cast<size_t>(count) < needed) {
-        set_failed(m0, frame, ring, 0, out);
+        set_failed(ring, 0, out);
         return;
       }
       ws.points.clear();
@@ -115,9 +114,9 @@ class JetEstimator final : public Estimator {
       c.K = c.k1 * c.k2;
       c.d1 = to_vec(monge.maximal_principal_direction());
       c.d2 = to_vec(monge.minimal_principal_direction());
-      if (!set_quantities(c, d, d, count, ring, out)) set_failed(m0, frame, ring, count, out);
+      if (!set_quantities(c, d, d, count, ring, out)) set_failed(ring, count, out);
     } catch (...) {  // estimate() must not throw (CGAL preconditions in debug builds, bad_alloc)
-      set_failed(m0, frame, 0.0, 0, out);
+      set_failed(0.0, 0, out);
     }
   }
 };

@@ -180,7 +180,7 @@ void RingFitEstimator::estimate(const MeshContext& ctx, int v, Workspace& base,
         break;  // the component is exhausted: nothing new to fit
     }
     if (!have_fit || fit.degree < 1) {
-      set_failed(m0, frame, fit_ring, have_fit ? fit.rows : 0, out);
+      set_failed(fit_ring, have_fit ? fit.rows : 0, out);
       return;
     }
     const auto& t = fit.taylor;
@@ -192,9 +192,9 @@ void RingFitEstimator::estimate(const MeshContext& ctx, int v, Workspace& base,
                                         t.row(kFuu).transpose(), t.row(kFuv).transpose(),
                                         t.row(kFvv).transpose());
     if (!set_quantities(c, fit.degree, d, fit.rows, fit_ring, out))
-      set_failed(m0, frame, fit_ring, fit.rows, out);
+      set_failed(fit_ring, fit.rows, out);
   } catch (...) {  // e.g. std::bad_alloc while a buffer grows; estimate() must not throw
-    set_failed(m0, frame, 0.0, 0, out);
+    set_failed(0.0, 0, out);
   }
 }
 

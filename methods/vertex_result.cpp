@@ -5,12 +5,8 @@
 
 namespace curvbench {
 
-void set_failed(const Vec3& m0, const LocalFrame& frame, double ring, int points,
-                VertexEstimate& out) {
-  out.normal = m0;
-  out.k1 = out.k2 = out.H = out.K = 0.0;
-  out.d1 = frame.t1;
-  out.d2 = frame.t2;
+void set_failed(double ring, int points, VertexEstimate& out) {
+  out = VertexEstimate{};  // all NaN
   out.degree = 0;
   out.points = points;
   out.ring = ring;

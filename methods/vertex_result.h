@@ -8,11 +8,12 @@
 
 namespace curvbench {
 
-/// Failure (degree 0, ALGORITHM_NOTES §5.4 "consider the surface as flat"): normal = m0 (the
-/// approximate normal as given), k1 = k2 = H = K = 0, d1 = frame.t1, d2 = frame.t2,
-/// status failed.
-void set_failed(const Vec3& m0, const LocalFrame& frame, double ring, int points,
-                VertexEstimate& out);
+/// No estimate possible (degree 0 after all growth, e.g. an isolated vertex or too few points):
+/// every value NaN, degree 0, status failed. ALGORITHM_NOTES §5.4 suggests answering "flat"
+/// (normal m0, k = 0); we output NaN instead so that no row carries numbers that are not an
+/// estimate (issue 7: NaN in failed/excluded rows only). The metrics count these vertices in
+/// their `failed` column.
+void set_failed(double ring, int points, VertexEstimate& out);
 
 /// Not computed by design (e.g. Xu at a boundary vertex): every value NaN, degree 0,
 /// status excluded.

@@ -75,13 +75,11 @@ class XuEstimator final : public Estimator {
                 VertexEstimate& out) const override {
     auto& ws = static_cast<XuWorkspace&>(base);
     const Mesh& mesh = ctx.mesh;
-    const Vec3 m0 = ctx.approx_normals.row(v).transpose();
     try {
       if (mesh.is_boundary_vertex(v) || !ordered_ring(mesh, v, ws)) {
         set_excluded(1.0, 0, out);
         return;
       }
-      const LocalFrame frame = make_local_frame(m0);
       const int n = static_cast<int>(ws.order.size());
       const Vec3 p0 = mesh.position(v);
       // Angles at p0 between consecutive edges (atan2: robust for near-zero edges).
@@ -94,7 +92,7 @@ class XuEstimator final : public Estimator {
         alpha_sum += ws.w(j);
       }
       if (!(alpha_sum > 0.0) || !std::isfinite(alpha_sum)) {
-        set_failed(m0, frame, 1.0, n, out);
+        set_failed(1.0, n, out);
         return;
       }
       const double scale = 2.0 * std::numbers::pi / alpha_sum;
@@ -118,9 +116,9 @@ class XuEstimator final : public Estimator {
                                                t.row(kFu).transpose(), t.row(kFv).transpose(),
                                                t.row(kFuu).transpose(), t.row(kFuv).transpose(),
                                                t.row(kFvv).transpose());
-      if (!set_quantities(c, fit.degree, 2, n, 1.0, out)) set_failed(m0, frame, 1.0, n, out);
+      if (!set_quantities(c, fit.degree, 2, n, 1.0, out)) set_failed(1.0, n, out);
     } catch (...) {  // estimate() must not throw
-      set_failed(m0, make_local_frame(m0), 1.0, 0, out);
+      set_failed(1.0, 0, out);
     }
   }
 

@@ -1,9 +1,13 @@
 #!/usr/bin/env bash
 # Checks that every Debian package curvbench builds with is installed. As root, installs the
 # missing ones with apt-get; otherwise prints the exact apt-get line and fails.
+#
+#   bash tools/deps.sh          what make build/test/experiments/bench/test-sanitize need
+#   bash tools/deps.sh fuzz     the same plus clang and libFuzzer (make fuzz)
 set -euo pipefail
+mode="${1:-build}"
 packages=(
-  g++ cmake make           # toolchain (OpenMP comes with g++ as libgomp)
+  g++ cmake make           # toolchain (g++ brings libgomp for OpenMP, libasan/libubsan)
   libeigen3-dev            # Eigen 3.4: dense linear algebra
   libcgal-dev              # CGAL 5.5 (header-only): mesh I/O, LSCM, Jet_fitting_3, 2-D Delaunay
   libgmp-dev libmpfr-dev libboost-dev  # CGAL's own dependencies
@@ -12,6 +16,18 @@ packages=(
   libcli11-dev             # command line
   gnuplot-nox              # convergence plots (PNG and SVG)
 )
+case "$mode" in
+  build) ;;
+  fuzz)
+    # clang (clang-14 on Debian 12) only recommends its runtime libraries; libFuzzer
+    # (libclang_rt.fuzzer) and the clang sanitizer runtimes are in libclang-rt-dev.
+    packages+=(clang libclang-rt-dev)
+    ;;
+  *)
+    echo "usage: bash tools/deps.sh [build|fuzz]" >&2
+    exit 2
+    ;;
+esac
 missing=()
 for p in "${packages[@]}"; do
   if [[ "$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null)" != "install ok installed" ]]; then

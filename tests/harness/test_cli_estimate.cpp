@@ -16,6 +16,7 @@ namespace {
 
 using testing::fresh_dir;
 using testing::run_cli;
+using testing::slurp;
 namespace fs = std::filesystem;
 
 std::vector<std::vector<std::string>> read_csv(const fs::path& p) {
@@ -30,13 +31,6 @@ std::vector<std::vector<std::string>> read_csv(const fs::path& p) {
     rows.push_back(f);
   }
   return rows;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 class CliEstimate : public ::testing::Test {
@@ -120,6 +114,13 @@ TEST_F(CliEstimate, DegreeInNameThreadsAndPly) {
        {"property double nx", "property double k1", "property double H", "property double d2z"})
     EXPECT_NE(text.find(p), std::string::npos) << p;
   EXPECT_EQ(read_mesh(ply.string()).num_vertices(), 5632);
+}
+
+TEST(CliEstimateHelp, DocumentsSkipInvalid) {
+  const auto r = run_cli("estimate --help");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.output.find("--skip-invalid"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("only the remaining vertices"), std::string::npos) << r.output;
 }
 
 TEST_F(CliEstimate, BadUsageExits2AndWritesNothing) {

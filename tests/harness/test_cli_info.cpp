@@ -22,6 +22,7 @@ TEST(Cli, VersionAndHelp) {
   r = run_cli("info --help");
   EXPECT_EQ(r.exit_code, 0);
   EXPECT_NE(r.output.find("MESH"), std::string::npos);
+  EXPECT_NE(r.output.find("--skip-invalid"), std::string::npos);
 }
 
 TEST(Cli, BadUsageExits2) {
@@ -45,6 +46,13 @@ TEST(Cli, InfoOnOctahedron) {
   EXPECT_NE(r.output.find("mean edge length:      1.41421"), std::string::npos);
   EXPECT_NE(r.output.find("orientation:           consistent"), std::string::npos);
   EXPECT_NE(r.output.find("outward normals"), std::string::npos);
+  // Defect counts (mesh/mesh_checks.h): all zero on a clean closed mesh, one component.
+  for (const char* line :
+       {"polygons triangulated: 0\n", "faces dropped:         0\n", "boundary loops:        0\n",
+        "non-manifold vertices: 0\n", "zero-area faces:       0\n", "duplicate vertices:    0\n",
+        "duplicate faces:       0\n", "components:            1\n"})
+    EXPECT_NE(r.output.find(line), std::string::npos) << line;
+  EXPECT_EQ(r.output.find("warning"), std::string::npos) << r.output;
 }
 
 TEST(Cli, InfoReportsBoundaryAndQuads) {

@@ -13,13 +13,7 @@ namespace {
 
 using testing::fresh_dir;
 using testing::run_cli;
-
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using testing::slurp;
 
 TEST(CliMesh, WritesEveryFamily) {
   const auto dir = fresh_dir("cli_mesh");

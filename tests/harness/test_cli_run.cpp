@@ -15,14 +15,8 @@ namespace {
 
 using testing::fresh_dir;
 using testing::run_cli;
+using testing::slurp;
 namespace fs = std::filesystem;
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 fs::path write_tiny_experiment(const fs::path& dir) {
   fs::create_directories(dir / "experiments");

@@ -15,14 +15,8 @@ namespace {
 
 using testing::fresh_dir;
 using testing::run_cli;
+using testing::slurp;
 namespace fs = std::filesystem;
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 TEST(CliTiming, PrintsStagesAndKeepsOutput) {
   const fs::path dir = fresh_dir("cli_timing");

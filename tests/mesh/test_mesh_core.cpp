@@ -65,6 +65,9 @@ TEST(MeshCore, OpenSquareBoundary) {
   EXPECT_TRUE(m.is_consistently_oriented());
   EXPECT_EQ(m.face_neighbor(0, 2), 1);  // edge 2->0 of face 0 is the diagonal
   EXPECT_EQ(m.face_neighbor(0, 0), -1);
+  EXPECT_FALSE(m.is_boundary_edge(0, 2));
+  EXPECT_TRUE(m.is_boundary_edge(0, 0));
+  EXPECT_FALSE(m.is_nonmanifold_edge(0, 0));
   EXPECT_NEAR(m.mean_edge_length(), (4.0 + std::sqrt(2.0)) / 5.0, 1e-15);
   const VertexMatrix N = m.area_weighted_normals();
   for (int v = 0; v < 4; ++v) EXPECT_NEAR(N(v, 2), 1.0, 1e-15);
@@ -89,6 +92,9 @@ TEST(MeshCore, CountsNonManifoldEdgesAndIsolatedVertices) {
   EXPECT_EQ(m.num_nonmanifold_edges(), 1);
   EXPECT_EQ(m.num_isolated_vertices(), 1);
   EXPECT_EQ(m.face_neighbor(0, 0), -1);
+  EXPECT_TRUE(m.is_nonmanifold_edge(0, 0));
+  EXPECT_FALSE(m.is_boundary_edge(0, 0));
+  EXPECT_TRUE(m.is_boundary_edge(0, 1));
 }
 
 TEST(MeshCore, ValidationErrorsNameTheProblem) {

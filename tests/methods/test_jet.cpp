@@ -174,14 +174,12 @@ TEST(Jet, TooFewPointsFails) {
   F << 0, 1, 2, 0, 2, 3;
   const Mesh mesh(V, F);
   const auto r = estimate_mesh(mesh, *make_estimator("jet-2", EstimatorOptions{}));
-  const VertexMatrix normals = mesh.area_weighted_normals();
   for (int v = 0; v < 4; ++v) {
     const VertexEstimate& q = r[static_cast<size_t>(v)];
     EXPECT_EQ(q.status, VertexStatus::failed);
-    EXPECT_EQ(q.k1, 0.0);
-    EXPECT_EQ(q.K, 0.0);
+    EXPECT_TRUE(std::isnan(q.k1) && std::isnan(q.K));
     EXPECT_EQ(q.degree, 0);
-    EXPECT_NEAR((q.normal - normals.row(v).transpose()).norm(), 0.0, 1e-15);
+    EXPECT_TRUE(q.normal.array().isNaN().all());
   }
 }
 

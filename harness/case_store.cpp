@@ -1,0 +1,195 @@
+#include "harness/case_store.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include "core/build_info.h"
+#include "core/errors.h"
+#include "harness/results_table.h"
+
+namespace curvbench {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Free text inside case_inputs: ';', '=' and line breaks escaped so fields cannot run together.
+std::string escaped(const std::string& s) {
+  std::string out;
+  for (char ch : s) {
+    if (ch == '\\' || ch == ';' || ch == '=') out += '\\';
+    if (ch == '\n')
+      out += "\\n";
+    else if (ch == '\r')
+      out += "\\r";
+    else
+      out += ch;
+  }
+  return out;
+}
+
+// A file-name-safe form of a name: [A-Za-z0-9.+-] kept, anything else '_'.
+std::string file_safe(const std::string& s) {
+  std::string out;
+  for (char ch : s) {
+    const bool keep = (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') ||
+                      (ch >= '0' && ch <= '9') || ch == '.' || ch == '+' || ch == '-';
+    out += keep ? ch : '_';
+  }
+  return out.empty() ? "_" : out;
+}
+
+const char* yes_no(bool b) {
+  return b ? "yes" : "no";
+}
+
+// The method's part of case_inputs: its spec, label and every estimator option it sets.
+std::string method_inputs(const ExperimentMethod& m) {
+  return "method=" + escaped(m.spec) + ";label=" + escaped(m.label) +
+         ";ring=" + format_double(m.ring) + ";method-vertex-set=" +
+         std::string(m.has_vertex_set ? to_string(m.vertex_set) : "default") +
+         ";centre=" + yes_no(m.include_centre) + ";qr-tol=" + format_double(m.qr_tolerance) +
+         ";safeguard=" + yes_no(m.normal_safeguard) + ";adaptive=" + yes_no(m.adaptive) +
+         ";weight-power=" + format_double(m.weight_power);
+}
+
+std::string first_line(std::uint64_t inputs, std::uint64_t content) {
+  return "# curvbench case: inputs " + hex64(inputs) + " content " + hex64(content);
+}
+
+// Hash of the running executable, or a per-process value (no reuse) if it cannot be read.
+std::string executable_hash() {
+  std::ifstream in("/proc/self/exe", std::ios::binary);
+  std::uint64_t h = kFnv1a64Offset;
+  char buf[1 << 16];
+  bool any = false;
+  while (in) {
+    in.read(buf, sizeof buf);
+    const auto n = in.gcount();
+    if (n <= 0) break;
+    h = fnv1a64(std::string_view(buf, static_cast<size_t>(n)), h);
+    any = true;
+  }
+  if (!any || in.bad())
+    return "unreadable-" + std::to_string(::getpid()) + "-" + std::to_string(std::time(nullptr));
+  return hex64(h);
+}
+
+}  // namespace
+
+std::uint64_t fnv1a64(std::string_view bytes, std::uint64_t h) {
+  for (unsigned char ch : bytes) {
+    h ^= ch;
+    h *= 0x100000001b3ULL;  // FNV 64-bit prime
+  }
+  return h;
+}
+
+std::string hex64(std::uint64_t x) {
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(x));
+  return buf;
+}
+
+const std::string& code_version() {
+  static const std::string version = [] {
+    const std::string info = build_info();
+    // A committed build is named by its commit; otherwise the binary itself is the version.
+    const bool exact =
+        info.find("-dirty") == std::string::npos && info.find("(git unknown)") == std::string::npos;
+    return exact ? info : info + " exe " + executable_hash();
+  }();
+  return version;
+}
+
+std::string case_inputs(const RunCase& c) {
+  const Experiment& e = *c.experiment;
+  std::string measures;
+  for (const auto& [q, norm] : panel_measures(e))
+    measures += std::string(measures.empty() ? "" : ",") + to_string(q) + "/" + to_string(norm);
+  return "experiment=" + escaped(e.name) + ";family=" + escaped(c.mesh->family) +
+         ";level=" + std::to_string(c.level) + ";noise-order=" + std::to_string(e.noise_order) +
+         ";noise-seed=" + std::to_string(e.noise_seed) + ";noisy=" + yes_no(e.noisy) +
+         ";vertex-set=" + std::string(to_string(e.vertex_set)) + ";" + method_inputs(*c.method) +
+         ";measures=" + measures;
+}
+
+std::uint64_t case_hash(const RunCase& c, const std::string& version) {
+  return fnv1a64(version, fnv1a64(";code=", fnv1a64(case_inputs(c))));
+}
+
+CaseStore::CaseStore(std::string directory, std::string version)
+    : directory_(std::move(directory)), version_(std::move(version)) {}
+
+std::string CaseStore::path(const RunCase& c) const {
+  const ExperimentMethod& m = *c.method;
+  const std::string method = file_safe(m.label.empty() ? m.spec : m.label);
+  const std::string options = hex64(fnv1a64(method_inputs(m))).substr(0, 8);
+  return (fs::path(directory_) / file_safe(c.experiment->name) /
+          (file_safe(c.mesh->family) + "_L" + std::to_string(c.level) + "_" + method + "_" +
+           options + ".csv"))
+      .string();
+}
+
+std::optional<std::vector<ErrorRow>> CaseStore::load(const RunCase& c) const {
+  const std::string p = path(c);
+  std::error_code ec;
+  if (!fs::is_regular_file(p, ec)) return std::nullopt;
+  std::string text;
+  try {
+    text = read_file(p);
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+  const auto nl = text.find('\n');
+  if (nl == std::string::npos) return std::nullopt;
+  const std::string_view rest = std::string_view(text).substr(nl + 1);
+  if (text.compare(0, nl, first_line(case_hash(c, version_), fnv1a64(rest))) != 0)
+    return std::nullopt;  // stale (other inputs or code) or corrupt
+  std::vector<ErrorRow> rows;
+  try {
+    rows = parse_error_csv(std::string(rest), p);
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+  // A consistent file of this case has one row per panel measure, all of this case.
+  if (rows.size() != panel_measures(*c.experiment).size()) return std::nullopt;
+  for (const auto& r : rows)
+    if (r.experiment != c.experiment->name || r.family != c.mesh->family || r.level != c.level)
+      return std::nullopt;
+  return rows;
+}
+
+void CaseStore::save(const RunCase& c, const std::vector<ErrorRow>& rows) const {
+  const std::string rest =
+      error_csv_text(rows, "# " + case_inputs(c) + ";code=" + escaped(version_));
+  write_file_atomic(path(c), first_line(case_hash(c, version_), fnv1a64(rest)) + "\n" + rest);
+}
+
+int CaseStore::prune(const std::vector<RunCase>& cases) const {
+  std::set<fs::path> keep, folders;
+  for (const auto& c : cases) {
+    const fs::path p = path(c);
+    keep.insert(p);
+    folders.insert(p.parent_path());
+  }
+  int removed = 0;
+  for (const auto& folder : folders) {
+    std::error_code ec;
+    if (!fs::is_directory(folder, ec)) continue;
+    std::vector<fs::path> extra;
+    for (const auto& entry : fs::directory_iterator(folder, ec))
+      if (entry.is_regular_file() && entry.path().extension() == ".csv" &&
+          !keep.count(entry.path()))
+        extra.push_back(entry.path());
+    for (const auto& p : extra) removed += fs::remove(p, ec) ? 1 : 0;
+  }
+  return removed;
+}
+
+}  // namespace curvbench

@@ -1,0 +1,79 @@
+// The per-case result store of `curvbench run`: every case (experiment, mesh family, level,
+// method with its options) keeps its error rows in a small file of its own, stamped with a hash
+// of everything that determines them, so that a run that was interrupted, crashed or killed
+// redoes only the cases that are missing or stale.
+//
+//   <store>/<experiment>/<family>_L<level>_<method>_<8 hex>.csv
+//     line 1   "# curvbench case: inputs <16 hex> content <16 hex>"
+//     line 2   "# " + case_inputs(c) + ";code=" + code version   (for people; not parsed)
+//     then     the errors CSV of results_table.h (header + this case's rows)
+//
+//   <method> is the method's label or spec with characters outside [A-Za-z0-9.+-] replaced by
+//   '_'; the 8 hex digits are a hash of the method's options, so that variants of one method
+//   (ablations) get separate files.
+//   inputs  = fnv1a64(case_inputs(c) + code version): the file is stale when it differs.
+//   content = fnv1a64(everything after line 1): the file is corrupt when it differs.
+// Stale, corrupt and unreadable files are recomputed (and overwritten); files are written with
+// write_file_atomic, so a killed run leaves either the whole file or none.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "harness/experiment.h"
+#include "harness/results_table.h"
+#include "harness/runner.h"
+
+namespace curvbench {
+
+inline constexpr std::uint64_t kFnv1a64Offset = 0xcbf29ce484222325ULL;
+
+/// 64-bit FNV-1a hash of `bytes`, continuing from `h` (chain calls to hash several pieces).
+std::uint64_t fnv1a64(std::string_view bytes, std::uint64_t h = kFnv1a64Offset);
+
+/// 16 lower-case hex digits.
+std::string hex64(std::uint64_t x);
+
+/// The code version the store keys on: build_info(); for a build of uncommitted sources (git
+/// describe ends in "-dirty") also the hash of the running executable (/proc/self/exe), so that
+/// every development rebuild is a new version. Computed once per process.
+const std::string& code_version();
+
+/// One line naming every input that determines the rows of case c, except the code version:
+/// experiment name, mesh family, level, noise order and seed, noisy flag, vertex sets, method
+/// spec, label and every estimator option, and the (quantity, norm) pairs of the panels. Titles,
+/// captions and the thread count do not change the rows and are not included.
+std::string case_inputs(const RunCase& c);
+
+/// fnv1a64(case_inputs(c) + code version).
+std::uint64_t case_hash(const RunCase& c, const std::string& version);
+
+class CaseStore {
+ public:
+  /// A store in `directory` (created on the first save) for code version `version`.
+  explicit CaseStore(std::string directory, std::string version = code_version());
+
+  const std::string& directory() const { return directory_; }
+
+  /// The file of case c (whether it exists or not).
+  std::string path(const RunCase& c) const;
+
+  /// The stored rows of case c, or nothing if the file is missing, stale or corrupt.
+  std::optional<std::vector<ErrorRow>> load(const RunCase& c) const;
+
+  /// Stores the rows of case c atomically (replacing a previous file).
+  void save(const RunCase& c, const std::vector<ErrorRow>& rows) const;
+
+  /// Removes the files in the folders of the experiments of `cases` that belong to none of
+  /// `cases` (cases since removed or changed); returns how many.
+  int prune(const std::vector<RunCase>& cases) const;
+
+ private:
+  std::string directory_;
+  std::string version_;
+};
+
+}  // namespace curvbench

@@ -1,0 +1,59 @@
+// Mesh defect counts for `curvbench info` (issue 7): degenerate and duplicate elements,
+// non-manifold edges and vertices, components, orientation and boundary.
+//
+//   mesh  a Mesh (n vertices, m triangles)
+//
+// None of these is an error: the estimators run on such meshes, and a vertex where no estimate
+// is possible gets status failed or excluded. Every function is O(n log n + m log m) at most,
+// and none is run by read_mesh (only `info` needs them).
+#pragma once
+
+#include "mesh/mesh.h"
+
+namespace curvbench {
+
+/// Relative tolerance of count_zero_area_faces: a face is "zero-area" when
+/// |(b-a) x (c-a)| <= kZeroAreaTolerance * (longest edge)^2, i.e. collapsed to a segment or a
+/// point up to rounding (exactly zero for coincident or exactly collinear corners).
+inline constexpr double kZeroAreaTolerance = 1e-12;
+
+/// Faces of (numerically) zero area, see kZeroAreaTolerance.
+int count_zero_area_faces(const Mesh& mesh);
+
+/// Vertices whose coordinates equal (==) those of a vertex with a smaller index: the number of
+/// vertices that would disappear if equal positions were merged.
+int count_duplicate_vertices(const Mesh& mesh);
+
+/// Faces whose vertex set equals that of a face with a smaller index (either orientation).
+int count_duplicate_faces(const Mesh& mesh);
+
+/// Vertices whose incident faces, joined across manifold edges (two incident faces) that contain
+/// the vertex, form more than one fan: a "bow tie" where two sheets touch at a vertex, and every
+/// endpoint of a non-manifold edge. Isolated vertices are not counted.
+int count_nonmanifold_vertices(const Mesh& mesh);
+
+/// Connected components of the faces (two faces are connected when they share a vertex).
+/// Isolated vertices are not components (see Mesh::num_isolated_vertices).
+int count_components(const Mesh& mesh);
+
+/// Connected components of the boundary edges (edges with one incident face): the number of
+/// boundary loops on a manifold mesh; boundary loops touching at a vertex count once.
+int count_boundary_loops(const Mesh& mesh);
+
+/// All counts at once, with the ones Mesh already knows.
+struct MeshChecks {
+  int zero_area_faces = 0;
+  int duplicate_vertices = 0;
+  int duplicate_faces = 0;
+  int isolated_vertices = 0;
+  int nonmanifold_edges = 0;
+  int nonmanifold_vertices = 0;
+  int components = 0;
+  int inconsistent_edges = 0;  ///< manifold edges traversed in the same direction by both faces
+  int boundary_edges = 0;
+  int boundary_loops = 0;
+};
+
+MeshChecks check_mesh(const Mesh& mesh);
+
+}  // namespace curvbench
