@@ -889,9 +889,10 @@ bool has_repeated_index(const Polygon& p, std::vector<std::size_t>& scratch) {
 /// Builds the Mesh from CGAL's soup: drops polygons with fewer than 3 vertices or a repeated
 /// index; refuses non-finite coordinates or, with skip_invalid, drops those vertices and the
 /// polygons using them and renumbers; fan-triangulates (v0, vi, vi+1) the rest.
-Mesh soup_to_mesh(const std::string& path, const std::string& format,
-                  const std::vector<Point>& points, const std::vector<Polygon>& polygons,
-                  const NonFinite& nonfinite, MeshReadReport* report) {
+/// Takes the soup by value and frees it before the Mesh builds its adjacency (peak memory).
+Mesh soup_to_mesh(const std::string& path, const std::string& format, std::vector<Point> points,
+                  std::vector<Polygon> polygons, const NonFinite& nonfinite,
+                  MeshReadReport* report) {
   const std::size_t n = points.size();
   if (n == 0) fail(path, "empty mesh: no vertices");
   if (polygons.empty()) fail(path, "empty mesh: no faces");
@@ -984,6 +985,8 @@ Mesh soup_to_mesh(const std::string& path, const std::string& format,
     }
   }
 
+  std::vector<Point>().swap(points);
+  std::vector<Polygon>().swap(polygons);
   Mesh mesh(std::move(V), std::move(F), path);
   if (report != nullptr) {
     *report = MeshReadReport{};
@@ -1153,22 +1156,26 @@ Mesh read_mesh(const std::string& path, MeshReadReport* report, const MeshReadOp
 
   std::vector<Point> points;
   std::vector<Polygon> polygons;
-  std::istringstream in(std::move(text), std::ios::in | std::ios::binary);
-  const auto np = CGAL::parameters::verbose(false);
+  points.reserve(counts.vertices);  // exact sizes from the pre-read: no growth by doubling
+  polygons.reserve(counts.faces);
   bool ok;
-  if (format == "off")
-    ok = CGAL::IO::read_OFF(in, points, polygons, np);
-  else if (format == "obj")
-    ok = CGAL::IO::read_OBJ(in, points, polygons, np);
-  else
-    ok = CGAL::IO::read_PLY(in, points, polygons, np);
+  {
+    std::istringstream in(std::move(text), std::ios::in | std::ios::binary);
+    const auto np = CGAL::parameters::verbose(false);
+    if (format == "off")
+      ok = CGAL::IO::read_OFF(in, points, polygons, np);
+    else if (format == "obj")
+      ok = CGAL::IO::read_OBJ(in, points, polygons, np);
+    else
+      ok = CGAL::IO::read_PLY(in, points, polygons, np);
+  }  // the file's text is freed here, before the mesh is built
   if (!ok) fail(path, "malformed " + format + " file (rejected by CGAL's reader)");
   if (points.size() != counts.vertices || polygons.size() != counts.faces)
     fail(path, "malformed " + format + " file: CGAL's reader found " +
                    std::to_string(points.size()) + " vertices and " +
                    std::to_string(polygons.size()) + " faces, the pre-read " +
                    std::to_string(counts.vertices) + " and " + std::to_string(counts.faces));
-  return soup_to_mesh(path, format, points, polygons, nonfinite, report);
+  return soup_to_mesh(path, format, std::move(points), std::move(polygons), nonfinite, report);
 }
 
 std::vector<std::string> read_warnings(const std::string& path, const MeshReadReport& report) {

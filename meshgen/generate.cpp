@@ -24,7 +24,7 @@ struct FamilyInfo {
 };
 
 constexpr FamilyInfo kFamilies[] = {
-    {"torus-structured", 4},    {"torus-jittered", 4},         {"torus-iso", 5},
+    {"torus-structured", 6},    {"torus-jittered", 6},         {"torus-iso", 5},
     {"torus-iso-projected", 5}, {"bump-48", max_bump_level()}, {"bump-irregular", max_bump_level()},
 };
 constexpr int kMaxNoiseOrder = 4;

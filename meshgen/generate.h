@@ -2,9 +2,11 @@
 // the experiments, plus simple mesh-quality statistics.
 //
 // Families and levels:
-//   torus-structured     levels 1..4  staggered well-shaped torus, n_u x n_v = 64x22 .. 512x176
-//                                     (torus_structured.h; --jitter allowed)
-//   torus-jittered       levels 1..4  the same with seeded tangential jitter of +-0.15 cells,
+//   torus-structured     levels 1..6  staggered well-shaped torus, n_u x n_v = 64x22 .. 512x176
+//                                     at levels 1-4 (the paper's); 5-6 (to 2048x704 = 1.44M
+//                                     vertices) for scaling benchmarks (torus_structured.h;
+//                                     --jitter allowed)
+//   torus-jittered       levels 1..6  the same with seeded tangential jitter of +-0.15 cells,
 //                                     vertices on the torus: the stand-in for the paper's
 //                                     unstructured GAMBIT meshes (breaks the stencil symmetry)
 //   torus-iso            levels 1..5  marching-cubes torus, n = 16..256 grid points per axis,

@@ -8,20 +8,44 @@ namespace curvbench {
 void scale_columns(FitMatrix& A, int ncols, ColumnScaling scaling, ColVector& s) {
   const Eigen::Index m = A.rows();
   s.resize(ncols);
-  for (int j = 0; j < ncols; ++j) {
-    double norm = 1.0;
-    if (scaling == ColumnScaling::two_norm) {
-      double sum = 0.0;
-      for (Eigen::Index i = 0; i < m; ++i) sum += A(i, j) * A(i, j);
-      norm = std::sqrt(sum);
-    } else if (scaling == ColumnScaling::inf_norm) {
-      norm = 0.0;
-      for (Eigen::Index i = 0; i < m; ++i) norm = std::max(norm, std::abs(A(i, j)));
+  double norm[kMaxCols];
+  for (int j = 0; j < ncols; ++j) norm[j] = scaling == ColumnScaling::none ? 1.0 : 0.0;
+  if (scaling == ColumnScaling::two_norm) {
+    // Four columns per pass: independent sums in registers, each in row order.
+    const double* a = A.data();
+    int j = 0;
+    for (; j + 4 <= ncols; j += 4) {
+      const double* c0 = a + j * m;
+      double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+      for (Eigen::Index i = 0; i < m; ++i) {
+        s0 += c0[i] * c0[i];
+        s1 += c0[m + i] * c0[m + i];
+        s2 += c0[2 * m + i] * c0[2 * m + i];
+        s3 += c0[3 * m + i] * c0[3 * m + i];
+      }
+      norm[j] = s0;
+      norm[j + 1] = s1;
+      norm[j + 2] = s2;
+      norm[j + 3] = s3;
     }
-    if (!(norm > 0.0) || !std::isfinite(norm)) norm = 1.0;
-    s(j) = norm;
-    if (norm != 1.0)
-      for (Eigen::Index i = 0; i < m; ++i) A(i, j) /= norm;
+    for (; j < ncols; ++j)
+      for (Eigen::Index i = 0; i < m; ++i) norm[j] += a[j * m + i] * a[j * m + i];
+    for (j = 0; j < ncols; ++j) norm[j] = std::sqrt(norm[j]);
+  } else if (scaling == ColumnScaling::inf_norm) {
+    for (Eigen::Index i = 0; i < m; ++i)
+      for (int j = 0; j < ncols; ++j) norm[j] = std::max(norm[j], std::abs(A(i, j)));
+  }
+  for (int j = 0; j < ncols; ++j) {
+    if (!(norm[j] > 0.0) || !std::isfinite(norm[j])) norm[j] = 1.0;
+    s(j) = norm[j];
+    // Multiplying by 1/s_j rounds once more than dividing, but divisions are the slowest
+    // operation of the whole fit (one per entry; issue 6): a 13 x 6 LHF-2 system spent a
+    // third of its QR time here.
+    if (norm[j] != 1.0) {
+      const double inv = 1.0 / norm[j];
+      double* const a = A.data() + static_cast<std::ptrdiff_t>(j) * m;
+      for (Eigen::Index i = 0; i < m; ++i) a[i] *= inv;
+    }
   }
 }
 

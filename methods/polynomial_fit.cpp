@@ -17,14 +17,14 @@ FitResult fit_polynomial(const RowVector& u, const RowVector& v, const RhsMatrix
   // Eq. (13): V~ = Omega V, b = Omega f.
   FitMatrix& A = scratch.A;
   RhsMatrix& B = scratch.B;
-  fill_vandermonde(u, v, settings.degree, ic, A);
-  B = f;
-  if (w.size() == m) {
-    for (Eigen::Index i = 0; i < m; ++i) {
-      A.row(i) *= w(i);
-      B.row(i) *= w(i);
-    }
-  }
+  const bool weighted = w.size() == m;
+  if (weighted)
+    fill_vandermonde(u, v, settings.degree, ic, A, w);
+  else
+    fill_vandermonde(u, v, settings.degree, ic, A);
+  B.resize(m, k);
+  for (Eigen::Index j = 0; j < k; ++j)
+    for (Eigen::Index i = 0; i < m; ++i) B(i, j) = weighted ? f(i, j) * w(i) : f(i, j);
 
   CoeffMatrix& X = scratch.X;
   if (settings.solver == LsqSolver::safeguarded_qr) {

@@ -1,11 +1,176 @@
 // Safeguarded Householder QR (ALGORITHM_NOTES §5.4); see safeguarded_qr.h.
+//
+// Speed (issue 6). The systems are small (LHF-2: 13 x 6 on a valence-6 mesh), so the cost is
+// the latency of the dot-product chains, not the flops. A reflector is therefore applied to many
+// columns in one pass over the rows: their dot products are independent chains the CPU runs side
+// by side. For the common sizes (up to 13 columns of A and B together: degrees 1-3 with one or
+// three right-hand sides) the column count is a template parameter, the loops over columns unroll
+// and the sums stay in registers, split in two halves to shorten the chains further; other sizes
+// use blocks of four columns. The summation order is fixed by the sizes alone, so the results
+// are deterministic (the same for any thread count), though not bit-identical across the two
+// paths.
 #include "methods/safeguarded_qr.h"
 
 #include <cmath>
+#include <utility>
 
 #include "methods/least_squares.h"
 
 namespace curvbench {
+
+namespace {
+
+// The Householder reflector of column x at step j (rows j..m-1), from sigma = sum_{i>=j} x_i^2.
+// Returns false if the column is nearly dependent (|R_jj| < tol, norm 0 or NaN): the safeguard
+// stops there. Otherwise stores v = x - alpha e_1 in x[j..m), R_jj = alpha in rdiag and
+// beta = 2 / |v|^2 (0 if v = 0, which cannot happen with norm > 0).
+bool make_reflector(double* x, int j, double sigma, double tol, double& rdiag, double& beta) {
+  const double norm = std::sqrt(sigma);
+  if (!(norm >= tol) || !(norm > 0.0)) return false;
+  const double alpha = x[j] > 0.0 ? -norm : norm;  // R_jj, sign avoids cancellation
+  const double v0 = x[j] - alpha;
+  x[j] = v0;
+  const double vnorm2 = 2.0 * norm * std::abs(v0);  // |v|^2 = 2 |x| (|x| + |x0|)
+  rdiag = alpha;
+  beta = vnorm2 > 0.0 ? 2.0 / vnorm2 : 0.0;
+  return true;
+}
+
+double column_sigma(const double* x, int j, int m) {
+  double sigma = 0.0;
+  for (int i = j; i < m; ++i) sigma += x[i] * x[i];
+  return sigma;
+}
+
+// ---- fixed column count -----------------------------------------------------------------------
+
+// col_c -= (beta v . col_c) v over rows j..m-1 for the C columns cols[0..C), v in x[j..m).
+// Returns sum_{i>j} cols[0][i]^2 after the update: the sigma of the next step. Each dot product
+// is summed in two interleaved halves (rows j, j+2, ... and j+1, j+3, ...), which halves the
+// length of its dependency chain; the order is fixed, so results are deterministic.
+template <int C>
+double apply_reflector_fixed(const double* x, int j, int m, double beta, double* const* cols) {
+  if constexpr (C == 0) {
+    return 0.0;
+  } else {
+    double* c[C];
+    double even[C], odd[C];
+    for (int q = 0; q < C; ++q) c[q] = cols[q], even[q] = 0.0, odd[q] = 0.0;
+    int i = j;
+    for (; i + 1 < m; i += 2) {
+      const double x0 = x[i], x1 = x[i + 1];
+      for (int q = 0; q < C; ++q) {
+        even[q] += x0 * c[q][i];
+        odd[q] += x1 * c[q][i + 1];
+      }
+    }
+    if (i < m)
+      for (int q = 0; q < C; ++q) even[q] += x[i] * c[q][i];
+    double d[C];
+    for (int q = 0; q < C; ++q) d[q] = beta * (even[q] + odd[q]);
+    for (int q = 0; q < C; ++q) c[q][j] -= d[q] * x[j];
+    double sigma_even = 0.0, sigma_odd = 0.0;
+    i = j + 1;
+    for (; i + 1 < m; i += 2) {
+      const double x0 = x[i], x1 = x[i + 1];
+      for (int q = 0; q < C; ++q) {
+        c[q][i] -= d[q] * x0;
+        c[q][i + 1] -= d[q] * x1;
+      }
+      sigma_even += c[0][i] * c[0][i];
+      sigma_odd += c[0][i + 1] * c[0][i + 1];
+    }
+    if (i < m) {
+      for (int q = 0; q < C; ++q) c[q][i] -= d[q] * x[i];
+      sigma_even += c[0][i] * c[0][i];
+    }
+    return sigma_even + sigma_odd;
+  }
+}
+
+// Steps J..N-1 of the factorization of N columns of A followed by K of B. Returns the rank.
+template <int N, int K, int J>
+int factor_fixed(double* const* col, int m, double tol, double sigma, double* rdiag) {
+  if constexpr (J == N) {
+    return N;
+  } else {
+    if (J >= m) return J;
+    double beta;
+    if (!make_reflector(col[J], J, sigma, tol, rdiag[J], beta)) return J;
+    const double next = apply_reflector_fixed<N + K - J - 1>(col[J], J, m, beta, col + J + 1);
+    // With beta = 0 nothing changed and `next` is still right (column J+1 untouched).
+    return factor_fixed<N, K, J + 1>(col, m, tol, next, rdiag);
+  }
+}
+
+// ---- any column count -------------------------------------------------------------------------
+
+// As apply_reflector_fixed for `count` columns, four per pass (without the sigma).
+void apply_reflector(const double* x, int j, int m, double beta, double* const* cols, int count) {
+  int q = 0;
+  for (; q + 4 <= count; q += 4) {
+    double* const c0 = cols[q];
+    double* const c1 = cols[q + 1];
+    double* const c2 = cols[q + 2];
+    double* const c3 = cols[q + 3];
+    double d0 = 0.0, d1 = 0.0, d2 = 0.0, d3 = 0.0;
+    for (int i = j; i < m; ++i) {
+      d0 += x[i] * c0[i];
+      d1 += x[i] * c1[i];
+      d2 += x[i] * c2[i];
+      d3 += x[i] * c3[i];
+    }
+    d0 *= beta, d1 *= beta, d2 *= beta, d3 *= beta;
+    for (int i = j; i < m; ++i) {
+      const double xi = x[i];
+      c0[i] -= d0 * xi;
+      c1[i] -= d1 * xi;
+      c2[i] -= d2 * xi;
+      c3[i] -= d3 * xi;
+    }
+  }
+  for (; q < count; ++q) {
+    double* const c0 = cols[q];
+    double d0 = 0.0;
+    for (int i = j; i < m; ++i) d0 += x[i] * c0[i];
+    d0 *= beta;
+    for (int i = j; i < m; ++i) c0[i] -= d0 * x[i];
+  }
+}
+
+int factor_any(double* const* col, int n, int total, int m, double tol, double* rdiag) {
+  for (int j = 0; j < n; ++j) {
+    if (j >= m) return j;
+    double beta;
+    if (!make_reflector(col[j], j, column_sigma(col[j], j, m), tol, rdiag[j], beta)) return j;
+    apply_reflector(col[j], j, m, beta, col + j + 1, total - j - 1);
+  }
+  return n;
+}
+
+// Rank of the safeguarded factorization of n columns of A and k of B (pointers in col).
+int factor(double* const* col, int n, int k, int m, double tol, double* rdiag) {
+  const double sigma0 = m > 0 ? column_sigma(col[0], 0, m) : 0.0;
+#define CURVBENCH_QR_FIXED(N, K) \
+  if (n == (N) && k == (K)) return factor_fixed<N, K, 0>(col, m, tol, sigma0, rdiag);
+  // Degrees 1-3 with the constant (3, 6, 10 columns) and without (2, 5, 9), k = 1 or 3.
+  CURVBENCH_QR_FIXED(6, 1)
+  CURVBENCH_QR_FIXED(6, 3)
+  CURVBENCH_QR_FIXED(10, 1)
+  CURVBENCH_QR_FIXED(10, 3)
+  CURVBENCH_QR_FIXED(3, 1)
+  CURVBENCH_QR_FIXED(3, 3)
+  CURVBENCH_QR_FIXED(5, 1)
+  CURVBENCH_QR_FIXED(5, 3)
+  CURVBENCH_QR_FIXED(9, 1)
+  CURVBENCH_QR_FIXED(9, 3)
+  CURVBENCH_QR_FIXED(2, 1)
+  CURVBENCH_QR_FIXED(2, 3)
+#undef CURVBENCH_QR_FIXED
+  return factor_any(col, n, n + k, m, tol, rdiag);
+}
+
+}  // namespace
 
 QrSolveResult safeguarded_qr_solve(FitMatrix& A, RhsMatrix& B, int degree, bool include_constant,
                                    double tol, CoeffMatrix& X, ColVector& scale) {
@@ -20,43 +185,15 @@ QrSolveResult safeguarded_qr_solve(FitMatrix& A, RhsMatrix& B, int degree, bool 
   if (d < 1 || n < 1) return result;
   // §5.3: 2-norm column scaling of the weighted matrix.
   scale_columns(A, n, ColumnScaling::two_norm, scale);
-  // §5.4: Householder QR, left to right, with B updated in the same loop.
+
+  // §5.4: Householder QR, left to right, with B updated in the same loop, stopping at the first
+  // nearly dependent column. Columns as pointers (column-major, leading dimension m): col[c] is
+  // A(:, c) for c < n and B(:, c - n) after.
+  double* col[kMaxCols + kMaxRhs];
+  for (int c = 0; c < n; ++c) col[c] = A.data() + static_cast<std::ptrdiff_t>(c) * m;
+  for (int c = 0; c < k; ++c) col[n + c] = B.data() + static_cast<std::ptrdiff_t>(c) * m;
   double rdiag[kMaxCols];
-  int rank = n;
-  for (int j = 0; j < n; ++j) {
-    if (j >= m) {
-      rank = j;
-      break;
-    }
-    double sigma = 0.0;
-    for (int i = j; i < m; ++i) sigma += A(i, j) * A(i, j);
-    const double norm = std::sqrt(sigma);
-    // |R_jj| < tol, an exactly dependent column (norm 0, also when tol = 0), or NaN: the first
-    // nearly dependent column.
-    if (!(norm >= tol) || !(norm > 0.0)) {
-      rank = j;
-      break;
-    }
-    const double alpha = A(j, j) > 0.0 ? -norm : norm;  // R_jj, sign avoids cancellation
-    const double v0 = A(j, j) - alpha;
-    A(j, j) = v0;                                     // reflector v = x - alpha e_1 in A(j:m, j)
-    const double vnorm2 = 2.0 * norm * std::abs(v0);  // |v|^2 = 2 |x| (|x| + |x0|)
-    rdiag[j] = alpha;
-    if (!(vnorm2 > 0.0)) continue;  // x = alpha e_1 already (cannot happen with norm > 0)
-    const double beta = 2.0 / vnorm2;
-    for (int c = j + 1; c < n; ++c) {
-      double dot = 0.0;
-      for (int i = j; i < m; ++i) dot += A(i, j) * A(i, c);
-      const double f = beta * dot;
-      for (int i = j; i < m; ++i) A(i, c) -= f * A(i, j);
-    }
-    for (int c = 0; c < k; ++c) {
-      double dot = 0.0;
-      for (int i = j; i < m; ++i) dot += A(i, j) * B(i, c);
-      const double f = beta * dot;
-      for (int i = j; i < m; ++i) B(i, c) -= f * A(i, j);
-    }
-  }
+  int rank = factor(col, n, k, m, tol, rdiag);
   result.rank = rank;
   // Drop whole degree blocks from the right until the accepted columns cover the degree.
   while (rank < n) {

@@ -4,25 +4,40 @@
 namespace curvbench {
 
 void fill_vandermonde(const RowVector& u, const RowVector& v, int degree, bool include_constant,
-                      FitMatrix& V) {
+                      FitMatrix& V, const RowVector& w) {
   const Eigen::Index m = u.size();
+  const bool weighted = w.size() == m;
   V.resize(m, num_columns(degree, include_constant));
-  for (Eigen::Index i = 0; i < m; ++i) {
-    // Row i: for each degree p the block u^p, u^{p-1} v, ..., v^p, built from the previous
-    // block by multiplying with u (all but the last entry) and v (the last entry).
-    double block[kMaxDegree + 1];
-    double next[kMaxDegree + 1];
-    block[0] = 1.0;
-    int col = 0;
-    if (include_constant) V(i, col++) = 1.0;
-    for (int p = 1; p <= degree; ++p) {
-      for (int k = 0; k < p; ++k) next[k] = block[k] * u(i);
-      next[p] = block[p - 1] * v(i);
-      for (int k = 0; k <= p; ++k) {
-        block[k] = next[k];
-        V(i, col++) = block[k];
-      }
+  // Column by column (contiguous in the column-major V): the block of degree p, columns
+  // u^p, u^{p-1} v, ..., v^p, is the previous block times u (all but the last column) and its
+  // last column times v. Degree 0 is the column of ones (of weights, for a weighted matrix),
+  // kept only with the constant; the weighted blocks follow by the same recurrence.
+  const double* uu = u.data();
+  const double* vv = v.data();
+  const double* ww = weighted ? w.data() : nullptr;
+  double* const first = V.data();
+  if (include_constant)
+    for (Eigen::Index i = 0; i < m; ++i) first[i] = weighted ? ww[i] : 1.0;
+  double* prev = nullptr;  // first column of the previous block (nullptr: the ones)
+  double* next = first + (include_constant ? m : 0);
+  for (int p = 1; p <= degree; ++p) {
+    double* const block = next;
+    for (int k = 0; k < p; ++k, next += m) {
+      if (prev == nullptr && weighted)
+        for (Eigen::Index i = 0; i < m; ++i) next[i] = ww[i] * uu[i];
+      else if (prev == nullptr)
+        for (Eigen::Index i = 0; i < m; ++i) next[i] = uu[i];
+      else
+        for (Eigen::Index i = 0; i < m; ++i) next[i] = prev[k * m + i] * uu[i];
     }
+    if (prev == nullptr && weighted)
+      for (Eigen::Index i = 0; i < m; ++i) next[i] = ww[i] * vv[i];
+    else if (prev == nullptr)
+      for (Eigen::Index i = 0; i < m; ++i) next[i] = vv[i];
+    else
+      for (Eigen::Index i = 0; i < m; ++i) next[i] = prev[(p - 1) * m + i] * vv[i];
+    next += m;
+    prev = block;
   }
 }
 

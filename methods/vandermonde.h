@@ -59,7 +59,8 @@ constexpr double taylor_factor(int j, int k) {
 
 /// Fills V (u.size() x num_columns(degree, include_constant)) with the monomials of degree
 /// <= degree evaluated at the rows (u_i, v_i). degree in 0..kMaxDegree, u.size() <= kMaxRows.
+/// With row weights w (same size as u) it fills Omega V of eq. (13) instead, row i times w_i.
 void fill_vandermonde(const RowVector& u, const RowVector& v, int degree, bool include_constant,
-                      FitMatrix& V);
+                      FitMatrix& V, const RowVector& w = RowVector());
 
 }  // namespace curvbench

@@ -30,8 +30,8 @@ TEST(Generate, Families) {
                                              "torus-iso",        "torus-iso-projected",
                                              "bump-48",          "bump-irregular"};
   EXPECT_EQ(mesh_families(), expected);
-  EXPECT_EQ(max_mesh_level("torus-structured"), 4);
-  EXPECT_EQ(max_mesh_level("torus-jittered"), 4);
+  EXPECT_EQ(max_mesh_level("torus-structured"), 6);  // 5-6: beyond the paper, for scaling
+  EXPECT_EQ(max_mesh_level("torus-jittered"), 6);
   EXPECT_EQ(max_mesh_level("torus-iso"), 5);
   EXPECT_EQ(max_mesh_level("torus-iso-projected"), 5);
   EXPECT_EQ(max_mesh_level("bump-48"), 5);
@@ -92,8 +92,8 @@ TEST(Generate, ErrorsNameTheValidValues) {
   EXPECT_NE(unknown.find("sphere"), std::string::npos);
   EXPECT_NE(usage_error(MeshSpec{""}), "");
 
-  EXPECT_NE(usage_error(MeshSpec{"torus-structured", 0}).find("1..4"), std::string::npos);
-  EXPECT_NE(usage_error(MeshSpec{"torus-structured", 5}).find("1..4"), std::string::npos);
+  EXPECT_NE(usage_error(MeshSpec{"torus-structured", 0}).find("1..6"), std::string::npos);
+  EXPECT_NE(usage_error(MeshSpec{"torus-structured", 7}).find("1..6"), std::string::npos);
   EXPECT_NE(usage_error(MeshSpec{"torus-iso", 6}).find("1..5"), std::string::npos);
   EXPECT_NE(usage_error(MeshSpec{"bump-48", -1}).find("1..5"), std::string::npos);
   EXPECT_NE(usage_error(MeshSpec{"bump-irregular", 6}).find("1..5"), std::string::npos);

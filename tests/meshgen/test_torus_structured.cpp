@@ -128,7 +128,7 @@ TEST(TorusStructured, JitterKeepsConnectivityAndSurface) {
 
 TEST(TorusStructured, BadLevelThrows) {
   EXPECT_THROW(torus_structured(0), UsageError);
-  EXPECT_THROW(torus_structured(5), UsageError);
+  EXPECT_THROW(torus_structured(7), UsageError);
 }
 
 }  // namespace

@@ -41,6 +41,30 @@ TEST(Vandermonde, MonomialOrderAndTaylorFactors) {
   EXPECT_EQ(taylor_factor(0, 0), 1.0);
 }
 
+TEST(Vandermonde, WeightedRowsAreOmegaTimesV) {
+  // Eq. (13): the weighted fill is diag(w) V, to within the rounding of the recurrence (the
+  // weight enters at degree 0 instead of last: at most a few ulp per entry).
+  Rng rng(11);
+  for (const bool ic : {true, false}) {
+    for (int degree = 1; degree <= kMaxDegree; ++degree) {
+      RowVector u(17), v(17), w(17);
+      for (int i = 0; i < 17; ++i) {
+        u(i) = rng.uniform(-1.5, 1.5);
+        v(i) = rng.uniform(-1.5, 1.5);
+        w(i) = rng.uniform(0.1, 3.0);
+      }
+      FitMatrix V, Vw;
+      fill_vandermonde(u, v, degree, ic, V);
+      fill_vandermonde(u, v, degree, ic, Vw, w);
+      ASSERT_EQ(Vw.cols(), V.cols());
+      for (int i = 0; i < 17; ++i)
+        for (int j = 0; j < V.cols(); ++j)
+          EXPECT_NEAR(Vw(i, j), w(i) * V(i, j), 1e-14 * std::abs(w(i) * V(i, j)))
+              << "degree " << degree << " row " << i << " col " << j;
+    }
+  }
+}
+
 TEST(LocalFrame, FollowsNotesSection3) {
   LocalFrame f = make_local_frame(Vec3::UnitZ());
   EXPECT_EQ(f.t1, Vec3::UnitX());
@@ -80,6 +104,21 @@ TEST(Weights, Equation15) {
   RowVector w2;
   compute_weights(RowVector(3.0 * u), RowVector(3.0 * v), g, 0.5, w2);
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(w2(i) / w(i), 1.0 / 3.0, 1e-14);
+}
+
+TEST(Weights, InversePowerMatchesPow) {
+  // The square-root forms of x^(-d/4), d = 1..6, agree with std::pow to a few ulp; other
+  // exponents go through std::pow itself.
+  Rng rng(5);
+  for (int q = 1; q <= 6; ++q) {
+    for (int i = 0; i < 200; ++i) {
+      const double x = std::exp(rng.uniform(-20.0, 20.0));
+      const double exact = std::pow(x, -0.25 * q);
+      EXPECT_NEAR(inverse_power(x, 0.25 * q), exact, 4e-16 * exact) << "q " << q << " x " << x;
+    }
+  }
+  EXPECT_EQ(inverse_power(3.0, 0.3), std::pow(3.0, -0.3));
+  EXPECT_EQ(inverse_power(2.0, 0.0), 1.0);
 }
 
 // Random points in the disk of radius 0.3 and a random polynomial of degree d.
