@@ -12,6 +12,14 @@ bool all_finite(const Vec3& v) {
   return v.allFinite();
 }
 
+// sqrt(a^2 + b^2) without overflow or underflow of the squares: the plain formula when both are
+// in a safe range (within an ulp of std::hypot, several times faster; issue 6), std::hypot else.
+double norm2d(double a, double b) {
+  const double big = std::max(std::abs(a), std::abs(b));
+  if (big < 1e150 && big > 1e-150) return std::sqrt(a * a + b * b);
+  return std::hypot(a, b);
+}
+
 // Eq. (8) for eigenvalue ki (other eigenvalue kj), as coefficients (a, b) of q1, q2.
 Vec2 eigen_direction(double w11, double w12, double ki, double kj) {
   if (std::abs(w11 - kj) > std::abs(w11 - ki)) return Vec2(w11 - kj, w12);  // first form
@@ -26,9 +34,9 @@ bool is_umbilic(double k1, double k2) {
 
 void principal_from_symmetric(double w11, double w12, double w22, const Vec3& q1, const Vec3& q2,
                               double& k1, double& k2, Vec3& d1, Vec3& d2) {
-  // Eq. (7); hypot avoids overflow of the squares.
+  // Eq. (7); norm2d avoids overflow of the squares.
   const double mean = 0.5 * (w11 + w22);
-  const double disc = 0.5 * std::hypot(w11 - w22, 2.0 * w12);
+  const double disc = 0.5 * norm2d(w11 - w22, 2.0 * w12);
   k1 = mean + disc;
   k2 = mean - disc;
   if (k1 == k2) {  // exact umbilic: the paper's choice e1 = q1, e2 = q2
@@ -106,7 +114,7 @@ Curvature curvature_from_height(const Vec3& t1, const Vec3& t2, const Vec3& m, d
       !std::isfinite(fv) || !std::isfinite(fuu) || !std::isfinite(fuv) || !std::isfinite(fvv)) {
     return c;
   }
-  const double g = std::hypot(fu, fv);  // |grad f|
+  const double g = norm2d(fu, fv);  // |grad f|
   const double ell2 = 1.0 + fu * fu + fv * fv;
   const double ell = std::sqrt(ell2);
   if (!std::isfinite(ell)) return c;

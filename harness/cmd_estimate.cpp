@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -56,12 +57,15 @@ std::string temp_path(const std::string& path) {
   return (p.parent_path() / name).string();
 }
 
+// Shortest text that reads back to exactly x (std::to_chars; about 10x faster than "%.17g").
 void put_double(std::FILE* f, double x) {
   if (std::isnan(x)) {
     std::fputs("nan", f);
-  } else {
-    std::fprintf(f, "%.17g", x);
+    return;
   }
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, x);
+  std::fwrite(buf, 1, static_cast<size_t>(r.ptr - buf), f);
 }
 
 // Writes to `path`; errors name `shown` (the user's output file).
@@ -144,8 +148,10 @@ int run_estimate(const EstimateOptions& o, bool degree_given) {
   const Mesh mesh = read_input_mesh(o.mesh, o.skip_invalid, report);
   const double read_seconds = since(t_read);
   const auto t0 = Clock::now();
-  const std::vector<VertexEstimate> res = estimate_mesh(mesh, *est);
+  std::vector<VertexEstimate> res = estimate_mesh(mesh, *est);
   const double seconds = since(t0);
+  int counts[4] = {0, 0, 0, 0};
+  for (const VertexEstimate& e : res) ++counts[static_cast<int>(e.status)];
 
   const auto t_write = Clock::now();
 
@@ -155,6 +161,7 @@ int run_estimate(const EstimateOptions& o, bool degree_given) {
       write_csv(tmp, o.output, res, report.source_vertex);
     } else {
       std::vector<VertexProperty> props = ply_properties(res);
+      std::vector<VertexEstimate>().swap(res);  // peak memory: the properties hold it all now
       std::vector<std::string> comments;
       if (!report.source_vertex.empty()) {
         props.push_back(
@@ -178,8 +185,6 @@ int run_estimate(const EstimateOptions& o, bool degree_given) {
   }
   const double write_seconds = since(t_write);
 
-  int counts[4] = {0, 0, 0, 0};
-  for (const VertexEstimate& e : res) ++counts[static_cast<int>(e.status)];
   const int n = mesh.num_vertices();
   std::fprintf(stderr,
                "curvbench estimate: %s on %s: %d vertices (ok %d, degree_reduced %d, failed %d, "

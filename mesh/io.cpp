@@ -19,6 +19,9 @@
 #include "mesh/io.h"
 
 #include <fcntl.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 #include <unistd.h>
 
 #include <CGAL/IO/OBJ.h>
@@ -987,6 +990,11 @@ Mesh soup_to_mesh(const std::string& path, const std::string& format, std::vecto
 
   std::vector<Point>().swap(points);
   std::vector<Polygon>().swap(polygons);
+#ifdef __GLIBC__
+  // The soup was millions of small polygon vectors: hand their heap back to the system now
+  // rather than carry it through the estimation (peak memory, issue 6).
+  malloc_trim(0);
+#endif
   Mesh mesh(std::move(V), std::move(F), path);
   if (report != nullptr) {
     *report = MeshReadReport{};

@@ -5,32 +5,52 @@
 
 namespace curvbench {
 
+namespace {
+
+// Squared 2-norms of the columns 0..n-1 of the column-major m-row matrix a, all columns in one
+// pass over the rows: independent sums, each in row order. N > 0: n = N known at compile time
+// (the sums stay in registers); N == 0: any n.
+template <int N>
+void squared_column_norms(const double* a, Eigen::Index m, int ncols, double* norm2) {
+  const int n = N > 0 ? N : ncols;
+  double sum[N > 0 ? N : kMaxCols] = {};
+  for (Eigen::Index i = 0; i < m; ++i)
+    for (int j = 0; j < n; ++j) sum[j] += a[j * m + i] * a[j * m + i];
+  for (int j = 0; j < n; ++j) norm2[j] = sum[j];
+}
+
+}  // namespace
+
 void scale_columns(FitMatrix& A, int ncols, ColumnScaling scaling, ColVector& s) {
   const Eigen::Index m = A.rows();
   s.resize(ncols);
   double norm[kMaxCols];
   for (int j = 0; j < ncols; ++j) norm[j] = scaling == ColumnScaling::none ? 1.0 : 0.0;
   if (scaling == ColumnScaling::two_norm) {
-    // Four columns per pass: independent sums in registers, each in row order.
-    const double* a = A.data();
-    int j = 0;
-    for (; j + 4 <= ncols; j += 4) {
-      const double* c0 = a + j * m;
-      double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
-      for (Eigen::Index i = 0; i < m; ++i) {
-        s0 += c0[i] * c0[i];
-        s1 += c0[m + i] * c0[m + i];
-        s2 += c0[2 * m + i] * c0[2 * m + i];
-        s3 += c0[3 * m + i] * c0[3 * m + i];
-      }
-      norm[j] = s0;
-      norm[j + 1] = s1;
-      norm[j + 2] = s2;
-      norm[j + 3] = s3;
+    // The column counts of degrees 1-4 with and without the constant at compile time.
+    switch (ncols) {
+      case 2:
+        squared_column_norms<2>(A.data(), m, ncols, norm);
+        break;
+      case 3:
+        squared_column_norms<3>(A.data(), m, ncols, norm);
+        break;
+      case 5:
+        squared_column_norms<5>(A.data(), m, ncols, norm);
+        break;
+      case 6:
+        squared_column_norms<6>(A.data(), m, ncols, norm);
+        break;
+      case 9:
+        squared_column_norms<9>(A.data(), m, ncols, norm);
+        break;
+      case 10:
+        squared_column_norms<10>(A.data(), m, ncols, norm);
+        break;
+      default:
+        squared_column_norms<0>(A.data(), m, ncols, norm);
     }
-    for (; j < ncols; ++j)
-      for (Eigen::Index i = 0; i < m; ++i) norm[j] += a[j * m + i] * a[j * m + i];
-    for (j = 0; j < ncols; ++j) norm[j] = std::sqrt(norm[j]);
+    for (int j = 0; j < ncols; ++j) norm[j] = std::sqrt(norm[j]);
   } else if (scaling == ColumnScaling::inf_norm) {
     for (Eigen::Index i = 0; i < m; ++i)
       for (int j = 0; j < ncols; ++j) norm[j] = std::max(norm[j], std::abs(A(i, j)));

@@ -3,12 +3,10 @@
 // Speed (issue 6). The systems are small (LHF-2: 13 x 6 on a valence-6 mesh), so the cost is
 // the latency of the dot-product chains, not the flops. A reflector is therefore applied to many
 // columns in one pass over the rows: their dot products are independent chains the CPU runs side
-// by side. For the common sizes (up to 13 columns of A and B together: degrees 1-3 with one or
-// three right-hand sides) the column count is a template parameter, the loops over columns unroll
-// and the sums stay in registers, split in two halves to shorten the chains further; other sizes
-// use blocks of four columns. The summation order is fixed by the sizes alone, so the results
-// are deterministic (the same for any thread count), though not bit-identical across the two
-// paths.
+// by side, each split in two halves to shorten the chains further. For degrees 1-4 (with or
+// without the constant, one or three right-hand sides) the column count is a template parameter,
+// so the loops over columns unroll and the sums stay in registers (up to degree 3). The summation
+// order depends on the sizes only: results are deterministic for any thread count.
 #include "methods/safeguarded_qr.h"
 
 #include <cmath>
@@ -42,53 +40,51 @@ double column_sigma(const double* x, int j, int m) {
   return sigma;
 }
 
-// ---- fixed column count -----------------------------------------------------------------------
-
-// col_c -= (beta v . col_c) v over rows j..m-1 for the C columns cols[0..C), v in x[j..m).
-// Returns sum_{i>j} cols[0][i]^2 after the update: the sigma of the next step. Each dot product
-// is summed in two interleaved halves (rows j, j+2, ... and j+1, j+3, ...), which halves the
-// length of its dependency chain; the order is fixed, so results are deterministic.
+// col_c -= (beta v . col_c) v over rows j..m-1 for the columns cols[0..C) (C > 0: a compile-time
+// count, the loops over columns unroll and the sums stay in registers; C == 0: `count` columns),
+// with v in x[j..m). Returns sum_{i>j} cols[0][i]^2 after the update: the sigma of the next
+// step. Each dot product is summed in two interleaved halves (rows j, j+2, ... and j+1, j+3,
+// ...), which halves the length of its dependency chain; the order depends on the sizes only.
 template <int C>
-double apply_reflector_fixed(const double* x, int j, int m, double beta, double* const* cols) {
-  if constexpr (C == 0) {
-    return 0.0;
-  } else {
-    double* c[C];
-    double even[C], odd[C];
-    for (int q = 0; q < C; ++q) c[q] = cols[q], even[q] = 0.0, odd[q] = 0.0;
-    int i = j;
-    for (; i + 1 < m; i += 2) {
-      const double x0 = x[i], x1 = x[i + 1];
-      for (int q = 0; q < C; ++q) {
-        even[q] += x0 * c[q][i];
-        odd[q] += x1 * c[q][i + 1];
-      }
+double apply_reflector(const double* x, int j, int m, double beta, double* const* cols,
+                       int count = C) {
+  constexpr int kCap = C > 0 ? C : kMaxCols + kMaxRhs;
+  const int n = C > 0 ? C : count;
+  if (n == 0) return 0.0;
+  double* c[kCap];
+  double even[kCap], odd[kCap], d[kCap];
+  for (int q = 0; q < n; ++q) c[q] = cols[q], even[q] = 0.0, odd[q] = 0.0;
+  int i = j;
+  for (; i + 1 < m; i += 2) {
+    const double x0 = x[i], x1 = x[i + 1];
+    for (int q = 0; q < n; ++q) {
+      even[q] += x0 * c[q][i];
+      odd[q] += x1 * c[q][i + 1];
     }
-    if (i < m)
-      for (int q = 0; q < C; ++q) even[q] += x[i] * c[q][i];
-    double d[C];
-    for (int q = 0; q < C; ++q) d[q] = beta * (even[q] + odd[q]);
-    for (int q = 0; q < C; ++q) c[q][j] -= d[q] * x[j];
-    double sigma_even = 0.0, sigma_odd = 0.0;
-    i = j + 1;
-    for (; i + 1 < m; i += 2) {
-      const double x0 = x[i], x1 = x[i + 1];
-      for (int q = 0; q < C; ++q) {
-        c[q][i] -= d[q] * x0;
-        c[q][i + 1] -= d[q] * x1;
-      }
-      sigma_even += c[0][i] * c[0][i];
-      sigma_odd += c[0][i + 1] * c[0][i + 1];
-    }
-    if (i < m) {
-      for (int q = 0; q < C; ++q) c[q][i] -= d[q] * x[i];
-      sigma_even += c[0][i] * c[0][i];
-    }
-    return sigma_even + sigma_odd;
   }
+  if (i < m)
+    for (int q = 0; q < n; ++q) even[q] += x[i] * c[q][i];
+  for (int q = 0; q < n; ++q) d[q] = beta * (even[q] + odd[q]);
+  for (int q = 0; q < n; ++q) c[q][j] -= d[q] * x[j];
+  double sigma_even = 0.0, sigma_odd = 0.0;
+  for (i = j + 1; i + 1 < m; i += 2) {
+    const double x0 = x[i], x1 = x[i + 1];
+    for (int q = 0; q < n; ++q) {
+      c[q][i] -= d[q] * x0;
+      c[q][i + 1] -= d[q] * x1;
+    }
+    sigma_even += c[0][i] * c[0][i];
+    sigma_odd += c[0][i + 1] * c[0][i + 1];
+  }
+  if (i < m) {
+    for (int q = 0; q < n; ++q) c[q][i] -= d[q] * x[i];
+    sigma_even += c[0][i] * c[0][i];
+  }
+  return sigma_even + sigma_odd;
 }
 
-// Steps J..N-1 of the factorization of N columns of A followed by K of B. Returns the rank.
+// Steps J..N-1 of the factorization of N columns of A followed by K of B, with the column
+// counts known at compile time. Returns the rank.
 template <int N, int K, int J>
 int factor_fixed(double* const* col, int m, double tol, double sigma, double* rdiag) {
   if constexpr (J == N) {
@@ -97,53 +93,18 @@ int factor_fixed(double* const* col, int m, double tol, double sigma, double* rd
     if (J >= m) return J;
     double beta;
     if (!make_reflector(col[J], J, sigma, tol, rdiag[J], beta)) return J;
-    const double next = apply_reflector_fixed<N + K - J - 1>(col[J], J, m, beta, col + J + 1);
-    // With beta = 0 nothing changed and `next` is still right (column J+1 untouched).
+    const double next = apply_reflector<N + K - J - 1>(col[J], J, m, beta, col + J + 1);
     return factor_fixed<N, K, J + 1>(col, m, tol, next, rdiag);
   }
 }
 
-// ---- any column count -------------------------------------------------------------------------
-
-// As apply_reflector_fixed for `count` columns, four per pass (without the sigma).
-void apply_reflector(const double* x, int j, int m, double beta, double* const* cols, int count) {
-  int q = 0;
-  for (; q + 4 <= count; q += 4) {
-    double* const c0 = cols[q];
-    double* const c1 = cols[q + 1];
-    double* const c2 = cols[q + 2];
-    double* const c3 = cols[q + 3];
-    double d0 = 0.0, d1 = 0.0, d2 = 0.0, d3 = 0.0;
-    for (int i = j; i < m; ++i) {
-      d0 += x[i] * c0[i];
-      d1 += x[i] * c1[i];
-      d2 += x[i] * c2[i];
-      d3 += x[i] * c3[i];
-    }
-    d0 *= beta, d1 *= beta, d2 *= beta, d3 *= beta;
-    for (int i = j; i < m; ++i) {
-      const double xi = x[i];
-      c0[i] -= d0 * xi;
-      c1[i] -= d1 * xi;
-      c2[i] -= d2 * xi;
-      c3[i] -= d3 * xi;
-    }
-  }
-  for (; q < count; ++q) {
-    double* const c0 = cols[q];
-    double d0 = 0.0;
-    for (int i = j; i < m; ++i) d0 += x[i] * c0[i];
-    d0 *= beta;
-    for (int i = j; i < m; ++i) c0[i] -= d0 * x[i];
-  }
-}
-
-int factor_any(double* const* col, int n, int total, int m, double tol, double* rdiag) {
+// The same for any column counts.
+int factor_any(double* const* col, int n, int k, int m, double tol, double sigma, double* rdiag) {
   for (int j = 0; j < n; ++j) {
     if (j >= m) return j;
     double beta;
-    if (!make_reflector(col[j], j, column_sigma(col[j], j, m), tol, rdiag[j], beta)) return j;
-    apply_reflector(col[j], j, m, beta, col + j + 1, total - j - 1);
+    if (!make_reflector(col[j], j, sigma, tol, rdiag[j], beta)) return j;
+    sigma = apply_reflector<0>(col[j], j, m, beta, col + j + 1, n + k - j - 1);
   }
   return n;
 }
@@ -166,8 +127,14 @@ int factor(double* const* col, int n, int k, int m, double tol, double* rdiag) {
   CURVBENCH_QR_FIXED(9, 3)
   CURVBENCH_QR_FIXED(2, 1)
   CURVBENCH_QR_FIXED(2, 3)
+  // Degree 4 (15 and 14 columns): the sums no longer all fit in registers, but the unrolled
+  // loops still beat the generic ones.
+  CURVBENCH_QR_FIXED(15, 1)
+  CURVBENCH_QR_FIXED(15, 3)
+  CURVBENCH_QR_FIXED(14, 1)
+  CURVBENCH_QR_FIXED(14, 3)
 #undef CURVBENCH_QR_FIXED
-  return factor_any(col, n, n + k, m, tol, rdiag);
+  return factor_any(col, n, k, m, tol, sigma0, rdiag);
 }
 
 }  // namespace
@@ -201,15 +168,19 @@ QrSolveResult safeguarded_qr_solve(FitMatrix& A, RhsMatrix& B, int degree, bool 
     n = num_columns(d, include_constant);
     if (d < 1 || n < 1) return result;  // failure: degree 0
   }
-  // Back substitution with R(0:n, 0:n) (strict upper part in A, diagonal in rdiag).
+  // Back substitution with R(0:n, 0:n) (strict upper part in A, diagonal in rdiag), then
+  // c_j = d_j / s_j. The reciprocals are computed first, off the substitution's dependency
+  // chain, which then multiplies instead of dividing (issue 6).
+  double inv_r[kMaxCols], inv_s[kMaxCols];
+  for (int i = 0; i < n; ++i) inv_r[i] = 1.0 / rdiag[i], inv_s[i] = 1.0 / scale(i);
   X.resize(n, k);
   for (int c = 0; c < k; ++c) {
     for (int i = n - 1; i >= 0; --i) {
       double sum = B(i, c);
       for (int j = i + 1; j < n; ++j) sum -= A(i, j) * X(j, c);
-      X(i, c) = sum / rdiag[i];
+      X(i, c) = sum * inv_r[i];
     }
-    for (int i = 0; i < n; ++i) X(i, c) /= scale(i);
+    for (int i = 0; i < n; ++i) X(i, c) *= inv_s[i];
   }
   result.degree = d;
   return result;

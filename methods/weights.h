@@ -9,6 +9,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/types.h"
 #include "methods/vandermonde.h"
@@ -29,7 +30,20 @@ inline double normal_safeguard_gamma(const Vec3& mi, const Vec3& m0) {
 /// x^(-p) for x > 0. For the default exponents p = d/4, d = 1..6, it is computed with square
 /// roots and one division (correctly rounded steps, within a few ulp of std::pow and about 10x
 /// faster, issue 6); other p use std::pow.
-double inverse_power(double x, double p);
+inline double inverse_power(double x, double p) {
+  // p = q/4: x^(-q/4) from x, s = x^(1/2) and r = x^(1/4); otherwise std::pow.
+  const double q = 4.0 * p;
+  if (q == 2.0) return 1.0 / std::sqrt(x);  // degree 2, the common case
+  if (q == 4.0) return 1.0 / x;
+  if (q == 1.0) return 1.0 / std::sqrt(std::sqrt(x));
+  if (q == 3.0) {
+    const double s = std::sqrt(x);
+    return 1.0 / (s * std::sqrt(s));
+  }
+  if (q == 5.0) return 1.0 / (x * std::sqrt(std::sqrt(x)));
+  if (q == 6.0) return 1.0 / (x * std::sqrt(x));
+  return std::pow(x, -p);
+}
 
 /// Eq. (15) for rows (u_i, v_i) with safeguard factors gamma_i (all n = u.size()).
 /// Writes w (n). If every |u_i| is 0 the distance factor is 1 (eps would be 0).

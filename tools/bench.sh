@@ -49,4 +49,30 @@ for b in "$BUILD"/bench_*; do
   "$b" "${ARGS[@]}" --benchmark_out="$OUT/$name.json" --benchmark_out_format=json
 done
 
+# Peak memory of the command-line tool on a mesh of 1.44 million vertices (torus-structured level
+# 6), LHF-2, one thread, binary PLY in and out; appended to table5_timing.md.
+if [[ -x /usr/bin/time ]]; then
+  echo "== peak memory: curvbench estimate, LHF-2, torus-structured level 6 (1.44M vertices)"
+  mesh="$OUT/torus-structured-6.ply"
+  [[ -f "$mesh" ]] || "$BUILD/curvbench" mesh --family torus-structured --level 6 --output "$mesh" > /dev/null
+  /usr/bin/time -v "$BUILD/curvbench" estimate "$mesh" --method lhf-2 --threads 1 --timing \
+    --output "$OUT/estimate-6.ply" 2> "$OUT/memory.log"
+  rm -f "$OUT/estimate-6.ply"
+  rss_kb=$(sed -n 's/.*Maximum resident set size (kbytes): *//p' "$OUT/memory.log")
+  stages=$(sed -n 's/^timing: \(.*\) \([0-9.]*\) s$/\1 \2 s/p' "$OUT/memory.log" | paste -sd ';' | sed 's/;/, /g')
+  echo "peak RSS $((rss_kb / 1024)) MB ($stages)"
+  md="$RESULTS/table5_timing.md"
+  {
+    cat "$md"
+    printf '\n## Memory: `curvbench estimate` on 1.44 million vertices\n\n'
+    printf 'LHF-2, one thread, the torus-structured level-6 mesh (1441792 vertices, 2883584\n'
+    printf 'triangles) read from and written to binary PLY: peak resident set size %d MB\n' \
+      "$((rss_kb / 1024))"
+    printf '(`/usr/bin/time -v`; target: under 600 MB for a million vertices). Stages: %s.\n' "$stages"
+  } > "$md.tmp.$$"
+  mv "$md.tmp.$$" "$md"
+else
+  echo "bench: /usr/bin/time not found (Debian package 'time'): peak memory not measured" >&2
+fi
+
 echo "bench: wrote results/table5_timing.csv and results/table5_timing.md in $(($(date +%s) - start)) s"

@@ -15,6 +15,7 @@ packages=(
   libbenchmark-dev         # Google Benchmark
   libcli11-dev             # command line
   gnuplot-nox              # convergence plots (PNG and SVG)
+  time                     # /usr/bin/time -v: peak memory in make bench
 )
 case "$mode" in
   build) ;;
