@@ -168,19 +168,21 @@ QrSolveResult safeguarded_qr_solve(FitMatrix& A, RhsMatrix& B, int degree, bool 
     n = num_columns(d, include_constant);
     if (d < 1 || n < 1) return result;  // failure: degree 0
   }
-  // Back substitution with R(0:n, 0:n) (strict upper part in A, diagonal in rdiag), then
-  // c_j = d_j / s_j. The reciprocals are computed first, off the substitution's dependency
-  // chain, which then multiplies instead of dividing (issue 6).
-  double inv_r[kMaxCols], inv_s[kMaxCols];
+  // Back substitution with R(0:n, 0:n) (strict upper part in A, diagonal in rdiag), column by
+  // column: x_i = y_i / R_ii, then y(0:i) -= x_i R(0:i, i), a contiguous update of column i
+  // (no dot products re-reading just-written x). Then c_j = x_j / s_j. The reciprocals are
+  // computed first, off the dependency chain, which then multiplies instead of dividing.
+  double inv_r[kMaxCols], inv_s[kMaxCols], y[kMaxCols];
   for (int i = 0; i < n; ++i) inv_r[i] = 1.0 / rdiag[i], inv_s[i] = 1.0 / scale(i);
   X.resize(n, k);
   for (int c = 0; c < k; ++c) {
+    for (int i = 0; i < n; ++i) y[i] = B(i, c);
     for (int i = n - 1; i >= 0; --i) {
-      double sum = B(i, c);
-      for (int j = i + 1; j < n; ++j) sum -= A(i, j) * X(j, c);
-      X(i, c) = sum * inv_r[i];
+      const double xi = y[i] * inv_r[i];
+      const double* r = col[i];  // R(0:i, i)
+      for (int j = 0; j < i; ++j) y[j] -= r[j] * xi;
+      X(i, c) = xi * inv_s[i];
     }
-    for (int i = 0; i < n; ++i) X(i, c) *= inv_s[i];
   }
   result.degree = d;
   return result;
