@@ -208,6 +208,12 @@ void BM_Rings(benchmark::State& state) {
 }
 
 void register_all() {
+  // Samples in registration order, so the rows keep it when repetitions run interleaved.
+  for (const SolverSpec& sp : kSolvers)
+    for (int level = 1; level <= kLevels; ++level) {
+      const Systems& s = g_systems[static_cast<size_t>(level)];
+      g_log.get({kFamily, level, s.verts, s.tris, sp.label, kDegree, 1, {}});
+    }
   for (const SolverSpec& sp : kSolvers)
     level_sweep(benchmark::RegisterBenchmark((std::string("Fit/") + sp.name).c_str(), BM_Fit, sp),
                 kLevels);
