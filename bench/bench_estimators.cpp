@@ -130,7 +130,7 @@ void register_all() {
         ->ArgName("level")
         ->UseRealTime()
         ->MinTime(0.1)
-        ->Repetitions(5)
+        ->Repetitions(9)
         ->Unit(benchmark::kMillisecond);
   }
 }
@@ -246,7 +246,7 @@ std::string make_markdown(const std::vector<Table5Row>& rows, const std::string&
         ". Build: " + (build_info.empty() ? std::string("unknown") : build_info) + ".\n\n";
   md +=
       "Measured by `bench/bench_estimators` (Google Benchmark): seconds = median wall time of "
-      "`estimate_mesh()` over every timed whole-mesh pass (all iterations of 5 repetitions), i.e. "
+      "`estimate_mesh()` over every timed whole-mesh pass (all iterations of 9 repetitions), i.e. "
       "the per-vertex stage for the whole mesh including neighbourhoods and the area-weighted "
       "normals, excluding I/O and mesh generation; one thread unless stated. Meshes: the "
       "well-shaped torus (`torus-structured`, levels 1-4). Paper: 3 GHz Pentium 4, gcc 4.2.4 "

@@ -28,14 +28,14 @@
 namespace curvbench::bench {
 
 /// The settings every per-level sweep shares: mesh levels 1..levels as the argument, wall time,
-/// 5 repetitions (the median resists the bursts of load of a shared machine) of at least 0.1 s,
+/// 9 repetitions (the median resists the bursts of load of a shared machine) of at least 0.1 s,
 /// milliseconds, and an O(N) complexity fit.
 inline benchmark::internal::Benchmark* level_sweep(benchmark::internal::Benchmark* b, int levels) {
   return b->DenseRange(1, levels)
       ->ArgName("level")
       ->UseRealTime()
       ->MinTime(0.1)
-      ->Repetitions(5)
+      ->Repetitions(9)
       ->Unit(benchmark::kMillisecond)
       ->Complexity(benchmark::oN);
 }

@@ -11,7 +11,7 @@ BUILD=${1:-build}
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 RESULTS="$ROOT/results"
 OUT="$BUILD/bench"
-# Random interleaving spreads the 5 repetitions of every benchmark over the whole run, so a burst
+# Random interleaving spreads the 9 repetitions of every benchmark over the whole run, so a burst
 # of load on a shared machine hits one of them, not all, and the median stays clean.
 ARGS=(--benchmark_counters_tabular=true --benchmark_enable_random_interleaving=true ${BENCH_ARGS:-})
 start=$(date +%s)
