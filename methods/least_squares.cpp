@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "methods/fixed_columns.h"
+
 namespace curvbench {
 
 namespace {
@@ -27,29 +29,8 @@ void scale_columns(FitMatrix& A, int ncols, ColumnScaling scaling, ColVector& s)
   double norm[kMaxCols];
   for (int j = 0; j < ncols; ++j) norm[j] = scaling == ColumnScaling::none ? 1.0 : 0.0;
   if (scaling == ColumnScaling::two_norm) {
-    // The column counts of degrees 1-4 with and without the constant at compile time.
-    switch (ncols) {
-      case 2:
-        squared_column_norms<2>(A.data(), m, ncols, norm);
-        break;
-      case 3:
-        squared_column_norms<3>(A.data(), m, ncols, norm);
-        break;
-      case 5:
-        squared_column_norms<5>(A.data(), m, ncols, norm);
-        break;
-      case 6:
-        squared_column_norms<6>(A.data(), m, ncols, norm);
-        break;
-      case 9:
-        squared_column_norms<9>(A.data(), m, ncols, norm);
-        break;
-      case 10:
-        squared_column_norms<10>(A.data(), m, ncols, norm);
-        break;
-      default:
-        squared_column_norms<0>(A.data(), m, ncols, norm);
-    }
+    with_fixed_columns(
+        ncols, [&](auto N) { squared_column_norms<decltype(N)::value>(A.data(), m, ncols, norm); });
     for (int j = 0; j < ncols; ++j) norm[j] = std::sqrt(norm[j]);
   } else if (scaling == ColumnScaling::inf_norm) {
     for (Eigen::Index i = 0; i < m; ++i)

@@ -4,14 +4,15 @@
 // the latency of the dot-product chains, not the flops. A reflector is therefore applied to many
 // columns in one pass over the rows: their dot products are independent chains the CPU runs side
 // by side, each split in two halves to shorten the chains further. For degrees 1-4 (with or
-// without the constant, one or three right-hand sides) the column count is a template parameter,
-// so the loops over columns unroll and the sums stay in registers (up to degree 3). The summation
-// order depends on the sizes only: results are deterministic for any thread count.
+// without the constant, one or three right-hand sides) the column count is a template parameter
+// (fixed_columns.h), so the loops over columns unroll and the sums stay in registers (up to
+// degree 3). The summation order depends on the sizes only: results are deterministic for any
+// thread count.
 #include "methods/safeguarded_qr.h"
 
 #include <cmath>
-#include <utility>
 
+#include "methods/fixed_columns.h"
 #include "methods/least_squares.h"
 
 namespace curvbench {
@@ -109,32 +110,18 @@ int factor_any(double* const* col, int n, int k, int m, double tol, double sigma
   return n;
 }
 
-// Rank of the safeguarded factorization of n columns of A and k of B (pointers in col).
+// Rank of the safeguarded factorization of n columns of A and k of B (pointers in col): the
+// fixed-size steps for the usual column counts (fixed_columns.h) and k = 1 or 3, else generic.
 int factor(double* const* col, int n, int k, int m, double tol, double* rdiag) {
   const double sigma0 = m > 0 ? column_sigma(col[0], 0, m) : 0.0;
-#define CURVBENCH_QR_FIXED(N, K) \
-  if (n == (N) && k == (K)) return factor_fixed<N, K, 0>(col, m, tol, sigma0, rdiag);
-  // Degrees 1-3 with the constant (3, 6, 10 columns) and without (2, 5, 9), k = 1 or 3.
-  CURVBENCH_QR_FIXED(6, 1)
-  CURVBENCH_QR_FIXED(6, 3)
-  CURVBENCH_QR_FIXED(10, 1)
-  CURVBENCH_QR_FIXED(10, 3)
-  CURVBENCH_QR_FIXED(3, 1)
-  CURVBENCH_QR_FIXED(3, 3)
-  CURVBENCH_QR_FIXED(5, 1)
-  CURVBENCH_QR_FIXED(5, 3)
-  CURVBENCH_QR_FIXED(9, 1)
-  CURVBENCH_QR_FIXED(9, 3)
-  CURVBENCH_QR_FIXED(2, 1)
-  CURVBENCH_QR_FIXED(2, 3)
-  // Degree 4 (15 and 14 columns): the sums no longer all fit in registers, but the unrolled
-  // loops still beat the generic ones.
-  CURVBENCH_QR_FIXED(15, 1)
-  CURVBENCH_QR_FIXED(15, 3)
-  CURVBENCH_QR_FIXED(14, 1)
-  CURVBENCH_QR_FIXED(14, 3)
-#undef CURVBENCH_QR_FIXED
-  return factor_any(col, n, k, m, tol, sigma0, rdiag);
+  return with_fixed_columns(n, [&](auto N) {
+    constexpr int kN = decltype(N)::value;
+    if constexpr (kN > 0) {
+      if (k == 1) return factor_fixed<kN, 1, 0>(col, m, tol, sigma0, rdiag);
+      if (k == 3) return factor_fixed<kN, 3, 0>(col, m, tol, sigma0, rdiag);
+    }
+    return factor_any(col, n, k, m, tol, sigma0, rdiag);
+  });
 }
 
 }  // namespace

@@ -14,28 +14,19 @@ void fill_vandermonde(const RowVector& u, const RowVector& v, int degree, bool i
   // kept only with the constant; the weighted blocks follow by the same recurrence.
   const double* uu = u.data();
   const double* vv = v.data();
-  const double* ww = weighted ? w.data() : nullptr;
-  double* const first = V.data();
+  const auto weight = [&](Eigen::Index i) { return weighted ? w(i) : 1.0; };
+  double* next = V.data();
   if (include_constant)
-    for (Eigen::Index i = 0; i < m; ++i) first[i] = weighted ? ww[i] : 1.0;
-  double* prev = nullptr;  // first column of the previous block (nullptr: the ones)
-  double* next = first + (include_constant ? m : 0);
-  for (int p = 1; p <= degree; ++p) {
+    for (Eigen::Index i = 0; i < m; ++i, ++next) *next = weight(i);
+  if (degree < 1) return;
+  double* prev = next;  // degree 1: w u, w v
+  for (Eigen::Index i = 0; i < m; ++i) next[i] = weight(i) * uu[i], next[m + i] = weight(i) * vv[i];
+  next += 2 * m;
+  for (int p = 2; p <= degree; ++p) {
     double* const block = next;
-    for (int k = 0; k < p; ++k, next += m) {
-      if (prev == nullptr && weighted)
-        for (Eigen::Index i = 0; i < m; ++i) next[i] = ww[i] * uu[i];
-      else if (prev == nullptr)
-        for (Eigen::Index i = 0; i < m; ++i) next[i] = uu[i];
-      else
-        for (Eigen::Index i = 0; i < m; ++i) next[i] = prev[k * m + i] * uu[i];
-    }
-    if (prev == nullptr && weighted)
-      for (Eigen::Index i = 0; i < m; ++i) next[i] = ww[i] * vv[i];
-    else if (prev == nullptr)
-      for (Eigen::Index i = 0; i < m; ++i) next[i] = vv[i];
-    else
-      for (Eigen::Index i = 0; i < m; ++i) next[i] = prev[(p - 1) * m + i] * vv[i];
+    for (int k = 0; k < p; ++k, next += m)
+      for (Eigen::Index i = 0; i < m; ++i) next[i] = prev[k * m + i] * uu[i];
+    for (Eigen::Index i = 0; i < m; ++i) next[i] = prev[(p - 1) * m + i] * vv[i];
     next += m;
     prev = block;
   }

@@ -5,20 +5,25 @@
 
 namespace curvbench {
 
-void set_failed(double ring, int points, VertexEstimate& out) {
-  out = VertexEstimate{};  // all NaN
+namespace {
+
+// A row without an estimate: every value NaN (VertexEstimate's defaults), degree 0.
+void set_no_estimate(VertexStatus status, double ring, int points, VertexEstimate& out) {
+  out = VertexEstimate{};
   out.degree = 0;
   out.points = points;
   out.ring = ring;
-  out.status = VertexStatus::failed;
+  out.status = status;
+}
+
+}  // namespace
+
+void set_failed(double ring, int points, VertexEstimate& out) {
+  set_no_estimate(VertexStatus::failed, ring, points, out);
 }
 
 void set_excluded(double ring, int points, VertexEstimate& out) {
-  out = VertexEstimate{};  // all NaN
-  out.degree = 0;
-  out.points = points;
-  out.ring = ring;
-  out.status = VertexStatus::excluded;
+  set_no_estimate(VertexStatus::excluded, ring, points, out);
 }
 
 bool set_quantities(const Curvature& c, int degree, int requested, int points, double ring,
