@@ -208,7 +208,8 @@ std::string scaling_markdown(const std::vector<Table5Row>& table5,
   if (rows.empty()) return {};
   const Lookup t(rows);
   std::string md =
-      "\n## Scaling: LHF-2 cost per vertex from 1.4 thousand to 1.44 million vertices\n\n"
+      "\n## Scaling and threads: LHF-2 cost per vertex from 1.4 thousand to 1.44 million "
+      "vertices, 1 and 2 threads\n\n"
       "| level | #V | 1 thread (s) | ns/vertex | 2 threads (s) | ns/vertex | speed-up |\n"
       "|---|---|---|---|---|---|---|\n";
   double lo = 0.0, hi = 0.0;
@@ -362,16 +363,6 @@ std::string make_markdown(const std::vector<Table5Row>& rows, const std::string&
     }
   }
 
-  md +=
-      "\n## Threads: LHF-2, 1 vs 2 threads\n\n| mesh | 1 thread (s) | 2 threads (s) | speed-up |\n"
-      "|---|---|---|---|\n";
-  for (int level = 1; level <= kLevels; ++level) {
-    const Table5Row* a = t.get("LHF-2", level, 1);
-    const Table5Row* b = t.get("LHF-2", level, 2);
-    md += "| " + std::to_string(level) + " | " + (a ? fmt("%.3g", a->seconds) : "-") + " | " +
-          (b ? fmt("%.3g", b->seconds) : "-") + " | " +
-          cell(t.ratio("LHF-2", "LHF-2", level, 1, 2), "%.2f") + " |\n";
-  }
   md += scaling;
   return md;
 }
