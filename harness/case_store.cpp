@@ -11,6 +11,7 @@
 #include "core/build_info.h"
 #include "core/errors.h"
 #include "harness/results_table.h"
+#include "mesh/io.h"
 
 namespace curvbench {
 

@@ -16,6 +16,7 @@
 #include "core/build_info.h"
 #include "core/errors.h"
 #include "harness/metrics.h"
+#include "mesh/io.h"
 #include "mesh/rings.h"
 #include "meshgen/generate.h"
 #include "meshgen/torus_isosurface.h"

@@ -17,6 +17,7 @@
 #include "core/errors.h"
 #include "core/text.h"
 #include "harness/metrics.h"
+#include "mesh/io.h"
 
 namespace curvbench {
 
@@ -106,15 +107,6 @@ int remove_stale_temp_files(const std::string& directory) {
   int removed = 0;
   for (const auto& p : stale) removed += fs::remove(p, ec) ? 1 : 0;
   return removed;
-}
-
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) throw InputError(path + ": read failed");
-  return ss.str();
 }
 
 std::string error_csv_text(const std::vector<ErrorRow>& rows, const std::string& comment) {

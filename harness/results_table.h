@@ -99,9 +99,6 @@ std::string temp_path(const std::string& path);
 /// processes are kept. Returns the number removed; a missing directory removes nothing.
 int remove_stale_temp_files(const std::string& directory);
 
-/// The whole content of a file; throws InputError naming the path if it cannot be read.
-std::string read_file(const std::string& path);
-
 /// "%.17g" with "nan"/"inf" spelled out.
 std::string format_double(double x);
 

@@ -85,29 +85,6 @@ std::string quote(std::string_view token) {
   return out + "'";
 }
 
-// ---- file input --------------------------------------------------------------------------------
-
-/// Whole file as bytes. Distinguishes a missing file from one that exists but cannot be read.
-std::string read_file(const std::string& path) {
-  std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  if (st.type() == fs::file_type::not_found) fail(path, "no such file");
-  if (ec) fail(path, "cannot access file (" + ec.message() + ")");
-  if (st.type() == fs::file_type::directory) fail(path, "cannot read: is a directory");
-
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (f == nullptr) fail(path, std::string("cannot read file (") + std::strerror(errno) + ")");
-  std::string data;
-  char buffer[1 << 16];
-  std::size_t got;
-  while ((got = std::fread(buffer, 1, sizeof(buffer), f)) > 0) data.append(buffer, got);
-  const bool error = std::ferror(f) != 0;
-  const int err = errno;
-  std::fclose(f);
-  if (error) fail(path, std::string("cannot read file (") + std::strerror(err) + ")");
-  return data;
-}
-
 // ---- text scanning -----------------------------------------------------------------------------
 
 bool is_blank(char c) {
@@ -1130,6 +1107,28 @@ void check_properties(const Mesh& mesh, const std::vector<VertexProperty>& prope
 }
 
 }  // namespace
+
+// ---- file input --------------------------------------------------------------------------------
+
+std::string read_file(const std::string& path) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (st.type() == fs::file_type::not_found) fail(path, "no such file");
+  if (ec) fail(path, "cannot access file (" + ec.message() + ")");
+  if (st.type() == fs::file_type::directory) fail(path, "cannot read: is a directory");
+
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (f == nullptr) fail(path, std::string("cannot read file (") + std::strerror(errno) + ")");
+  std::string data;
+  char buffer[1 << 16];
+  std::size_t got;
+  while ((got = std::fread(buffer, 1, sizeof(buffer), f)) > 0) data.append(buffer, got);
+  const bool error = std::ferror(f) != 0;
+  const int err = errno;
+  std::fclose(f);
+  if (error) fail(path, std::string("cannot read file (") + std::strerror(err) + ")");
+  return data;
+}
 
 Mesh read_mesh(const std::string& path, MeshReadReport* report, const MeshReadOptions& options) {
   const std::string format = lower_extension(path);

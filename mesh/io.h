@@ -43,6 +43,10 @@ struct MeshReadReport {
   int faces_dropped() const { return faces_with_few_vertices + faces_with_repeated_index; }
 };
 
+/// The whole file as bytes. Throws InputError naming the path: no such file, a directory, or
+/// cannot be read (with the system's reason).
+std::string read_file(const std::string& path);
+
 /// Reads a triangle mesh. Throws InputError on a missing/unreadable file, an unknown extension,
 /// a malformed file (bad header or body, counts that disagree with the body, non-numeric token),
 /// an index out of range or negative, a NaN/Inf coordinate (unless options.skip_invalid), or a

@@ -17,6 +17,7 @@
 #include "harness/case_store.h"
 #include "harness/results_table.h"
 #include "harness/runner.h"
+#include "mesh/io.h"
 #include "tests/harness/cli_runner.h"
 
 namespace curvbench {
