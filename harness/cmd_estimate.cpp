@@ -148,40 +148,40 @@ int run_estimate(const EstimateOptions& o, bool degree_given) {
   const Mesh mesh = read_input_mesh(o.mesh, o.skip_invalid, report);
   const double read_seconds = since(t_read);
   const auto t0 = Clock::now();
-  std::vector<VertexEstimate> res = estimate_mesh(mesh, *est);
+  const std::vector<VertexEstimate> res = estimate_mesh(mesh, *est);
   const double seconds = since(t0);
   int counts[4] = {0, 0, 0, 0};
   for (const VertexEstimate& e : res) ++counts[static_cast<int>(e.status)];
 
   const auto t_write = Clock::now();
 
-  const std::string tmp = temp_path(o.output);
-  try {
-    if (ext == "csv") {
+  if (ext == "csv") {
+    // Streamed to a temporary name, renamed into place (no partial file on failure).
+    const std::string tmp = temp_path(o.output);
+    try {
       write_csv(tmp, o.output, res, report.source_vertex);
-    } else {
-      std::vector<VertexProperty> props = ply_properties(res);
-      std::vector<VertexEstimate>().swap(res);  // peak memory: the properties hold it all now
-      std::vector<std::string> comments;
-      if (!report.source_vertex.empty()) {
-        props.push_back(
-            {"source_vertex",
-             std::vector<double>(report.source_vertex.begin(), report.source_vertex.end()), true});
-        comments.push_back("--skip-invalid: " + std::to_string(report.vertices_skipped) + " of " +
-                           std::to_string(report.vertices_in_file) +
-                           " input vertices (NaN/Inf coordinates) and " +
-                           std::to_string(report.faces_skipped) +
-                           " faces dropped; source_vertex = index in the input file");
-      }
-      write_mesh(tmp, mesh, props, comments);
+      std::error_code ec;
+      std::filesystem::rename(tmp, o.output, ec);
+      if (ec) throw InputError(o.output + ": cannot write (" + ec.message() + ")");
+    } catch (...) {
+      std::error_code ec;
+      std::filesystem::remove(tmp, ec);
+      throw;
     }
-    std::error_code ec;
-    std::filesystem::rename(tmp, o.output, ec);
-    if (ec) throw InputError(o.output + ": cannot write (" + ec.message() + ")");
-  } catch (...) {
-    std::error_code ec;
-    std::filesystem::remove(tmp, ec);
-    throw;
+  } else {
+    std::vector<VertexProperty> props = ply_properties(res);
+    std::vector<std::string> comments;
+    if (!report.source_vertex.empty()) {
+      props.push_back(
+          {"source_vertex",
+           std::vector<double>(report.source_vertex.begin(), report.source_vertex.end()), true});
+      comments.push_back("--skip-invalid: " + std::to_string(report.vertices_skipped) + " of " +
+                         std::to_string(report.vertices_in_file) +
+                         " input vertices (NaN/Inf coordinates) and " +
+                         std::to_string(report.faces_skipped) +
+                         " faces dropped; source_vertex = index in the input file");
+    }
+    write_mesh(o.output, mesh, props, comments);  // atomic itself (mesh/io.h)
   }
   const double write_seconds = since(t_write);
 

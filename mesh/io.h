@@ -79,7 +79,8 @@ void write_ply(const std::string& path, const Mesh& mesh,
                const std::vector<std::string>& comments = {});
 
 /// Writes OFF or PLY by extension (.off / .ply); throws UsageError for other extensions.
-/// `comments` go into the header of either format.
+/// `comments` go into the header of either format. Like write_off and write_ply, it writes to a
+/// temporary file in the target folder and renames it into place: a failure leaves no file.
 void write_mesh(const std::string& path, const Mesh& mesh,
                 const std::vector<VertexProperty>& properties = {},
                 const std::vector<std::string>& comments = {});
