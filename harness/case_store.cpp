@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
-#include <fstream>
 #include <set>
 
 #include "core/build_info.h"
@@ -65,20 +64,11 @@ std::string first_line(std::uint64_t inputs, std::uint64_t content) {
 
 // Hash of the running executable, or a per-process value (no reuse) if it cannot be read.
 std::string executable_hash() {
-  std::ifstream in("/proc/self/exe", std::ios::binary);
-  std::uint64_t h = kFnv1a64Offset;
-  char buf[1 << 16];
-  bool any = false;
-  while (in) {
-    in.read(buf, sizeof buf);
-    const auto n = in.gcount();
-    if (n <= 0) break;
-    h = fnv1a64(std::string_view(buf, static_cast<size_t>(n)), h);
-    any = true;
-  }
-  if (!any || in.bad())
+  try {
+    return hex64(fnv1a64(read_file("/proc/self/exe")));
+  } catch (const InputError&) {
     return "unreadable-" + std::to_string(::getpid()) + "-" + std::to_string(std::time(nullptr));
-  return hex64(h);
+  }
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include "core/text.h"
 #include "harness/metrics.h"
 #include "harness/results_table.h"
+#include "mesh/io.h"
 
 namespace curvbench {
 
@@ -189,13 +190,14 @@ class Data {
         csvs.push_back(entry.path());
     std::sort(csvs.begin(), csvs.end());
     for (const auto& p : csvs) {
-      std::ifstream in(p);
+      const std::string text = read_file(p.string());
+      std::istringstream in(text);
       std::string head;
       while (std::getline(in, head) && head.rfind('#', 0) == 0) {
       }
-      // The errors header starts like this; read_error_csv validates the whole header.
+      // The errors header starts like this; parse_error_csv validates the whole header.
       if (head.rfind("experiment,surface,family,level,", 0) != 0) continue;
-      auto rows = read_error_csv(p.string());
+      auto rows = parse_error_csv(text, p.string());
       rows_.insert(rows_.end(), rows.begin(), rows.end());
     }
     build_series();

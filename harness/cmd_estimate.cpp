@@ -3,12 +3,13 @@
 //
 // CSV: a header, then one row per vertex
 //   vertex,nx,ny,nz,k1,k2,H,K,d1x,d1y,d1z,d2x,d2y,d2z,degree,points,status
-// with "%.17g" numbers, "nan" for NaN and the status as a word (ok, degree_reduced, failed,
-// excluded). PLY: the mesh with the same per-vertex properties (status as its integer code
-// 0..3, plus the ring used). The file is written to a temporary name and renamed, so a failed
-// run never leaves a truncated OUT. A one-line summary goes to stderr, after a one-line warning
-// for each kind of element the reader dropped (faces with fewer than 3 vertices or a repeated
-// index; with --skip-invalid, vertices with NaN/Inf coordinates and their faces).
+// with the shortest text that reads back to each exact double (std::to_chars), "nan" for NaN and
+// the status as a word (ok, degree_reduced, failed, excluded). PLY: the mesh with the same
+// per-vertex properties (status as its integer code 0..3, plus the ring used). The file is written
+// to a temporary name and renamed, so a failed run never leaves a truncated OUT. A one-line summary
+// goes to stderr, after a one-line warning for each kind of element the reader dropped (faces with
+// fewer than 3 vertices or a repeated index; with --skip-invalid, vertices with NaN/Inf coordinates
+// and their faces).
 //
 // With --skip-invalid the output has only the remaining vertices: the CSV "vertex" column then
 // holds each vertex's index in the input file; the PLY gets a "source_vertex" property (the same
@@ -30,6 +31,7 @@
 #include "core/errors.h"
 #include "core/text.h"
 #include "harness/commands.h"
+#include "harness/results_table.h"
 #include "mesh/io.h"
 #include "methods/estimator.h"
 
@@ -48,14 +50,6 @@ struct EstimateOptions {
   bool skip_invalid = false;
   std::string output;
 };
-
-// A temporary sibling of `path` keeping its extension (write_mesh picks the format from it).
-std::string temp_path(const std::string& path) {
-  std::filesystem::path p(path);
-  const std::string name =
-      "." + p.stem().string() + ".tmp" + std::to_string(::getpid()) + p.extension().string();
-  return (p.parent_path() / name).string();
-}
 
 // Shortest text that reads back to exactly x (std::to_chars; about 10x faster than "%.17g").
 void put_double(std::FILE* f, double x) {

@@ -91,7 +91,8 @@ CsvTable parse_csv_table(const std::string& text, const std::string& name);
 void write_file_atomic(const std::string& path, const std::string& content);
 
 /// The temporary name under which `path` is written before the rename: "<path>.tmp.<pid>".
-/// Every output of curvbench (CSVs, Markdown, plots) goes through such a name.
+/// The harness's outputs (CSVs, Markdown, plots, the estimate CSV) go through such a name; mesh
+/// files go through write_mesh's own temporary file (mesh/io.h).
 std::string temp_path(const std::string& path);
 
 /// Removes the temporary files "<name>.tmp.<pid>" under `directory` (recursively) left behind

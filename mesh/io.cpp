@@ -224,16 +224,25 @@ struct SoupCounts {
 /// refused: the vertex (to be dropped with its faces) and the token's bytes in the text, which
 /// read_mesh overwrites with "0" before CGAL reads it (CGAL's stream extraction cannot parse
 /// "nan" or "inf" and would fail the whole file).
+// (offset, length) of a stretch of the file text.
+using TextSpan = std::pair<std::size_t, std::size_t>;
+
+// The span from the start of token `first` to the end of token `last` (views into text).
+TextSpan token_span(std::string_view text, std::string_view first, std::string_view last) {
+  const auto begin = static_cast<std::size_t>(first.data() - text.data());
+  return {begin, static_cast<std::size_t>(last.data() + last.size() - text.data()) - begin};
+}
+
 struct NonFinite {
   bool skip_invalid = false;
-  std::vector<unsigned long long> vertices;                // increasing, no repeats
-  std::vector<std::pair<std::size_t, std::size_t>> spans;  // (offset, length) in the text
+  std::vector<unsigned long long> vertices;  // increasing, no repeats
+  std::vector<TextSpan> spans;               // the tokens in the text
 
   /// Records vertex `v`'s coordinate `token` (a view into `text`); false if not skipping.
   bool skip(std::string_view text, std::string_view token, unsigned long long v) {
     if (!skip_invalid) return false;
     if (vertices.empty() || vertices.back() != v) vertices.push_back(v);
-    spans.emplace_back(static_cast<std::size_t>(token.data() - text.data()), token.size());
+    spans.push_back(token_span(text, token, token));
     return true;
   }
 };
@@ -298,15 +307,6 @@ OffLayout parse_off_keyword(const std::string& path, std::size_t line, std::stri
         path, line,
         "bad OFF header: nOFF (arbitrary dimension, " + quote(keyword) + ") is not supported");
   return layout;
-}
-
-// (offset, length) of a stretch of the file text.
-using TextSpan = std::pair<std::size_t, std::size_t>;
-
-// The span from the start of token `first` to the end of token `last` (views into text).
-TextSpan token_span(std::string_view text, std::string_view first, std::string_view last) {
-  const auto begin = static_cast<std::size_t>(first.data() - text.data());
-  return {begin, static_cast<std::size_t>(last.data() + last.size() - text.data()) - begin};
 }
 
 SoupCounts check_off(const std::string& path, std::string_view text, NonFinite& nonfinite,
