@@ -1,7 +1,8 @@
 // Mesh file input and output.
 //
-// Reading: OFF, OBJ and PLY (ASCII and binary), chosen by extension (case-insensitive), through
-// CGAL's polygon-soup readers. Polygons with more than three vertices are fan-triangulated;
+// Reading: OFF, OBJ and PLY (ASCII and binary), chosen by extension (case-insensitive), one
+// reader per format (mesh/read_off.cpp, read_obj.cpp, read_ply.cpp), each a single validating
+// pass that builds the polygon soup. Polygons with more than three vertices are fan-triangulated;
 // polygons with fewer than three vertices or a repeated vertex index are dropped and counted.
 // Writing: OFF (full double precision) and PLY (binary little-endian) with optional per-vertex
 // properties (normal, curvatures, directions, ...) for MeshLab / ParaView.
