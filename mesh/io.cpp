@@ -1,6 +1,6 @@
 // Mesh file input and output (contract in io.h).
 //
-// Reading: read_mesh reads the whole file into memory, picks the reader by extension
+// Reading: read_mesh maps the whole file into memory (or reads it), picks the reader by extension
 // (read_off.cpp, read_obj.cpp, read_ply.cpp: one validating pass each, which builds the polygon
 // soup as it goes and reports the first problem with its line or element number; see
 // read_soup.h), frees the file's bytes, and turns the soup into a Mesh here (soup_to_mesh:
@@ -12,6 +12,7 @@
 #include "mesh/io.h"
 
 #include <fcntl.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -391,6 +392,44 @@ void check_properties(const Mesh& mesh, const std::vector<VertexProperty>& prope
   }
 }
 
+/// The bytes of a file for a reader: a regular file is mapped read-only into memory (no copy,
+/// no zero-filled buffer), anything else (a pipe, an empty file, a failed mapping) is read by
+/// read_file. (A file truncated by another process while it is mapped would raise SIGBUS; the
+/// readers never write to it.)
+class FileBytes {
+ public:
+  explicit FileBytes(const std::string& path) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    struct stat info;
+    if (fd >= 0 && ::fstat(fd, &info) == 0 && S_ISREG(info.st_mode) && info.st_size > 0) {
+      const auto size = static_cast<std::size_t>(info.st_size);
+      void* p = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+      if (p != MAP_FAILED) {
+        ::madvise(p, size, MADV_SEQUENTIAL);
+        map_ = p;
+        size_ = size;
+      }
+    }
+    if (fd >= 0) ::close(fd);
+    if (map_ == nullptr) text_ = read_file(path);  // and its precise errors
+  }
+  FileBytes(const FileBytes&) = delete;
+  FileBytes& operator=(const FileBytes&) = delete;
+  ~FileBytes() {
+    if (map_ != nullptr) ::munmap(map_, size_);
+  }
+
+  std::string_view bytes() const {
+    return map_ != nullptr ? std::string_view(static_cast<const char*>(map_), size_)
+                           : std::string_view(text_);
+  }
+
+ private:
+  void* map_ = nullptr;
+  std::size_t size_ = 0;
+  std::string text_;
+};
+
 }  // namespace
 
 // ---- file input --------------------------------------------------------------------------------
@@ -431,7 +470,8 @@ Mesh read_mesh(const std::string& path, MeshReadReport* report, const MeshReadOp
 
   Soup soup;
   {
-    const std::string text = read_file(path);
+    const FileBytes file(path);
+    const std::string_view text = file.bytes();
     if (format == "off")
       soup = read_off(path, text, options.skip_invalid);
     else if (format == "obj")

@@ -12,9 +12,9 @@ namespace curvbench {
 namespace {
 
 struct HalfEdge {
-  std::uint64_t key;  // (min << 32) | max
+  int hi;  // the larger vertex of the edge (the smaller one is known)
   int face;
-  int k;
+  int k;         // the edge runs from the face's vertex k to vertex k + 1
   bool forward;  // true if the face traverses min -> max
 };
 
@@ -68,45 +68,56 @@ Mesh::Mesh(VertexMatrix vertices, FaceMatrix faces, const std::string& source)
   for (int v = 0; v < n; ++v)
     if (vf_offsets_[v + 1] == vf_offsets_[v]) ++num_isolated_vertices_;
 
-  // Face -> face across each edge, from half-edges grouped by undirected edge.
-  std::vector<HalfEdge> he;
-  he.reserve(static_cast<size_t>(3) * m);
-  for (int f = 0; f < m; ++f) {
-    for (int k = 0; k < 3; ++k) {
-      const auto a = static_cast<std::uint64_t>(F_(f, k));
-      const auto b = static_cast<std::uint64_t>(F_(f, (k + 1) % 3));
-      const std::uint64_t lo = std::min(a, b), hi = std::max(a, b);
-      he.push_back({(lo << 32) | hi, f, k, a < b});
-    }
-  }
-  std::sort(he.begin(), he.end(), [](const HalfEdge& x, const HalfEdge& y) {
-    return x.key != y.key ? x.key < y.key : (x.face != y.face ? x.face < y.face : x.k < y.k);
-  });
-
+  // Face -> face across each edge, from the half-edges grouped by undirected edge {lo, hi} in
+  // increasing (lo, hi) order: the half-edges of vertex lo's edges are among its faces' (vf_),
+  // gathered per vertex and sorted by (hi, face, k). No mesh-sized temporary.
   ff_.assign(static_cast<size_t>(3) * m, kBoundary);
   boundary_vertex_.assign(n, 0);
   num_edges_ = num_boundary_edges_ = num_nonmanifold_edges_ = num_inconsistent_edges_ = 0;
   double total_length = 0.0;
-  for (size_t i = 0; i < he.size();) {
-    size_t j = i;
-    while (j < he.size() && he[j].key == he[i].key) ++j;
-    const size_t count = j - i;
-    ++num_edges_;
-    const int a = static_cast<int>(he[i].key >> 32);
-    const int b = static_cast<int>(he[i].key & 0xffffffffu);
-    total_length += (V_.row(a) - V_.row(b)).norm();
-    if (count == 1) {
-      ++num_boundary_edges_;
-      boundary_vertex_[a] = boundary_vertex_[b] = 1;
-    } else if (count == 2) {
-      ff_[3 * he[i].face + he[i].k] = he[i + 1].face;
-      ff_[3 * he[i + 1].face + he[i + 1].k] = he[i].face;
-      if (he[i].forward == he[i + 1].forward) ++num_inconsistent_edges_;
-    } else {
-      ++num_nonmanifold_edges_;
-      for (size_t h = i; h < j; ++h) ff_[3 * he[h].face + he[h].k] = kNonManifold;
+  std::vector<HalfEdge> he;  // the half-edges whose smaller vertex is the current one
+  for (int lo = 0; lo < n; ++lo) {
+    he.clear();
+    for (int i = vf_offsets_[lo]; i < vf_offsets_[lo + 1]; ++i) {
+      const int f = vf_faces_[i];
+      for (int k = 0; k < 3; ++k) {  // the face's edges k (from vertex k to k + 1) at lo
+        const int a = F_(f, k), b = F_(f, (k + 1) % 3);
+        if (std::min(a, b) == lo) he.push_back({std::max(a, b), f, k, a < b});
+      }
     }
-    i = j;
+    // Faces come in increasing order (vf_), so a stable sort by hi gives (hi, face, k): an
+    // insertion sort for the usual handful.
+    const auto by_hi = [](const HalfEdge& x, const HalfEdge& y) { return x.hi < y.hi; };
+    if (he.size() > 32) {
+      std::stable_sort(he.begin(), he.end(), by_hi);
+    } else {
+      for (size_t i = 1; i < he.size(); ++i) {
+        const HalfEdge x = he[i];
+        size_t j = i;
+        for (; j > 0 && by_hi(x, he[j - 1]); --j) he[j] = he[j - 1];
+        he[j] = x;
+      }
+    }
+    for (size_t i = 0; i < he.size();) {
+      size_t j = i;
+      while (j < he.size() && he[j].hi == he[i].hi) ++j;
+      const size_t count = j - i;
+      ++num_edges_;
+      const int hi = he[i].hi;
+      total_length += (V_.row(lo) - V_.row(hi)).norm();
+      if (count == 1) {
+        ++num_boundary_edges_;
+        boundary_vertex_[lo] = boundary_vertex_[hi] = 1;
+      } else if (count == 2) {
+        ff_[3 * he[i].face + he[i].k] = he[i + 1].face;
+        ff_[3 * he[i + 1].face + he[i + 1].k] = he[i].face;
+        if (he[i].forward == he[i + 1].forward) ++num_inconsistent_edges_;
+      } else {
+        ++num_nonmanifold_edges_;
+        for (size_t h = i; h < j; ++h) ff_[3 * he[h].face + he[h].k] = kNonManifold;
+      }
+      i = j;
+    }
   }
   num_boundary_vertices_ =
       static_cast<int>(std::count(boundary_vertex_.begin(), boundary_vertex_.end(), 1));
