@@ -5,7 +5,9 @@
 // throws InputError. A crash, a sanitizer report, a timeout, an out-of-memory, any other
 // exception, or a returned mesh that breaks the Mesh invariants (index out of range, repeated
 // vertex in a face, non-finite coordinate, report counts that disagree with the mesh) is a
-// finding. Run through `make fuzz` (fuzz/run.sh).
+// finding, and so is an accepted file that CGAL's reader (the differential oracle,
+// tests/mesh/cgal_oracle.h) refuses or reads to another polygon soup. Run through `make fuzz`
+// (fuzz/run.sh).
 #include <unistd.h>
 
 #include <cmath>
@@ -19,6 +21,7 @@
 
 #include "core/errors.h"
 #include "mesh/io.h"
+#include "tests/mesh/cgal_oracle.h"
 
 #ifndef CURVBENCH_FUZZ_FORMAT
 #error "CURVBENCH_FUZZ_FORMAT (off, obj or ply) must be defined"
@@ -80,6 +83,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     const curvbench::Mesh mesh = curvbench::read_mesh(path, &report);
     check_invariants(mesh, report);
+    // Differential: CGAL's reader must read an accepted file to the same soup (cgal_oracle.h).
+    const std::string difference = curvbench::oracle::differential(
+        CURVBENCH_FUZZ_FORMAT, std::string(reinterpret_cast<const char*>(data), size));
+    if (!difference.empty()) finding("CGAL's reader disagrees: " + difference);
   } catch (const curvbench::InputError&) {
     // expected for malformed input
   } catch (const std::exception& e) {
