@@ -55,37 +55,6 @@ std::string format_double(double x) {
   return buf;
 }
 
-std::string temp_path(const std::string& path) {
-  return path + ".tmp." + std::to_string(::getpid());
-}
-
-void write_file_atomic(const std::string& path, const std::string& content) {
-  namespace fs = std::filesystem;
-  const fs::path target(path);
-  if (target.has_parent_path()) {
-    std::error_code ec;
-    fs::create_directories(target.parent_path(), ec);
-  }
-  const std::string tmp = temp_path(path);
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    if (!out) throw InputError(path + ": cannot write (" + tmp + ")");
-    out << content;
-    out.flush();
-    if (!out) {
-      std::error_code ec;
-      fs::remove(tmp, ec);
-      throw InputError(path + ": write failed");
-    }
-  }
-  std::error_code ec;
-  fs::rename(tmp, target, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    throw InputError(path + ": cannot rename into place");
-  }
-}
-
 int remove_stale_temp_files(const std::string& directory) {
   namespace fs = std::filesystem;
   std::error_code ec;

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "core/atomic_file.h"
+
 namespace curvbench {
 
 struct ErrorRow {
@@ -85,15 +87,7 @@ CsvTable read_csv_table(const std::string& path);
 /// The same from the file's text; `name` names it in error messages.
 CsvTable parse_csv_table(const std::string& text, const std::string& name);
 
-/// Writes `content` to `path` atomically: to temp_path(path) in the same folder, then renamed
-/// into place, so readers (and an interrupted or killed run) never see a truncated file. Creates
-/// the folder if needed. Throws InputError naming the path on failure.
-void write_file_atomic(const std::string& path, const std::string& content);
-
-/// The temporary name under which `path` is written before the rename: "<path>.tmp.<pid>".
-/// The harness's outputs (CSVs, Markdown, plots, the estimate CSV) go through such a name; mesh
-/// files go through write_mesh's own temporary file (mesh/io.h).
-std::string temp_path(const std::string& path);
+// write_file_atomic and temp_path (the atomic writer for every output): core/atomic_file.h.
 
 /// Removes the temporary files "<name>.tmp.<pid>" under `directory` (recursively) left behind
 /// by a process that no longer runs (e.g. killed with SIGKILL while writing); files of running

@@ -7,8 +7,8 @@
 // defects dropped and counted, --skip-invalid, fan triangulation). CGAL's readers are not used:
 // they serve as a differential oracle in tests/mesh/test_io_oracle.cpp and in fuzz/.
 //
-// Writing goes to a temporary file in the target directory that is renamed into place, so a
-// failure never leaves a partial file behind.
+// Writing goes through the project's atomic file writer (core/atomic_file.h): a temporary file
+// in the target directory renamed into place, so a failure never leaves a partial file behind.
 #include "mesh/io.h"
 
 #include <fcntl.h>
@@ -17,7 +17,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <bit>
 #include <cctype>
 #include <cerrno>
@@ -34,6 +33,7 @@
 #include <system_error>
 #include <utility>
 
+#include "core/atomic_file.h"
 #include "core/errors.h"
 #include "core/text.h"
 #include "mesh/read_soup.h"
@@ -277,81 +277,6 @@ Mesh soup_to_mesh(const std::string& path, const std::string& format, Soup soup,
 }
 
 // ---- file output -------------------------------------------------------------------------------
-
-/// A file written under a temporary name in the target's directory and renamed into place by
-/// commit(); destroyed uncommitted, it removes the temporary file.
-class AtomicFile {
- public:
-  explicit AtomicFile(const std::string& path) : path_(path) {
-    static std::atomic<unsigned> counter{0};
-    const fs::path target(path);
-    if (target.filename().empty()) fail(path, "cannot write: not a file name");
-    std::error_code ec;
-    if (fs::is_directory(target, ec)) fail(path, "cannot write: is a directory");
-    const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-    tmp_ = (dir / ("." + target.filename().string() + ".tmp." + std::to_string(::getpid()) + "." +
-                   std::to_string(counter++)))
-               .string();
-    fd_ = ::open(tmp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd_ < 0) {
-      const int err = errno;
-      if (err == ENOENT || err == ENOTDIR)
-        fail(path, "cannot write: directory '" + dir.string() + "' does not exist");
-      if (err == EACCES || err == EPERM || err == EROFS)
-        fail(path, "cannot write: directory '" + dir.string() + "' is not writable (" +
-                       std::strerror(err) + ")");
-      fail(path, std::string("cannot write (") + std::strerror(err) + ")");
-    }
-  }
-  AtomicFile(const AtomicFile&) = delete;
-  AtomicFile& operator=(const AtomicFile&) = delete;
-
-  ~AtomicFile() {
-    if (fd_ >= 0) ::close(fd_);
-    if (!committed_) ::unlink(tmp_.c_str());
-  }
-
-  /// Appends to the buffer; flushes it to the file beyond 1 MiB.
-  std::string& buffer() {
-    if (buffer_.size() > (1u << 20)) flush();
-    return buffer_;
-  }
-
-  void commit() {
-    flush();
-    const int fd = fd_;
-    fd_ = -1;
-    if (::close(fd) != 0) fail_errno("cannot write");
-    if (std::rename(tmp_.c_str(), path_.c_str()) != 0) fail_errno("cannot rename into place");
-    committed_ = true;
-  }
-
- private:
-  [[noreturn]] void fail_errno(const char* what) {
-    fail(path_, std::string(what) + " (" + std::strerror(errno) + ")");
-  }
-
-  void flush() {
-    const char* p = buffer_.data();
-    std::size_t left = buffer_.size();
-    while (left > 0) {
-      const ssize_t w = ::write(fd_, p, left);
-      if (w < 0) {
-        if (errno == EINTR) continue;
-        fail_errno("cannot write");
-      }
-      p += w;
-      left -= static_cast<std::size_t>(w);
-    }
-    buffer_.clear();
-  }
-
-  std::string path_;
-  std::string tmp_;
-  std::string buffer_;
-  int fd_ = -1;
-  bool committed_ = false;
-};
 
 /// Appends `v` as "%.17g" would print it in the C locale.
 void append_double(std::string& out, double v) {
