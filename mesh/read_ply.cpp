@@ -26,6 +26,7 @@
 #include <limits>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "mesh/read_soup.h"
@@ -428,8 +429,9 @@ Soup read_ply(const std::string& path, std::string_view text, bool skip_invalid)
                                       xyz[1]->type->type == PlyType::kDouble &&
                                       xyz[2]->type->type == PlyType::kDouble;
           if (packed_doubles) {  // the layout curvbench writes: copy the block as it is
-            soup.xyz.resize(3 * e.count);
-            if (e.count > 0) std::memcpy(soup.xyz.data(), at, 24 * e.count);
+            std::vector<double> block(3 * e.count);
+            if (e.count > 0) std::memcpy(block.data(), at, 24 * e.count);
+            soup.xyz = std::move(block);
           } else {
             for (unsigned long long j = 0; j < e.count; ++j)
               for (int c = 0; c < 3; ++c)
