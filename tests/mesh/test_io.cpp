@@ -555,7 +555,7 @@ TEST_F(MeshIo, MalformedPlyFiles) {
   const std::string list = "property list uchar int vertex_indices\n";
   const std::string verts = "0 0 0\n1 0 0\n0 1 0\n";
 
-  // Binary PLY with a NaN coordinate (the pre-read does not decode coordinates; Mesh rejects it).
+  // Binary PLY with a NaN coordinate (decoded by the reader, refused when the mesh is built).
   Bytes nan;
   nan.s = "ply\nformat binary_little_endian 1.0\nelement vertex 3\n" + xyz + "element face 1\n" +
           list + "end_header\n";
