@@ -3,6 +3,9 @@
 # `make bench` runs the Google Benchmark suites and writes results/table5_timing.{csv,md}.
 # `make test-sanitize` builds the whole test suite with AddressSanitizer and
 # UndefinedBehaviorSanitizer in build-sanitize/ and runs it (CI runs it after `make test`).
+# `make install PREFIX=/opt/curvbench` installs the library (shared and static), the public header
+# <curvbench/curvbench.h>, the CMake package (find_package(curvbench CONFIG)), the curvbench
+# command and the Python module (PREFIX/lib/python3.X/site-packages).
 # `make fuzz` builds a libFuzzer target per mesh reader (OFF, OBJ, PLY) with clang in build-fuzz/
 # and runs each for FUZZ_SECONDS (default 60), failing on any crash, sanitizer report, timeout or
 # out-of-memory (fuzz/run.sh; seeds in tests/corpus/).
@@ -17,11 +20,12 @@ SANITIZE_BUILD ?= build-sanitize
 SANITIZE_CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g"
 SANITIZE_ENV = ASAN_OPTIONS=detect_leaks=1:check_initialization_order=1:strict_init_order=1 \
 	UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+PREFIX ?= /usr/local
 FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 60
 FUZZ_CXX ?= clang++
 
-.PHONY: all deps configure build test experiments bench clean format test-sanitize fuzz
+.PHONY: all deps configure build test experiments bench clean format test-sanitize fuzz install
 
 all: build
 
@@ -36,6 +40,9 @@ build: configure
 
 test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+install: build
+	@cmake --install $(BUILD) --prefix $(PREFIX)
 
 experiments: build
 	@bash tools/experiments.sh $(BUILD) $(RUN_ARGS)

@@ -1,23 +1,5 @@
-// Typed exceptions. The command line maps them to exit codes: InputError and UsageError -> 2,
-// anything else -> 1 (internal failure).
+// The typed exceptions live in the public header set (include/curvbench/errors.h), so that the
+// library throws exactly the types its users catch.
 #pragma once
 
-#include <stdexcept>
-#include <string>
-
-namespace curvbench {
-
-/// Bad input data: unreadable or malformed file, invalid mesh, NaN coordinate, ...
-/// what() is one line naming the file (when there is one) and the problem.
-class InputError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-/// Bad usage: unknown method, invalid degree, inconsistent options.
-class UsageError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-}  // namespace curvbench
+#include "curvbench/errors.h"

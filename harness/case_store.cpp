@@ -117,14 +117,16 @@ std::uint64_t case_hash(const RunCase& c, const std::string& version) {
 CaseStore::CaseStore(std::string directory, std::string version)
     : directory_(std::move(directory)), version_(std::move(version)) {}
 
-std::string CaseStore::path(const RunCase& c) const {
+std::string case_id(const RunCase& c) {
   const ExperimentMethod& m = *c.method;
   const std::string method = file_safe(m.label.empty() ? m.spec : m.label);
   const std::string options = hex64(fnv1a64(method_inputs(m))).substr(0, 8);
-  return (fs::path(directory_) / file_safe(c.experiment->name) /
-          (file_safe(c.mesh->family) + "_L" + std::to_string(c.level) + "_" + method + "_" +
-           options + ".csv"))
-      .string();
+  return file_safe(c.experiment->name) + "/" + file_safe(c.mesh->family) + "_L" +
+         std::to_string(c.level) + "_" + method + "_" + options;
+}
+
+std::string CaseStore::path(const RunCase& c) const {
+  return (fs::path(directory_) / (case_id(c) + ".csv")).string();
 }
 
 std::optional<std::vector<ErrorRow>> CaseStore::load(const RunCase& c) const {

@@ -48,6 +48,10 @@ const std::string& code_version();
 /// captions and the thread count do not change the rows and are not included.
 std::string case_inputs(const RunCase& c);
 
+/// The stable id of case c, "<experiment>/<family>_L<level>_<method>_<8 hex>": its file in the
+/// store without ".csv" (`curvbench run --list-cases` prints these).
+std::string case_id(const RunCase& c);
+
 /// fnv1a64(case_inputs(c) + code version).
 std::uint64_t case_hash(const RunCase& c, const std::string& version);
 

@@ -1,7 +1,9 @@
 #include "harness/runner.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <map>
 #include <optional>
 #include <set>
 
@@ -25,7 +27,50 @@ double case_work(const RunCase& c) {
   return static_cast<double>(1u << (2 * c.level));
 }
 
+// Seconds per vertex relative to LHF-2 on the torus, level 4, one thread (results/
+// table5_timing.md, rounded): per method at degree 2, and the factor of each degree.
+double method_cost(const std::string& name, int degree) {
+  static const std::map<std::string, double> base = {
+      {"lhf", 1.0}, {"lop", 1.15}, {"xu", 2.4}, {"lscm", 22.0}, {"lscm-fast", 2.9}, {"jet", 11.4}};
+  static const double per_degree[] = {0.5, 0.6, 1.0, 1.8, 3.7, 7.0, 12.0};
+  const auto it = base.find(name);
+  const double b = it == base.end() ? 1.0 : it->second;
+  return b * per_degree[std::clamp(degree, 0, 6)];
+}
+
 }  // namespace
+
+double case_cost(const RunCase& c) {
+  double method = 1.0;
+  try {
+    const auto est = make_estimator(c.method->spec, EstimatorOptions{});
+    method = method_cost(est->name(), est->options().degree);
+  } catch (const UsageError&) {
+    // not a built-in estimator: cost 1
+  }
+  return case_work(c) * method;
+}
+
+std::vector<size_t> shard_cases(const std::vector<RunCase>& cases, int k, int n) {
+  if (n < 1 || k < 1 || k > n)
+    throw UsageError("--shard " + std::to_string(k) + "/" + std::to_string(n) +
+                     ": need 1 <= K <= N");
+  std::vector<double> cost(cases.size());
+  for (size_t i = 0; i < cases.size(); ++i) cost[i] = case_cost(cases[i]);
+  std::vector<size_t> order(cases.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return cost[a] > cost[b]; });
+  std::vector<double> load(static_cast<size_t>(n), 0.0);
+  std::vector<size_t> mine;
+  for (size_t i : order) {
+    const size_t s = static_cast<size_t>(std::min_element(load.begin(), load.end()) - load.begin());
+    load[s] += cost[i];
+    if (s == static_cast<size_t>(k - 1)) mine.push_back(i);
+  }
+  std::sort(mine.begin(), mine.end());
+  return mine;
+}
 
 std::vector<std::pair<Quantity, Norm>> panel_measures(const Experiment& e) {
   std::vector<std::pair<Quantity, Norm>> out;
@@ -124,24 +169,34 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads) 
 RunSummary run_experiments(const std::vector<Experiment>& experiments, const RunOptions& options) {
   using clock = std::chrono::steady_clock;
   const auto cases = expand_cases(experiments);
+  const bool sharded = options.shard_count > 1;
+  // The cases this run does (all of them unless sharded), in case order.
+  std::vector<size_t> todo;
+  if (sharded) {
+    todo = shard_cases(cases, options.shard, options.shard_count);
+  } else {
+    todo.resize(cases.size());
+    for (size_t i = 0; i < cases.size(); ++i) todo[i] = i;
+  }
   std::optional<CaseStore> store;
   if (!options.store_dir.empty()) store.emplace(options.store_dir);
   // Stored rows of the unchanged cases, read up front so the ETA covers only the work left.
   std::vector<std::optional<std::vector<ErrorRow>>> stored(cases.size());
   if (store && !options.force)
-    for (size_t i = 0; i < cases.size(); ++i) stored[i] = store->load(cases[i]);
+    for (size_t i : todo) stored[i] = store->load(cases[i]);
   // ETA from vertices: sizes are known from the levels only after generation, so weight each
   // case by 4^level (every family's vertex count grows about 4x per level).
   double total_work = 0.0, done_work = 0.0;
-  for (size_t i = 0; i < cases.size(); ++i)
+  for (size_t i : todo)
     if (!stored[i]) total_work += case_work(cases[i]);
   MeshCache cache;
   RunSummary summary;
-  summary.total = static_cast<int>(cases.size());
+  summary.total = static_cast<int>(todo.size());
   const auto start = clock::now();
   RunProgress p;
   p.total = summary.total;
-  for (size_t i = 0; i < cases.size(); ++i) {
+  for (size_t t = 0; t < todo.size(); ++t) {
+    const size_t i = todo[t];
     const RunCase& c = cases[i];
     const auto t0 = clock::now();
     std::vector<ErrorRow> case_rows;
@@ -166,18 +221,18 @@ RunSummary run_experiments(const std::vector<Experiment>& experiments, const Run
     summary.rows.insert(summary.rows.end(), case_rows.begin(), case_rows.end());
     const bool last_of_experiment =
         i + 1 == cases.size() || cases[i + 1].experiment != c.experiment;
-    if (last_of_experiment && options.experiment_done) {
+    if (!sharded && last_of_experiment && options.experiment_done) {
       std::vector<ErrorRow> mine;
       for (const auto& r : summary.rows)
         if (r.experiment == c.experiment->name) mine.push_back(r);
       options.experiment_done(*c.experiment, mine);
     }
-    if (i + 1 < cases.size() && options.stop && options.stop()) {
+    if (t + 1 < todo.size() && options.stop && options.stop()) {
       summary.interrupted = true;
       return summary;
     }
   }
-  if (store) store->prune(cases);
+  if (store && !sharded) store->prune(cases);
   return summary;
 }
 

@@ -62,6 +62,10 @@ struct RunOptions {
   bool force = false;  ///< recompute every case even if stored (the store is rewritten)
   /// Polled after each case; true = stop there (the finished cases are stored).
   std::function<bool()> stop;
+  /// Run only shard `shard` (1-based) of `shard_count` (shard_cases). A sharded run stores its
+  /// cases but calls no experiment_done and prunes nothing (the other shards' cases are not its).
+  int shard = 1;
+  int shard_count = 1;
 };
 
 struct RunSummary {
@@ -80,6 +84,16 @@ std::vector<std::pair<Quantity, Norm>> panel_measures(const Experiment& e);
 
 /// Runs one case and returns its rows: every panel's (quantity, norm) on the case's vertex set.
 std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads);
+
+/// Expected relative cost of a case for balancing shards: 4^level (the vertex count grows about
+/// 4x per level) times the method's relative cost per vertex (LHF-2 = 1; from the Table 5
+/// timings of `make bench`, rounded; methods not in that table count 1).
+double case_cost(const RunCase& c);
+
+/// Indices (increasing) of the cases of shard k (1-based) of n: a deterministic partition
+/// balanced by case_cost (largest first, each to the least loaded shard, ties to the lower
+/// index). Throws UsageError unless 1 <= k <= n.
+std::vector<size_t> shard_cases(const std::vector<RunCase>& cases, int k, int n);
 
 /// Runs all cases of the experiments (taking the unchanged ones from the store, if any),
 /// reporting progress, until done or options.stop() says to stop.

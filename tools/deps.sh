@@ -14,6 +14,7 @@ packages=(
   libgtest-dev libgmock-dev  # GoogleTest
   libbenchmark-dev         # Google Benchmark
   libcli11-dev             # command line
+  pybind11-dev python3-dev python3-numpy python3-pytest  # Python module (for /usr/bin/python3)
   gnuplot-nox              # convergence plots (PNG and SVG)
   time                     # /usr/bin/time -v: peak memory in make bench
 )

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "cli/commands.h"
 #include "core/errors.h"
 #include "core/text.h"
-#include "harness/commands.h"
 #include "mesh/io.h"
 #include "meshgen/generate.h"
 #include "meshgen/torus_isosurface.h"

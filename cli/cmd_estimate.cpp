@@ -1,11 +1,8 @@
 // `curvbench estimate MESH --method M --degree D [--rings R] [--threads N] [--noisy] [--timing]
 //  [--skip-invalid] --output OUT.csv|OUT.ply`: per-vertex normals and curvatures of one estimator.
 //
-// CSV: a header, then one row per vertex
-//   vertex,nx,ny,nz,k1,k2,H,K,d1x,d1y,d1z,d2x,d2y,d2z,degree,points,status
-// with the shortest text that reads back to each exact double (std::to_chars), "nan" for NaN and
-// the status as a word (ok, degree_reduced, failed, excluded). PLY: the mesh with the same
-// per-vertex properties (status as its integer code 0..3, plus the ring used). The file is written
+// CSV: a header, then one row per vertex; PLY: the mesh with per-vertex properties; both from
+// the column table of harness/estimate_columns.h. The file is written
 // to a temporary name and renamed, so a failed run never leaves a truncated OUT. A one-line summary
 // goes to stderr, after a one-line warning for each kind of element the reader dropped (faces with
 // fewer than 3 vertices or a repeated index; with --skip-invalid, vertices with NaN/Inf coordinates
@@ -15,23 +12,20 @@
 // holds each vertex's index in the input file; the PLY gets a "source_vertex" property (the same
 // index) and a header comment saying so.
 #include <algorithm>
-#include <array>
 #include <cctype>
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include <unistd.h>
 
+#include "cli/commands.h"
 #include "core/errors.h"
 #include "core/text.h"
-#include "harness/commands.h"
-#include "harness/results_table.h"
+#include "harness/estimate_columns.h"
 #include "mesh/io.h"
 #include "methods/estimator.h"
 
@@ -50,73 +44,6 @@ struct EstimateOptions {
   bool skip_invalid = false;
   std::string output;
 };
-
-// Shortest text that reads back to exactly x (std::to_chars; about 10x faster than "%.17g").
-void put_double(std::FILE* f, double x) {
-  if (std::isnan(x)) {
-    std::fputs("nan", f);
-    return;
-  }
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, x);
-  std::fwrite(buf, 1, static_cast<size_t>(r.ptr - buf), f);
-}
-
-// Writes to `path`; errors name `shown` (the user's output file).
-// `source`: the file index of each vertex (empty: the identity).
-void write_csv(const std::string& path, const std::string& shown,
-               const std::vector<VertexEstimate>& est, const std::vector<int>& source) {
-  std::FILE* f = std::fopen(path.c_str(), "w");
-  if (f == nullptr) throw InputError(shown + ": cannot open for writing");
-  std::fputs("vertex,nx,ny,nz,k1,k2,H,K,d1x,d1y,d1z,d2x,d2y,d2z,degree,points,status\n", f);
-  for (size_t v = 0; v < est.size(); ++v) {
-    const VertexEstimate& e = est[v];
-    const std::array<double, 13> vals = {
-        e.normal.x(), e.normal.y(), e.normal.z(), e.k1,     e.k2,     e.H,     e.K,
-        e.d1.x(),     e.d1.y(),     e.d1.z(),     e.d2.x(), e.d2.y(), e.d2.z()};
-    std::fprintf(f, "%zu", source.empty() ? v : static_cast<size_t>(source[v]));
-    for (double x : vals) {
-      std::fputc(',', f);
-      put_double(f, x);
-    }
-    std::fprintf(f, ",%d,%d,%s\n", e.degree, e.points, to_string(e.status));
-  }
-  const bool ok = std::ferror(f) == 0;
-  if (std::fclose(f) != 0 || !ok) throw InputError(shown + ": write failed");
-}
-
-std::vector<VertexProperty> ply_properties(const std::vector<VertexEstimate>& est) {
-  const char* names[] = {"nx",  "ny",  "nz",  "k1",  "k2",     "H",      "K",    "d1x",   "d1y",
-                         "d1z", "d2x", "d2y", "d2z", "degree", "points", "ring", "status"};
-  std::vector<VertexProperty> props;
-  for (const char* n : names) {
-    const std::string s = n;
-    props.push_back(
-        {s, std::vector<double>(est.size()), s == "degree" || s == "points" || s == "status"});
-  }
-  for (size_t v = 0; v < est.size(); ++v) {
-    const VertexEstimate& e = est[v];
-    const double vals[] = {e.normal.x(),
-                           e.normal.y(),
-                           e.normal.z(),
-                           e.k1,
-                           e.k2,
-                           e.H,
-                           e.K,
-                           e.d1.x(),
-                           e.d1.y(),
-                           e.d1.z(),
-                           e.d2.x(),
-                           e.d2.y(),
-                           e.d2.z(),
-                           static_cast<double>(e.degree),
-                           static_cast<double>(e.points),
-                           e.ring,
-                           static_cast<double>(static_cast<int>(e.status))};
-    for (size_t k = 0; k < props.size(); ++k) props[k].values[v] = vals[k];
-  }
-  return props;
-}
 
 int run_estimate(const EstimateOptions& o, bool degree_given) {
   const std::string ext = lower_extension(o.output);
@@ -150,20 +77,9 @@ int run_estimate(const EstimateOptions& o, bool degree_given) {
   const auto t_write = Clock::now();
 
   if (ext == "csv") {
-    // Streamed to a temporary name, renamed into place (no partial file on failure).
-    const std::string tmp = temp_path(o.output);
-    try {
-      write_csv(tmp, o.output, res, report.source_vertex);
-      std::error_code ec;
-      std::filesystem::rename(tmp, o.output, ec);
-      if (ec) throw InputError(o.output + ": cannot write (" + ec.message() + ")");
-    } catch (...) {
-      std::error_code ec;
-      std::filesystem::remove(tmp, ec);
-      throw;
-    }
+    write_estimate_csv_atomic(o.output, res, report.source_vertex);
   } else {
-    std::vector<VertexProperty> props = ply_properties(res);
+    std::vector<VertexProperty> props = estimate_ply_properties(res);
     std::vector<std::string> comments;
     if (!report.source_vertex.empty()) {
       props.push_back(

@@ -6,7 +6,7 @@
 #include <memory>
 #include <string>
 
-#include "harness/commands.h"
+#include "cli/commands.h"
 #include "mesh/io.h"
 #include "mesh/mesh_checks.h"
 

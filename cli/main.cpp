@@ -8,9 +8,9 @@
 #include <map>
 #include <string>
 
+#include "cli/commands.h"
 #include "core/build_info.h"
 #include "core/errors.h"
-#include "harness/commands.h"
 
 int main(int argc, char** argv) {
   using namespace curvbench;

@@ -1,5 +1,8 @@
 // `curvbench run`: runs declarative experiments (experiments/*.exp) and regenerates results/:
 // per-experiment error CSVs, rates.csv, table2.csv, table4.csv, REPORT.md, plots, CLAIMS.md.
+// The pipeline itself is the library's run_pipeline (harness/run_pipeline.h); this file parses
+// the options, handles signals and prints progress. Over a cluster: --list-cases, --shard K/N
+// into a shared --cache, then --report-only.
 //
 // Runs that lose nothing: every finished case is kept in <output>/.cache (case_store.h) and a
 // rerun recomputes only the missing or stale cases; every file is written under a temporary
@@ -16,14 +19,13 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
-#include "core/build_info.h"
+#include "cli/commands.h"
 #include "core/errors.h"
-#include "harness/claims.h"
-#include "harness/commands.h"
-#include "harness/report.h"
-#include "harness/runner.h"
+#include "core/text.h"
+#include "harness/run_pipeline.h"
 
 namespace curvbench::cli {
 
@@ -74,6 +76,9 @@ struct RunArgs {
   std::vector<std::string> experiments;
   bool all = false;
   bool list = false;
+  bool list_cases = false;
+  std::string shard;  ///< "K/N"
+  std::string cache;  ///< case store folder ("" = <output>/.cache)
   bool report_only = false;
   bool no_plots = false;
   bool force = false;
@@ -89,6 +94,22 @@ std::vector<Experiment> load_all(const std::string& dir) {
   return out;
 }
 
+// Parses "K/N" (1 <= K <= N).
+std::pair<int, int> parse_shard(const std::string& s) {
+  const std::string bad = "--shard " + s + ": expected K/N with 1 <= K <= N, e.g. 2/8";
+  const auto slash = s.find('/');
+  if (slash == std::string::npos) throw UsageError(bad);
+  long long k = 0, n = 0;
+  try {
+    k = parse_integer(s.substr(0, slash), "--shard");
+    n = parse_integer(s.substr(slash + 1), "--shard");
+  } catch (const InputError&) {
+    throw UsageError(bad);
+  }
+  if (n < 1 || k < 1 || k > n || n > 1000000) throw UsageError(bad);
+  return {static_cast<int>(k), static_cast<int>(n)};
+}
+
 }  // namespace
 
 Command add_run_command(CLI::App& app) {
@@ -101,8 +122,18 @@ Command add_run_command(CLI::App& app) {
                   "Experiment names (e.g. fig03-05) or .exp files");
   sub->add_flag("--all", args->all, "Run every experiment in the experiments folder");
   sub->add_flag("--list", args->list, "List the available experiments and exit");
+  sub->add_flag("--list-cases", args->list_cases,
+                "Print the id of every case (experiment/family_Llevel_method_hash) of the named "
+                "experiments (default: all; with --shard: of that shard), one per line, and exit");
+  sub->add_option("--shard", args->shard,
+                  "Run only shard K of N (K/N, 1 <= K <= N): a fixed partition of the cases "
+                  "balanced by expected cost; results go to the case store only");
+  sub->add_option("--cache", args->cache,
+                  "Case store folder (default <output>/.cache); may be on a shared filesystem");
   sub->add_flag("--report-only", args->report_only,
-                "Rebuild REPORT.md, plots and CLAIMS.md from the existing CSVs");
+                "Compute nothing: write the experiment CSVs from the case store, then rates, "
+                "REPORT.md, plots and CLAIMS.md; fails naming the missing cases if the store is "
+                "incomplete (an experiment with no stored case keeps its existing CSV)");
   sub->add_flag("--no-plots", args->no_plots, "Do not render plots");
   sub->add_flag("--force", args->force,
                 "Recompute every case instead of reusing the finished ones in <output>/.cache");
@@ -132,8 +163,10 @@ Command add_run_command(CLI::App& app) {
                     e.section.c_str(), e.source.c_str());
       return 0;
     }
+    const auto [shard, shard_count] =
+        args->shard.empty() ? std::pair<int, int>{1, 1} : parse_shard(args->shard);
     std::vector<Experiment> selected;
-    if (args->all || args->report_only) {
+    if (args->all || (args->experiments.empty() && (args->report_only || args->list_cases))) {
       selected = available;
     } else {
       if (args->experiments.empty())
@@ -156,99 +189,41 @@ Command add_run_command(CLI::App& app) {
         }
       }
     }
-    std::filesystem::create_directories(args->output);
+    if (args->list_cases) {
+      for (const auto& id : list_case_ids(selected, shard, shard_count))
+        std::printf("%s\n", id.c_str());
+      return 0;
+    }
+
+    PipelineOptions po;
+    po.experiments = selected;
+    po.available = available;
+    po.output = args->output;
+    po.store_dir = args->cache;
+    po.threads = args->threads;
+    po.table4_max = args->table4_max;
+    po.force = args->force;
+    po.plots = !args->no_plots;
+    po.report_only = args->report_only;
+    po.shard = shard;
+    po.shard_count = shard_count;
+    po.message = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
+    po.progress = [](const RunProgress& p) {
+      const RunCase& c = *p.current;
+      if (p.reused)
+        std::fprintf(stderr, "[%3d/%3d] %-9s %-20s L%d %-7s %7d verts  reused\n", p.done, p.total,
+                     c.experiment->name.c_str(), c.mesh->family.c_str(), c.level,
+                     c.method->spec.c_str(), p.vertices);
+      else
+        std::fprintf(stderr, "[%3d/%3d] %-9s %-20s L%d %-7s %7d verts %6.2fs  elapsed %s  ETA %s\n",
+                     p.done, p.total, c.experiment->name.c_str(), c.mesh->family.c_str(), c.level,
+                     c.method->spec.c_str(), p.vertices, p.case_seconds,
+                     duration(p.elapsed_seconds).c_str(), duration(p.eta_seconds).c_str());
+    };
+    po.stop = stop_requested;
     install_stop_handlers();
-    // Temporary files of an earlier run that was killed before it could rename them.
-    if (const int stale = remove_stale_temp_files(args->output); stale > 0)
-      std::fprintf(stderr, "[run] removed %d temporary files left by a killed run\n", stale);
-
-    if (!args->report_only) {
-      const auto cases = expand_cases(selected);
-      auto interrupted = [&](int done, int reused, int computed) {
-        std::fprintf(stderr,
-                     "[run] interrupted after %d of %zu cases (%d reused, %d computed); rerun to "
-                     "continue\n",
-                     done, cases.size(), reused, computed);
-        return stopped_exit_code();
-      };
-      std::fprintf(stderr, "[run] Table 2 (ring sizes)\n");
-      write_table2_csv(args->output + "/table2.csv");
-      if (stop_requested()) return interrupted(0, 0, 0);
-      std::fprintf(stderr, "[run] Table 4 (isosurface torus, n = 16..%d)\n", args->table4_max);
-      write_table4_csv(args->output + "/table4.csv", args->table4_max);
-      if (stop_requested()) return interrupted(0, 0, 0);
-
-      std::fprintf(stderr, "[run] %zu experiments, %zu cases (method x mesh level)\n",
-                   selected.size(), cases.size());
-      RunOptions ro;
-      ro.threads = args->threads;
-      ro.store_dir = (std::filesystem::path(args->output) / ".cache").string();
-      ro.force = args->force;
-      ro.stop = stop_requested;
-      ro.progress = [](const RunProgress& p) {
-        const RunCase& c = *p.current;
-        if (p.reused)
-          std::fprintf(stderr, "[%3d/%3d] %-9s %-20s L%d %-7s %7d verts  reused\n", p.done, p.total,
-                       c.experiment->name.c_str(), c.mesh->family.c_str(), c.level,
-                       c.method->spec.c_str(), p.vertices);
-        else
-          std::fprintf(stderr,
-                       "[%3d/%3d] %-9s %-20s L%d %-7s %7d verts %6.2fs  elapsed %s  ETA %s\n",
-                       p.done, p.total, c.experiment->name.c_str(), c.mesh->family.c_str(), c.level,
-                       c.method->spec.c_str(), p.vertices, p.case_seconds,
-                       duration(p.elapsed_seconds).c_str(), duration(p.eta_seconds).c_str());
-      };
-      // Each experiment's CSV lands as soon as its last case is done.
-      const std::string out_dir = args->output;
-      ro.experiment_done = [out_dir](const Experiment& e, const std::vector<ErrorRow>& rows) {
-        write_error_csv(out_dir + "/" + e.name + ".csv", rows);
-        std::fprintf(stderr, "[run] wrote %s/%s.csv\n", out_dir.c_str(), e.name.c_str());
-      };
-      const RunSummary done = run_experiments(selected, ro);
-      const int finished = done.reused + done.computed;
-      if (done.interrupted || stop_requested())
-        return interrupted(finished, done.reused, done.computed);
-      std::fprintf(stderr, "[run] reused %d of %d cases, computed %d\n", done.reused, done.total,
-                   done.computed);
-    }
-
-    // Rates over every experiment CSV present (all of them, not only the ones just run).
-    std::vector<ErrorRow> all_rows;
-    for (const auto& e : available) {
-      const std::string csv = args->output + "/" + e.name + ".csv";
-      if (std::filesystem::exists(csv)) {
-        auto rows = read_error_csv(csv);
-        all_rows.insert(all_rows.end(), rows.begin(), rows.end());
-      }
-    }
-    write_rate_csv(args->output + "/rates.csv", compute_rates(all_rows));
-
-    ReportOptions rep;
-    rep.results_dir = args->output;
-    rep.plots = !args->no_plots;
-    rep.stop = stop_requested;
-    const std::string report = write_report(available, rep);
-    if (report.empty() || stop_requested()) {
-      std::fprintf(stderr,
-                   "[run] interrupted while writing the report (REPORT.md and CLAIMS.md not "
-                   "updated); rerun to finish\n");
-      return stopped_exit_code();
-    }
-    const auto claims = evaluate_claims(args->output);
-    write_file_atomic(
-        args->output + "/CLAIMS.md",
-        claims_markdown(claims, "Generated by " + build_info() + " on " + utc_timestamp() + "."));
-    int reproduced = 0, failed = 0, na = 0;
-    for (const auto& c : claims) {
-      reproduced += c.verdict == Verdict::reproduced;
-      failed += c.verdict == Verdict::not_reproduced;
-      na += c.verdict == Verdict::not_applicable;
-    }
-    std::fprintf(stderr,
-                 "[run] wrote %s and %s/CLAIMS.md: %d reproduced, %d not reproduced, %d "
-                 "not applicable\n",
-                 report.c_str(), args->output.c_str(), reproduced, failed, na);
-    return 0;
+    const PipelineResult r = run_pipeline(po);
+    return r.status == PipelineStatus::stopped ? stopped_exit_code() : 0;
   };
 }
 

@@ -1,0 +1,17 @@
+// The estimator of a public EstimateOptions (include/curvbench/curvbench.h), shared by the C++
+// API and the Python module (python/).
+#pragma once
+
+#include <memory>
+
+#include "curvbench/curvbench.h"
+#include "methods/estimator.h"
+
+namespace curvbench {
+
+/// make_estimator(options.method, ...) with degree, rings, noisy and threads; throws UsageError
+/// for an unknown method, an unsupported degree, or a degree that differs from the one attached
+/// to the method name ("method LHF-4 names degree 4 but degree is 2").
+std::unique_ptr<Estimator> make_api_estimator(const EstimateOptions& options);
+
+}  // namespace curvbench

@@ -1,0 +1,197 @@
+#include "harness/run_pipeline.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <map>
+
+#include "core/build_info.h"
+#include "core/errors.h"
+#include "harness/case_store.h"
+#include "harness/claims.h"
+#include "harness/report.h"
+#include "harness/results_table.h"
+
+namespace curvbench {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string format(const char* fmt, auto... args) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf, fmt, args...);
+  return buf;
+}
+
+// Report-only: each experiment's rows from the store. Throws InputError naming the missing cases
+// of an experiment that is partly stored (or not stored and without a CSV).
+std::map<std::string, std::vector<ErrorRow>> stored_rows(const std::vector<Experiment>& experiments,
+                                                         const CaseStore& store,
+                                                         const std::string& output) {
+  const auto cases = expand_cases(experiments);
+  std::map<std::string, std::vector<ErrorRow>> rows;
+  std::map<std::string, int> found;
+  std::vector<std::string> missing;
+  std::map<std::string, std::vector<std::string>> missing_of;
+  for (const RunCase& c : cases) {
+    const std::string& name = c.experiment->name;
+    if (auto r = store.load(c)) {
+      rows[name].insert(rows[name].end(), r->begin(), r->end());
+      ++found[name];
+    } else {
+      missing_of[name].push_back(case_id(c));
+    }
+  }
+  for (const Experiment& e : experiments) {
+    const auto m = missing_of.find(e.name);
+    if (m == missing_of.end()) continue;
+    if (found[e.name] == 0 && fs::exists(fs::path(output) / (e.name + ".csv"))) {
+      rows.erase(e.name);  // nothing stored: keep the existing CSV
+      continue;
+    }
+    missing.insert(missing.end(), m->second.begin(), m->second.end());
+  }
+  if (!missing.empty()) {
+    std::string list;
+    for (size_t i = 0; i < missing.size() && i < 20; ++i) list += " " + missing[i];
+    if (missing.size() > 20) list += " ...";
+    throw InputError(store.directory() + ": " + std::to_string(missing.size()) + " of " +
+                     std::to_string(cases.size()) +
+                     " cases missing or stale (run their shards first):" + list);
+  }
+  return rows;
+}
+
+}  // namespace
+
+std::vector<std::string> list_case_ids(const std::vector<Experiment>& experiments, int shard,
+                                       int shard_count) {
+  const auto cases = expand_cases(experiments);
+  std::vector<std::string> ids;
+  if (shard_count > 1) {
+    for (size_t i : shard_cases(cases, shard, shard_count)) ids.push_back(case_id(cases[i]));
+  } else {
+    for (const RunCase& c : cases) ids.push_back(case_id(c));
+  }
+  return ids;
+}
+
+PipelineResult run_pipeline(const PipelineOptions& o) {
+  const auto say = [&](const std::string& line) {
+    if (o.message) o.message(line);
+  };
+  const auto stop = [&] { return o.stop && o.stop(); };
+  const bool sharded = o.shard_count > 1;
+  if (sharded && o.report_only) throw UsageError("--shard and --report-only exclude each other");
+  if (sharded) shard_cases({}, o.shard, o.shard_count);  // validates K/N
+  const std::string store_dir =
+      o.store_dir.empty() ? (fs::path(o.output) / ".cache").string() : o.store_dir;
+  PipelineResult result;
+  if (!o.report_only)
+    result.total =
+        static_cast<int>(sharded ? list_case_ids(o.experiments, o.shard, o.shard_count).size()
+                                 : expand_cases(o.experiments).size());
+  fs::create_directories(o.output);
+  // Temporary files of an earlier run that was killed before it could rename them. Not in a
+  // shard: other shards (possibly on other hosts, whose process ids mean nothing here) may be
+  // writing into the same folders.
+  if (!sharded)
+    if (const int stale = remove_stale_temp_files(o.output); stale > 0)
+      say(format("[run] removed %d temporary files left by a killed run", stale));
+
+  const auto stopped = [&](int done) {
+    say(format("[run] interrupted after %d of %d cases (%d reused, %d computed); rerun to continue",
+               done, result.total, result.reused, result.computed));
+    result.status = PipelineStatus::stopped;
+    return result;
+  };
+
+  if (o.report_only) {
+    const CaseStore store(store_dir);
+    const auto rows = stored_rows(o.experiments, store, o.output);
+    for (const auto& [name, r] : rows) {
+      write_error_csv(o.output + "/" + name + ".csv", r);
+      say("[run] wrote " + o.output + "/" + name + ".csv from the case store");
+    }
+  }
+  if (!sharded) {
+    say("[run] Table 2 (ring sizes)");
+    write_table2_csv(o.output + "/table2.csv");
+    if (stop()) return stopped(0);
+    say(format("[run] Table 4 (isosurface torus, n = 16..%d)", o.table4_max));
+    write_table4_csv(o.output + "/table4.csv", o.table4_max);
+    if (stop()) return stopped(0);
+  }
+  if (!o.report_only) {
+    RunOptions ro;
+    ro.threads = o.threads;
+    ro.store_dir = store_dir;
+    ro.force = o.force;
+    ro.stop = o.stop;
+    ro.progress = o.progress;
+    ro.shard = o.shard;
+    ro.shard_count = o.shard_count;
+    const std::string out_dir = o.output;
+    // Each experiment's CSV lands as soon as its last case is done.
+    ro.experiment_done = [&say, out_dir](const Experiment& e, const std::vector<ErrorRow>& rows) {
+      write_error_csv(out_dir + "/" + e.name + ".csv", rows);
+      say("[run] wrote " + out_dir + "/" + e.name + ".csv");
+    };
+    if (sharded)
+      say(format("[run] shard %d/%d: %d cases of %zu experiments", o.shard, o.shard_count,
+                 result.total, o.experiments.size()));
+    else
+      say(format("[run] %zu experiments, %d cases (method x mesh level)", o.experiments.size(),
+                 result.total));
+    const RunSummary done = run_experiments(o.experiments, ro);
+    result.total = done.total;
+    result.reused = done.reused;
+    result.computed = done.computed;
+    if (done.interrupted || stop()) return stopped(done.reused + done.computed);
+    say(format("[run] reused %d of %d cases, computed %d", done.reused, done.total, done.computed));
+    if (sharded) {
+      say("[run] shard " + std::to_string(o.shard) + "/" + std::to_string(o.shard_count) +
+          " done; stored in " + store_dir);
+      return result;
+    }
+  }
+
+  // Rates over every experiment CSV present (all of them, not only the ones just run).
+  std::vector<ErrorRow> all_rows;
+  for (const auto& e : o.available) {
+    const std::string csv = o.output + "/" + e.name + ".csv";
+    if (fs::exists(csv)) {
+      auto rows = read_error_csv(csv);
+      all_rows.insert(all_rows.end(), rows.begin(), rows.end());
+    }
+  }
+  write_rate_csv(o.output + "/rates.csv", compute_rates(all_rows));
+
+  ReportOptions rep;
+  rep.results_dir = o.output;
+  rep.plots = o.plots;
+  rep.stop = o.stop;
+  const std::string report = write_report(o.available, rep);
+  if (report.empty() || stop()) {
+    say("[run] interrupted while writing the report (REPORT.md and CLAIMS.md not updated); "
+        "rerun to finish");
+    result.status = PipelineStatus::stopped;
+    return result;
+  }
+  result.report = report;
+  const auto claims = evaluate_claims(o.output);
+  write_file_atomic(
+      o.output + "/CLAIMS.md",
+      claims_markdown(claims, "Generated by " + build_info() + " on " + utc_timestamp() + "."));
+  for (const auto& c : claims) {
+    result.reproduced += c.verdict == Verdict::reproduced;
+    result.not_reproduced += c.verdict == Verdict::not_reproduced;
+    result.not_applicable += c.verdict == Verdict::not_applicable;
+  }
+  say(format("[run] wrote %s and %s/CLAIMS.md: %d reproduced, %d not reproduced, %d not applicable",
+             report.c_str(), o.output.c_str(), result.reproduced, result.not_reproduced,
+             result.not_applicable));
+  return result;
+}
+
+}  // namespace curvbench

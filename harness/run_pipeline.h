@@ -1,0 +1,65 @@
+// The whole `curvbench run` pipeline as a library function: runs experiments through the case
+// store (runner.h, case_store.h), writes each experiment's error CSV, table2.csv, table4.csv,
+// rates.csv, REPORT.md with the plots, and CLAIMS.md into the output folder.
+//
+// Three modes:
+//   full run       every case (reusing the stored ones), then every output
+//   shard K of N   only the cases of shard K (runner.h shard_cases) into the store; no other output
+//   report only    every output from a complete store (nothing is computed); an incomplete store
+//                  fails naming the missing cases. An experiment none of whose cases is stored
+//                  keeps its existing CSV (e.g. the committed results/).
+// Every file is written atomically (results_table.h write_file_atomic); a stop request is honoured
+// between cases and between plots, leaving REPORT.md and CLAIMS.md untouched.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "harness/experiment.h"
+#include "harness/runner.h"
+
+namespace curvbench {
+
+struct PipelineOptions {
+  std::vector<Experiment> experiments;  ///< the experiments to run
+  std::vector<Experiment> available;    ///< every experiment the report and rates cover
+  std::string output = "results";       ///< results folder
+  std::string store_dir;                ///< case store; empty = <output>/.cache
+  int threads = 0;                      ///< OpenMP threads (0 = all cores)
+  int table4_max = 256;                 ///< largest isosurface grid of Table 4
+  bool force = false;                   ///< recompute every case
+  bool plots = true;                    ///< render the plots (gnuplot)
+  bool report_only = false;             ///< build the outputs from the store, compute nothing
+  int shard = 1;                        ///< shard K (1-based) ...
+  int shard_count = 1;                  ///< ... of N; N > 1 runs only that shard's cases
+  /// One line of progress ("[run] ..."), without newline.
+  std::function<void(const std::string&)> message;
+  /// Called after each case (runner.h).
+  std::function<void(const RunProgress&)> progress;
+  /// Polled between cases and plots; true = stop.
+  std::function<bool()> stop;
+};
+
+enum class PipelineStatus {
+  done,     ///< every requested output written
+  stopped,  ///< options.stop() asked to stop; rerun to continue
+};
+
+struct PipelineResult {
+  PipelineStatus status = PipelineStatus::done;
+  int total = 0, reused = 0, computed = 0;  ///< cases of this run
+  std::string report;                       ///< path of REPORT.md ("" if not written)
+  int reproduced = 0, not_reproduced = 0, not_applicable = 0;  ///< claim verdicts
+};
+
+/// Runs the pipeline. Throws UsageError/InputError for bad options or inputs; InputError names
+/// the missing cases of an incomplete store in report-only mode.
+PipelineResult run_pipeline(const PipelineOptions& options);
+
+/// The stable ids (case_store.h case_id) of the cases of the experiments, in case order; with
+/// shard_count > 1 only those of shard `shard`.
+std::vector<std::string> list_case_ids(const std::vector<Experiment>& experiments, int shard = 1,
+                                       int shard_count = 1);
+
+}  // namespace curvbench

@@ -1,0 +1,76 @@
+// curvbench's public C++ API: per-vertex normals, principal curvatures and directions of a
+// triangle mesh by local polynomial fitting (Wang, Jiao et al., CAGD 2009), in the style of
+// libigl/pmp: Eigen matrices in, an options struct, a result struct out.
+//
+//   V  n x 3 double  vertex positions
+//   F  m x 3 int     triangles (0-based), counter-clockwise seen from outside (closed surfaces)
+//                    or from +z (height fields)
+//
+// Sign convention (paper §2): B = n . x_uu with outward (closed) or upward (height field)
+// normals, so a sphere of radius r has k1 = k2 = H = -1/r; k1 >= k2, d1 goes with k1,
+// H = (k1 + k2) / 2, K = k1 k2.
+//
+// This header includes only Eigen and the standard library (and <curvbench/errors.h>); the
+// library's internal headers are not installed. Link with curvbench::curvbench (CMake:
+// find_package(curvbench CONFIG)).
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "curvbench/errors.h"
+
+namespace curvbench {
+
+/// Outcome per vertex (the same codes as the CSV/PLY output of `curvbench estimate`).
+enum class Status : std::uint8_t {
+  ok = 0,              ///< fitted at the requested degree
+  degree_reduced = 1,  ///< the safeguard lowered the degree; values are finite
+  failed = 2,          ///< no fit possible: normal = area-weighted normal, curvatures 0
+  excluded = 3,        ///< not computed by design (e.g. Xu at a boundary vertex): values NaN
+};
+
+/// "ok", "degree_reduced", "failed", "excluded".
+const char* status_name(Status status);
+
+struct EstimateOptions {
+  std::string method = "lhf";  ///< a name of methods(), case-insensitive; "LHF-4" attaches d
+  int degree = 0;              ///< fitting degree; 0 = the degree in `method`, else 2
+  double rings = 0.0;          ///< ring size 1, 1.5, 2, ...; 0 = the method's default
+  bool noisy = false;          ///< noisy input: default ring + 0.5 (paper §5.3)
+  int threads = 0;             ///< OpenMP threads; 0 = all cores (results do not depend on it)
+};
+
+/// Per-vertex estimates; row/entry i belongs to vertex i.
+struct EstimateResult {
+  std::string method;       ///< label with degree, e.g. "LHF-2"
+  Eigen::MatrixX3d normal;  ///< n x 3 unit normals
+  Eigen::VectorXd k1, k2;   ///< n principal curvatures, k1 >= k2
+  Eigen::VectorXd H, K;     ///< n mean and Gaussian curvature
+  Eigen::MatrixX3d d1, d2;  ///< n x 3 principal directions
+  Eigen::VectorXi degree;   ///< n degree actually used
+  Eigen::VectorXi points;   ///< n points in each least-squares fit
+  Eigen::VectorXd ring;     ///< n ring actually used
+  std::vector<Status> status;
+};
+
+/// Estimates every vertex of the mesh (V, F). Throws InputError for an invalid mesh (index out
+/// of range, repeated vertex in a face, NaN/Inf coordinate) and UsageError for an unknown method,
+/// an unsupported degree or a degree that contradicts the one in `method`; the messages are the
+/// command line's. The result is bit-identical to `curvbench estimate` on the same mesh and
+/// does not depend on the thread count.
+EstimateResult estimate(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
+                        const EstimateOptions& options = {});
+
+/// Reads an OFF, OBJ or PLY file (polygons fan-triangulated). Throws InputError naming the file.
+void read_mesh(const std::string& path, Eigen::MatrixXd& V, Eigen::MatrixXi& F);
+
+/// Names accepted as EstimateOptions::method (without degree).
+std::vector<std::string> methods();
+
+/// e.g. "0.1.0".
+std::string version();
+
+}  // namespace curvbench

@@ -1,0 +1,154 @@
+// A study sharded over processes (the cluster recipe of the README): `curvbench run --shard K/3`
+// as three concurrent processes into one case store (--cache), then `--report-only`, gives the
+// same bytes (CSVs, rates, REPORT.md, CLAIMS.md, plots) as one single-process run. Also: the case
+// ids and the partition (--list-cases), and the report of an incomplete store naming what is
+// missing.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tests/harness/cli_runner.h"
+
+namespace curvbench {
+namespace {
+
+using testing::fresh_dir;
+using testing::run_cli;
+using testing::slurp;
+namespace fs = std::filesystem;
+
+// 2 meshes x 2 levels x 3 methods = 12 small cases.
+void write_experiment(const fs::path& dir) {
+  fs::create_directories(dir);
+  std::ofstream(dir / "shard.exp")
+      << "name    shard\n"
+         "title   \"Shard check\"\n"
+         "section 5.2\n"
+         "mesh    bump-48 levels=1,2\n"
+         "mesh    torus-structured levels=1,2\n"
+         "method  lhf-2\n"
+         "method  lop-2\n"
+         "method  lhf-4\n"
+         "panel   shard-n \"Fig. 0. L2 errors in normals.\" normal L2\n"
+         "panel   shard-h \"Fig. 0. L2 errors in H.\" H L2\n";
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string l; std::getline(in, l);)
+    if (!l.empty()) out.push_back(l);
+  return out;
+}
+
+// Every file under `dir` (relative path -> bytes), skipping the case store.
+std::map<std::string, std::string> outputs(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
+    const auto rel = fs::relative(entry.path(), dir).string();
+    if (!entry.is_regular_file() || rel.rfind(".cache", 0) == 0) continue;
+    files[rel] = slurp(entry.path());
+  }
+  return files;
+}
+
+class CliShard : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ::setenv("SOURCE_DATE_EPOCH", "1790000000", 1);
+    root_ = fresh_dir("cli_shard");
+    write_experiment(root_ / "experiments");
+    common_ =
+        " --experiments-dir " + (root_ / "experiments").string() + " --table4-max 16 --threads 1";
+  }
+  void TearDown() override { fs::remove_all(root_); }
+  fs::path root_;
+  std::string common_;
+};
+
+TEST_F(CliShard, ListCasesIsAStablePartitionBalancedByCost) {
+  const auto all = run_cli("run shard --list-cases" + common_);
+  ASSERT_EQ(all.exit_code, 0) << all.output;
+  const auto ids = lines(all.output);
+  ASSERT_EQ(ids.size(), 12u) << all.output;
+  EXPECT_EQ(ids.front().rfind("shard/bump-48_L1_lhf-2_", 0), 0u) << ids.front();
+  EXPECT_EQ(std::set<std::string>(ids.begin(), ids.end()).size(), ids.size());
+  std::multiset<std::string> union_of_shards;
+  for (int k = 1; k <= 3; ++k) {
+    const auto r = run_cli("run shard --list-cases --shard " + std::to_string(k) + "/3" + common_);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const auto mine = lines(r.output);
+    // The level-2 LHF-4 cases are the costliest (4^2 x 3.7): one per shard before the rest.
+    EXPECT_GE(mine.size(), 2u) << r.output;
+    union_of_shards.insert(mine.begin(), mine.end());
+    EXPECT_EQ(
+        lines(
+            run_cli("run shard --list-cases --shard " + std::to_string(k) + "/3" + common_).output),
+        mine);
+  }
+  EXPECT_EQ(union_of_shards, std::multiset<std::string>(ids.begin(), ids.end()));
+  for (const char* bad : {"0/3", "4/3", "3", "a/b", "1/0"}) {
+    const auto r = run_cli(std::string("run shard --list-cases --shard ") + bad + common_);
+    EXPECT_EQ(r.exit_code, 2) << bad << ": " << r.output;
+    EXPECT_NE(r.output.find("expected K/N"), std::string::npos) << r.output;
+  }
+}
+
+TEST_F(CliShard, ThreeShardProcessesThenTheReportEqualOneRun) {
+  const fs::path single = root_ / "single", sharded = root_ / "sharded", store = root_ / "store";
+  const auto one = run_cli("run shard --output " + single.string() + common_);
+  ASSERT_EQ(one.exit_code, 0) << one.output;
+
+  // An empty store: the report names the missing cases.
+  const std::string report =
+      "run shard --report-only --output " + sharded.string() + " --cache " + store.string();
+  auto r = run_cli(report + common_);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("12 of 12 cases missing"), std::string::npos) << r.output;
+
+  // The README's recipe: three shard processes at once into one store, then the report.
+  const std::string exe = std::string(CURVBENCH_BINARY_DIR) + "/curvbench";
+  const std::string shards = "for k in 1 2 3; do " + exe + " run shard --cache " + store.string() +
+                             " --output " + sharded.string() + " --shard $k/3" + common_ +
+                             " & done; wait";
+  ASSERT_EQ(
+      std::system(("(" + shards + ") > " + (root_ / "shards.log").string() + " 2>&1").c_str()), 0)
+      << slurp(root_ / "shards.log");
+  const std::string log = slurp(root_ / "shards.log");
+  for (const char* k : {"shard 1/3 done", "shard 2/3 done", "shard 3/3 done"})
+    EXPECT_NE(log.find(k), std::string::npos) << log;
+  // Shards write only the store.
+  EXPECT_FALSE(fs::exists(sharded / "shard.csv"));
+  EXPECT_FALSE(fs::exists(sharded / "REPORT.md"));
+
+  r = run_cli(report + common_);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto want = outputs(single), got = outputs(sharded);
+  ASSERT_TRUE(want.count("REPORT.md") && want.count("shard.csv") && want.count("CLAIMS.md"));
+  ASSERT_TRUE(want.count("plots/shard-h_torus-structured.svg"));
+  EXPECT_EQ(got.size(), want.size());
+  for (const auto& [name, bytes] : want) {
+    const auto it = got.find(name);
+    ASSERT_NE(it, got.end()) << name << " missing";
+    EXPECT_TRUE(it->second == bytes) << name << " differs from the single-process run";
+  }
+
+  // A store missing one case: the report fails and names it.
+  const auto ids = lines(run_cli("run shard --list-cases --shard 2/3" + common_).output);
+  ASSERT_FALSE(ids.empty());
+  ASSERT_TRUE(fs::remove(store / (ids.front() + ".csv")));
+  r = run_cli(report + common_);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("1 of 12 cases missing"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(ids.front()), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace curvbench
