@@ -209,8 +209,9 @@ Command add_estimate_command(CLI::App& app) {
       ->required();
   auto* degree = sub->add_option(
       "--degree", o->degree, "Fitting degree of a fit (default 2); degree-free methods take none");
-  sub->add_option("--rings", o->rings,
-                  "Ring size 1, 1.5, 2, ... (default: method default, (d+1)/2; Xu 1; quadric 5, integers)");
+  sub->add_option(
+      "--rings", o->rings,
+      "Ring size 1, 1.5, 2, ... (default: method default, (d+1)/2; Xu 1; quadric 5, integers)");
   sub->add_option("--threads", o->threads, "OpenMP threads (default: all)");
   sub->add_flag("--noisy", o->noisy, "Noisy input: default ring + 0.5 (paper §5.3)");
   sub->add_flag("--timing", o->timing,
