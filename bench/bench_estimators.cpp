@@ -1,8 +1,9 @@
 // Google Benchmark suite for the paper's Table 5 (§5.4, §4.3.2): every estimator of Table 5
-// plus CGAL's Jet_fitting_3 and the in-house LSCM on the well-shaped (torus-structured) torus,
-// levels 1-4 (64x22 .. 512x176 vertices), one thread; LHF-2 also with 2 threads. Scaling: LHF-2
-// with 1 and 2 threads on levels 5 and 6 as well (1024x352 and 2048x704 = 1.44 million vertices),
-// reported in the .md only (the CSV is Table 5's four levels).
+// plus CGAL's Jet_fitting_3, the in-house LSCM and the discrete operators (Meyer, Taubin,
+// Rusinkiewicz, the libigl quadric, Goldfeather, the normal cycle) on the well-shaped
+// (torus-structured) torus, levels 1-4 (64x22 .. 512x176 vertices), one thread; LHF-2 also with 2
+// threads. Scaling: LHF-2 with 1 and 2 threads on levels 5 and 6 as well (1024x352 and 2048x704
+// = 1.44 million vertices), reported in the .md only (the CSV is Table 5's four levels).
 //
 // Timed: estimate_mesh() = the per-vertex stage for the whole mesh (area-weighted normals,
 // neighbourhoods, fits, formulas); the meshes are generated once before any benchmark runs and
@@ -50,10 +51,14 @@ struct MethodSpec {
   bool scaling = false;  ///< levels 5-6 of the scaling sweep (logged in g_scaling)
 };
 
+// Degree 0: a degree-free discrete operator.
 const std::vector<MethodSpec> kMethods = {
-    {"xu", 2, 1},        {"lop", 2, 1},  {"lhf", 2, 1},  {"lhf", 3, 1},       {"lhf", 4, 1},
-    {"lscm", 2, 1},      {"lscm", 3, 1}, {"lscm", 4, 1}, {"lscm-fast", 2, 1}, {"lscm-fast", 3, 1},
-    {"lscm-fast", 4, 1}, {"jet", 2, 1},  {"jet", 3, 1},  {"jet", 4, 1},       {"lhf", 2, 2}};
+    {"xu", 2, 1},          {"lop", 2, 1},          {"lhf", 2, 1},       {"lhf", 3, 1},
+    {"lhf", 4, 1},         {"lscm", 2, 1},         {"lscm", 3, 1},      {"lscm", 4, 1},
+    {"lscm-fast", 2, 1},   {"lscm-fast", 3, 1},    {"lscm-fast", 4, 1}, {"jet", 2, 1},
+    {"jet", 3, 1},         {"jet", 4, 1},          {"lhf", 2, 2},       {"meyer", 0, 1},
+    {"taubin", 0, 1},      {"rusinkiewicz", 0, 1}, {"quadric", 0, 1},   {"goldfeather", 0, 1},
+    {"normal-cycle", 0, 1}};
 
 std::array<std::optional<GeneratedMesh>, kScalingLevels + 1> g_meshes;
 SampleLog g_log;      // Table 5
@@ -136,6 +141,10 @@ void register_all() {
 }
 
 // ---- results/table5_timing.md -----------------------------------------------------------------
+
+// Labels of the discrete operators in the tables (not in the paper).
+const char* const kOperators[] = {"Meyer",   "Taubin",      "Rusinkiewicz",
+                                  "Quadric", "Goldfeather", "Normal-cycle"};
 
 // The paper's Table 5 (seconds; 3 GHz Pentium 4, gcc 4.2.4): PAPER_CLAIMS.md §F.
 const std::vector<std::string> kPaperMethods = {"Xu-2",  "LOP-2",  "LHF-2",  "LHF-3",
@@ -257,6 +266,7 @@ std::string make_markdown(const std::vector<Table5Row>& rows, const std::string&
   std::vector<std::string> ours = kPaperMethods;
   for (const char* m : {"Jet-2", "Jet-3", "Jet-4", "LSCM-fast-2", "LSCM-fast-3", "LSCM-fast-4"})
     ours.push_back(m);
+  for (const char* m : kOperators) ours.push_back(m);
   md += "## Our times (seconds, 1 thread), paper's in parentheses\n\n| mesh | #V | #T |";
   for (const auto& m : ours) md += " " + m + " |";
   md += "\n|---|---|---|";
@@ -303,7 +313,10 @@ std::string make_markdown(const std::vector<Table5Row>& rows, const std::string&
       {"LSCM-2", "LHF-2", true},       {"LSCM-3", "LHF-3", true},
       {"LSCM-4", "LHF-4", true},       {"LSCM-2", "Xu-2", true},
       {"LSCM-fast-2", "LHF-2", false}, {"LSCM-fast-3", "LHF-3", false},
-      {"LSCM-fast-4", "LHF-4", false}};
+      {"LSCM-fast-4", "LHF-4", false}, {"Meyer", "LHF-2", false},
+      {"Taubin", "LHF-2", false},      {"Rusinkiewicz", "LHF-2", false},
+      {"Quadric", "LHF-2", false},     {"Goldfeather", "LHF-2", false},
+      {"Normal-cycle", "LHF-2", false}};
   md +=
       "\n## Time ratios, ours (paper)\n\nThe paper gives Jet-2/LHF-2 only as \"more than 16x\" "
       "(about 28k triangles/s for Jet_fitting_3).\n\n| ratio |";

@@ -50,7 +50,7 @@ int run_estimate(const EstimateOptions& o, bool degree_given) {
   if (ext != "csv" && ext != "ply")
     throw UsageError("--output " + o.output + ": extension must be .csv or .ply");
   EstimatorOptions eo;
-  eo.degree = o.degree;
+  eo.degree = degree_given ? o.degree : 0;  // 0: the method's default (none if degree-free)
   eo.ring = o.rings;
   eo.threads = o.threads;
   eo.noisy = o.noisy;
@@ -123,9 +123,11 @@ Command add_estimate_command(CLI::App& app) {
   sub->add_option("--method", o->method,
                   "Method: " + names + " (case-insensitive; the degree may be attached, LHF-2)")
       ->required();
-  auto* degree = sub->add_option("--degree", o->degree, "Fitting degree (default 2)");
-  sub->add_option("--rings", o->rings,
-                  "Ring size 1, 1.5, 2, ... (default: method default, (d+1)/2; Xu 1)");
+  auto* degree = sub->add_option(
+      "--degree", o->degree, "Fitting degree of a fit (default 2); degree-free methods take none");
+  sub->add_option(
+      "--rings", o->rings,
+      "Ring size 1, 1.5, 2, ... (default: method default, (d+1)/2; Xu 1; quadric 5, integers)");
   sub->add_option("--threads", o->threads, "OpenMP threads (default: all)");
   sub->add_flag("--noisy", o->noisy, "Noisy input: default ring + 0.5 (paper §5.3)");
   sub->add_flag("--timing", o->timing,

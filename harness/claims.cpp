@@ -153,7 +153,8 @@ struct Query {
   std::string experiment;  ///< the experiment producing the series (preferred; named in hints)
   std::string family, method, quantity, norm;
   std::string noise = "none";
-  std::string vertex_set;  ///< "" = the paper's rule: Xu on the bump interior, else all
+  std::string vertex_set;  ///< "" = the paper's rule: interior-only methods (Xu) on the bump
+                           ///< interior, else all
   double ring = 0.0;       ///< ring of the claim's setup; 0 = not part of the setup
 };
 
@@ -214,7 +215,8 @@ class Data {
     const std::string vset =
         !q.vertex_set.empty()
             ? q.vertex_set
-            : (is_xu(q.method) && q.family.rfind("bump", 0) == 0 ? "interior" : "all");
+            : (scores_interior_only(q.method) && q.family.rfind("bump", 0) == 0 ? "interior"
+                                                                                : "all");
     const std::string what = q.method + " " + q.quantity + " " + q.norm + " on " + q.family +
                              " (noise " + q.noise + ", vertex set " + vset + ")";
     std::vector<const Series*> cand;

@@ -14,8 +14,9 @@
 //               weight-power=X, and label="LHF-2 interp" to tell variants apart
 //   panel       fig3-left "Fig. 3 (left). ..." normal L2  one table/plot per mesh family
 //
-// Xu-2 is scored over interior vertices on meshes with a boundary (paper §5.2) unless a
-// vertex-set is given for it explicitly.
+// Methods that score interior vertices only (Estimator::scores_interior_only(): Xu-2, paper
+// §5.2, and the operators that exclude boundary vertices, Meyer, Taubin, normal cycle) are scored
+// over interior vertices on meshes with a boundary unless a vertex-set is given explicitly.
 #pragma once
 
 #include <cstdint>

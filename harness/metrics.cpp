@@ -42,11 +42,33 @@ double scalar_of(Quantity q, const SurfacePoint& p) {
   }
 }
 
-bool usable(const VertexEstimate& e) {
-  return e.status != VertexStatus::excluded && e.normal.allFinite() && std::isfinite(e.H);
+// A vertex contributes to the error of q if it is not excluded and its value of q is finite (a
+// method may leave quantities it does not compute NaN; a failed row is NaN throughout).
+bool usable(const VertexEstimate& e, Quantity q) {
+  if (e.status == VertexStatus::excluded) return false;
+  if (q == Quantity::normal) return e.normal.allFinite();
+  if (q == Quantity::d1) return e.d1.allFinite();
+  return std::isfinite(scalar_of(q, e));
 }
 
 }  // namespace
+
+bool computes(const ComputedQuantities& computed, Quantity q) {
+  switch (q) {
+    case Quantity::normal:
+      return computed.normal;
+    case Quantity::H:
+      return computed.mean;
+    case Quantity::K:
+      return computed.gaussian;
+    case Quantity::k1:
+    case Quantity::k2:
+      return computed.principal;
+    case Quantity::d1:
+      return computed.directions;
+  }
+  return false;
+}
 
 const char* to_string(Quantity q) {
   switch (q) {
@@ -138,7 +160,7 @@ ErrorValue compute_error(Quantity q, Norm norm, std::span<const VertexEstimate> 
       const SurfacePoint& p = exact[v];
       if (p.umbilic || std::abs(p.k1 - p.k2) <= 1e-8 * kmax) continue;
       const VertexEstimate& e = estimates[v];
-      if (!usable(e) || !e.d1.allFinite()) {
+      if (!usable(e, q)) {
         ++r.excluded;
         continue;
       }
@@ -154,7 +176,7 @@ ErrorValue compute_error(Quantity q, Norm norm, std::span<const VertexEstimate> 
   }
   for (int v : vertices) {
     const VertexEstimate& e = estimates[v];
-    if (!usable(e)) {
+    if (!usable(e, q)) {
       ++r.excluded;
       continue;
     }

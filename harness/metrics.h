@@ -6,7 +6,8 @@
 //                vertices (|k1 - k2| > 1e-8 max|k|), Linf = max_i e_i
 //   rate         log(e_1 / e_N) / log(h_1 / h_N) with the measured mean edge lengths
 //
-// Vertices whose estimate is `excluded` (NaN by design) are left out of every sum and counted.
+// Vertices whose estimate is `excluded` (NaN by design) or whose value of the quantity is NaN (a
+// failed row) are left out of every sum and counted.
 #pragma once
 
 #include <span>
@@ -45,6 +46,9 @@ struct ErrorValue {
   int vertices = 0;    ///< vertices that contributed
   int excluded = 0;    ///< vertices of the set skipped because their estimate is excluded/NaN
 };
+
+/// Whether a method computing `computed` outputs quantity q (d1: the directions).
+bool computes(const ComputedQuantities& computed, Quantity q);
 
 /// Error of one quantity in one norm over the given vertices (indices into both arrays).
 ErrorValue compute_error(Quantity q, Norm norm, std::span<const VertexEstimate> estimates,

@@ -131,16 +131,19 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads) 
     failed += x.status == VertexStatus::failed;
   }
 
-  // Xu-2 is scored over interior vertices on open meshes (paper §5.2) unless told otherwise.
+  // A method that scores interior vertices only (Xu-2, paper §5.2) gets the interior on open
+  // meshes unless told otherwise.
   VertexSet set = e.vertex_set;
   if (c.method->has_vertex_set)
     set = c.method->vertex_set;
-  else if (estimator->name() == "xu" && mesh.has_boundary() && set == VertexSet::all)
+  else if (estimator->scores_interior_only() && mesh.has_boundary() && set == VertexSet::all)
     set = VertexSet::interior;
   const std::vector<int> vertices = select_vertices(mesh, set);
 
   std::vector<ErrorRow> rows;
+  const ComputedQuantities computed = estimator->computes();
   for (const auto& [q, norm] : panel_measures(e)) {
+    if (!computes(computed, q)) continue;  // not an output of the method: no error row
     const ErrorValue ev = compute_error(q, norm, est, sm.exact, vertices);
     ErrorRow r;
     r.experiment = e.name;

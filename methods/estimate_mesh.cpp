@@ -6,6 +6,7 @@
 
 #include "mesh/rings.h"
 #include "methods/estimator.h"
+#include "methods/vertex_result.h"
 
 namespace curvbench {
 
@@ -30,7 +31,12 @@ std::string Estimator::display_name() const {
 }
 
 std::string Estimator::label() const {
+  if (!takes_degree()) return display_name();
   return display_name() + "-" + std::to_string(options_.degree);
+}
+
+std::unique_ptr<MeshData> Estimator::prepare(const Mesh&, const VertexMatrix&, int) const {
+  return nullptr;
 }
 
 double Estimator::default_ring() const {
@@ -49,12 +55,13 @@ double Estimator::collect_neighbourhood(RingCollector& rings, int v) const {
 
 std::vector<VertexEstimate> estimate_mesh(const Mesh& mesh, const Estimator& estimator) {
   const VertexMatrix normals = mesh.area_weighted_normals();
-  const MeshContext ctx{mesh, normals};
   const int n = mesh.num_vertices();
   std::vector<VertexEstimate> out(static_cast<size_t>(n));
   int threads =
       estimator.options().threads > 0 ? estimator.options().threads : omp_get_max_threads();
   if (threads < 1) threads = 1;
+  const std::unique_ptr<MeshData> data = estimator.prepare(mesh, normals, threads);
+  const MeshContext ctx{mesh, normals, data.get()};
   if (threads > n) threads = n > 0 ? n : 1;
   // Workspaces are made before the parallel region: make_workspace may allocate and throw, and
   // an exception must not escape an OpenMP region.
@@ -66,7 +73,14 @@ std::vector<VertexEstimate> estimate_mesh(const Mesh& mesh, const Estimator& est
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 64)
   for (int v = 0; v < n; ++v) {
     Workspace& ws = *workspaces[static_cast<size_t>(omp_get_thread_num())];
-    estimator.estimate(ctx, v, ws, out[static_cast<size_t>(v)]);
+    VertexEstimate& o = out[static_cast<size_t>(v)];
+    // The one place a per-vertex exception is caught (e.g. std::bad_alloc while a buffer grows,
+    // a CGAL precondition in a debug build): no exception may escape an OpenMP region.
+    try {
+      estimator.estimate(ctx, v, ws, o);
+    } catch (...) {
+      set_failed(0.0, 0, o);
+    }
   }
   return out;
 }

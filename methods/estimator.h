@@ -1,6 +1,12 @@
 // The estimator interface: one small abstract class, one implementation per file in methods/,
 // one registration line in methods/registry.cpp.
 //
+// A method is either a degree-d fit (LHF-2, Jet-3; label "<Name>-<d>") or degree-free (a
+// discrete operator such as Meyer's cotangent formula; label "<Name>", options().degree == 0).
+// Per mesh, estimate_mesh() calls prepare() once (optional per-mesh data: per-face quantities,
+// cotangent weights, mixed areas), then estimate() once per vertex in parallel; a vertex whose
+// estimate() throws is reported as failed.
+//
 // Output per vertex (paper §2, Table 1): unit normal, principal curvatures k1 >= k2 with unit
 // directions d1, d2, mean curvature H = (k1+k2)/2, Gaussian curvature K = k1 k2, in the sign
 // convention B = n . x_uu with outward/upward normals (a sphere of radius a: k1 = k2 = -1/a).
@@ -18,15 +24,27 @@
 
 namespace curvbench {
 
-/// Per-vertex outcome.
+/// Per-vertex outcome. New values go at the end (the numbers are stored in PLY output); add
+/// the word to to_string() in estimate_mesh.cpp.
 enum class VertexStatus : std::uint8_t {
-  ok = 0,              ///< fitted at the requested degree
+  ok = 0,              ///< estimated (at the requested degree, for a fit); the quantities the
+                       ///< method computes (Estimator::computes()) are finite, the others NaN
   degree_reduced = 1,  ///< the safeguard lowered the degree (>= 1); values are finite
-  failed = 2,          ///< no fit possible (degree 0): normal = approximate normal, k = 0
+  failed = 2,          ///< no estimate possible (or estimate() threw): values NaN
   excluded = 3,        ///< not computed by design (e.g. Xu at a boundary vertex): values NaN
 };
 
 const char* to_string(VertexStatus status);
+
+/// The quantities a method computes. A quantity it does not compute is NaN in every row, also
+/// with status ok, and the harness skips its errors instead of counting the vertices as failed.
+struct ComputedQuantities {
+  bool normal = true;      ///< VertexEstimate::normal
+  bool principal = true;   ///< k1, k2
+  bool mean = true;        ///< H
+  bool gaussian = true;    ///< K
+  bool directions = true;  ///< d1, d2
+};
 
 struct VertexEstimate {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -37,17 +55,23 @@ struct VertexEstimate {
   double K = kNaN;
   Vec3 d1 = Vec3::Constant(kNaN);
   Vec3 d2 = Vec3::Constant(kNaN);
-  int degree = 0;     ///< degree actually used
+  int degree = 0;     ///< degree actually used (0 for a degree-free method)
   int points = 0;     ///< rows in the least-squares system (neighbours with non-zero weight,
                       ///< plus the centre when it is a row)
   double ring = 0.0;  ///< ring actually used (after adaptive growth)
   VertexStatus status = VertexStatus::failed;
 };
 
+/// Vertex normals used by the discrete operators (meyer, taubin, rusinkiewicz, quadric,
+/// goldfeather; methods/vertex_normals.h): method_default = what the method's authors' code uses.
+enum class VertexNormals : std::uint8_t { method_default, area, angle, max };
+
 /// Options shared by all methods. Defaults follow the paper and ALGORITHM_NOTES.
 struct EstimatorOptions {
-  int degree = 2;                ///< requested fitting degree d (1..6; Xu: 2)
-  double ring = 0.0;             ///< 0 = method default (Xu: 1; others (d+1)/2, +0.5 if noisy)
+  int degree = 0;                ///< fitting degree d (1..6; Xu: 2); 0 = the method's default
+                                 ///< (2 for a fit; a degree-free method accepts only 0)
+  double ring = 0.0;             ///< 0 = method default (Xu: 1; others (d+1)/2, +0.5 if noisy;
+                                 ///< quadric: 5, libigl's default)
   bool noisy = false;            ///< noisy input: default ring +0.5 (paper §5.3)
   bool adaptive = true;          ///< half-ring growth: point count and rank-failure rules (§1.2)
   double qr_tolerance = 1e-3;    ///< |R_kk| threshold of the safeguarded QR (§5.4, [C1])
@@ -55,12 +79,25 @@ struct EstimatorOptions {
   bool normal_safeguard = true;  ///< gamma_i = max(0, m_i . m_0) of eq. (15)
   bool include_centre = true;    ///< fit c00 with the centre as a row (else interpolate p0)
   int threads = 0;               ///< 0 = OpenMP default
+  // Options of single methods (ignored by the others); see each method's file comment.
+  VertexNormals vertex_normals = VertexNormals::method_default;  ///< discrete operators
+  bool quadric_constant = false;  ///< quadric: 6 coefficients (constant term) instead of
+                                  ///< libigl's 5
+  double ball_factor = 0.0;       ///< normal-cycle: 0 = the 1-ring; c > 0 = the ball of radius
+                                  ///< c times the mesh's mean edge length
+};
+
+/// Per-mesh data of a method, computed once by Estimator::prepare(); derive from it.
+class MeshData {
+ public:
+  virtual ~MeshData() = default;
 };
 
 /// Mesh data shared read-only by all threads during one estimation run.
 struct MeshContext {
   const Mesh& mesh;
   const VertexMatrix& approx_normals;  ///< area-weighted vertex normals (ALGORITHM_NOTES §2)
+  const MeshData* data = nullptr;      ///< what Estimator::prepare() returned (may be null)
 };
 
 /// Per-thread scratch space; each method derives its own.
@@ -78,9 +115,18 @@ class Estimator {
   virtual std::string name() const = 0;
   /// Name as the paper writes it, e.g. "LHF", "Xu"; default: name() in upper case.
   virtual std::string display_name() const;
-  /// Display name with degree, e.g. "LHF-2", "Xu-2".
+  /// False for a degree-free method (a discrete operator, not a degree-d fit).
+  virtual bool takes_degree() const { return true; }
+  /// Display name with the degree for a fit ("LHF-2", "Xu-2"), without for a degree-free
+  /// method ("Meyer").
   std::string label() const;
   const EstimatorOptions& options() const { return options_; }
+
+  /// True if the method is scored over interior vertices only on a mesh with a boundary (Xu,
+  /// paper §5.2): the harness's default vertex set for it. See also scores_interior_only(name).
+  virtual bool scores_interior_only() const { return false; }
+  /// The quantities the method computes (default: all).
+  virtual ComputedQuantities computes() const { return {}; }
 
   /// Ring used when options().ring == 0.
   virtual double default_ring() const;
@@ -92,7 +138,15 @@ class Estimator {
 
   virtual std::unique_ptr<Workspace> make_workspace(const Mesh& mesh) const = 0;
 
-  /// Estimates vertex v. Must not throw; must fill every field of `out`.
+  /// Per-mesh precomputation (per-face tensors, cotangent weights, mixed areas ...), run once
+  /// by estimate_mesh() before the per-vertex loop, with `threads` OpenMP threads. The result
+  /// must not depend on `threads` (each face or vertex writes only its own slots; sums are
+  /// gathered in a fixed order). It may throw (outside any parallel region). Default: none.
+  virtual std::unique_ptr<MeshData> prepare(const Mesh& mesh, const VertexMatrix& approx_normals,
+                                            int threads) const;
+
+  /// Estimates vertex v; must fill every field of `out`. It may throw: estimate_mesh() then
+  /// reports the vertex as failed (every value NaN).
   virtual void estimate(const MeshContext& ctx, int v, Workspace& ws,
                         VertexEstimate& out) const = 0;
 
@@ -100,13 +154,20 @@ class Estimator {
   EstimatorOptions options_;
 };
 
-/// Creates an estimator by name: "lhf", "lop", "xu", "lscm", "lscm-fast", "jet", or with the
-/// degree attached, "LHF-2" (case-insensitive; the attached degree overrides options.degree).
-/// Throws UsageError for an unknown name or an unsupported degree.
+/// Creates an estimator by name: "lhf", "lop", "xu", "lscm", "lscm-fast", "jet", "meyer", ...
+/// (estimator_names()), a fit optionally with the degree attached, "LHF-2" (case-insensitive;
+/// the attached degree overrides options.degree). options.degree == 0 gives a fit its default
+/// degree 2. Throws UsageError for an unknown name, an unsupported degree, or any degree (given
+/// or attached) for a degree-free method.
 std::unique_ptr<Estimator> make_estimator(const std::string& name, EstimatorOptions options);
 
 /// Names accepted by make_estimator (without degree).
 std::vector<std::string> estimator_names();
+
+/// Whether the built-in method named by `method` (a name or label as make_estimator accepts,
+/// e.g. "Xu-2") scores interior vertices only (Estimator::scores_interior_only()); false for a
+/// name that is not a built-in method (e.g. an outside estimator's label).
+bool scores_interior_only(const std::string& method);
 
 /// Runs the estimator on every vertex, in parallel over vertices (OpenMP). The result is
 /// bit-identical for any number of threads.

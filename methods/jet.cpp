@@ -16,8 +16,9 @@
 //     area-weighted vertex normal by Monge_form::comply_wrt_given_normal (n -> -n, k_i -> -k_i,
 //     k1 <-> k2, d1 <-> d2), which keeps k1 >= k2 and (d1, d2, n) right-handed.
 // Output: normal, k1 >= k2, d1, d2, H = (k1+k2)/2, K = k1 k2, degree = d, points = number of
-// points fitted, ring = ring collected. Failure (too few points, non-finite result, exception):
-// status failed, every value NaN (vertex_result.h).
+// points fitted, ring = ring collected. Failure (too few points, non-finite result, an exception
+// caught by estimate_mesh): status failed, every value NaN (vertex_result.h).
+//
 // Cost: the ring points go to a reused vector; CGAL allocates its matrices in every call (that
 // is the reference's cost).
 #include <CGAL/Eigen_svd.h>
@@ -84,40 +85,36 @@ class JetEstimator final : public Estimator {
     auto& ws = static_cast<JetWorkspace&>(base);
     const Vec3 m0 = ctx.approx_normals.row(v).transpose();
     const int d = options_.degree;
-    try {
-      collect_neighbourhood(ws.rings, v);
-      const size_t needed = static_cast<size_t>(num_coefficients(d));
-      while (1 + ws.rings.neighbours().size() < needed && ws.rings.grow()) {
-      }
-      const double ring = ws.rings.ring();
-      const int count = 1 + static_cast<int>(ws.rings.neighbours().size());
-      if (static_cast<size_t>(count) < needed) {
-        set_failed(ring, 0, out);
-        return;
-      }
-      ws.points.clear();
-      const auto add = [&](int w) {
-        const Vec3 p = ctx.mesh.position(w);
-        ws.points.emplace_back(p.x(), p.y(), p.z());
-      };
-      add(v);
-      for (int w : ws.rings.neighbours()) add(w);
-
-      JetFitter::Monge_form monge =
-          ws.fitter(ws.points.begin(), ws.points.end(), static_cast<size_t>(d), 2);
-      monge.comply_wrt_given_normal(JetKernel::Vector_3(m0.x(), m0.y(), m0.z()));
-      Curvature c;
-      c.normal = to_vec(monge.normal_direction());
-      c.k1 = monge.principal_curvatures(0);
-      c.k2 = monge.principal_curvatures(1);
-      c.H = 0.5 * (c.k1 + c.k2);
-      c.K = c.k1 * c.k2;
-      c.d1 = to_vec(monge.maximal_principal_direction());
-      c.d2 = to_vec(monge.minimal_principal_direction());
-      if (!set_quantities(c, d, d, count, ring, out)) set_failed(ring, count, out);
-    } catch (...) {  // estimate() must not throw (CGAL preconditions in debug builds, bad_alloc)
-      set_failed(0.0, 0, out);
+    collect_neighbourhood(ws.rings, v);
+    const size_t needed = static_cast<size_t>(num_coefficients(d));
+    while (1 + ws.rings.neighbours().size() < needed && ws.rings.grow()) {
     }
+    const double ring = ws.rings.ring();
+    const int count = 1 + static_cast<int>(ws.rings.neighbours().size());
+    if (static_cast<size_t>(count) < needed) {
+      set_failed(ring, 0, out);
+      return;
+    }
+    ws.points.clear();
+    const auto add = [&](int w) {
+      const Vec3 p = ctx.mesh.position(w);
+      ws.points.emplace_back(p.x(), p.y(), p.z());
+    };
+    add(v);
+    for (int w : ws.rings.neighbours()) add(w);
+
+    JetFitter::Monge_form monge =
+        ws.fitter(ws.points.begin(), ws.points.end(), static_cast<size_t>(d), 2);
+    monge.comply_wrt_given_normal(JetKernel::Vector_3(m0.x(), m0.y(), m0.z()));
+    Curvature c;
+    c.normal = to_vec(monge.normal_direction());
+    c.k1 = monge.principal_curvatures(0);
+    c.k2 = monge.principal_curvatures(1);
+    c.H = 0.5 * (c.k1 + c.k2);
+    c.K = c.k1 * c.k2;
+    c.d1 = to_vec(monge.maximal_principal_direction());
+    c.d2 = to_vec(monge.minimal_principal_direction());
+    if (!set_quantities(c, d, d, count, ring, out)) set_failed(ring, count, out);
   }
 };
 

@@ -4,7 +4,8 @@
 //   X(name, min_degree, max_degree, factory)
 // where `factory` is a function `std::unique_ptr<Estimator> factory(EstimatorOptions)` defined in
 // the method's own .cpp (in namespace curvbench). The line both declares the factory and adds it
-// to the table; the order of the lines is the order of estimator_names().
+// to the table; the order of the lines is the order of estimator_names(). A degree-free method
+// (a discrete operator) has min_degree = max_degree = 0.
 #include <algorithm>
 #include <cctype>
 #include <memory>
@@ -22,7 +23,13 @@
   X("lscm", 1, 6, make_lscm_estimator)          \
   X("lscm-fast", 1, 6, make_lscm_fast_estimator) \
   X("lscm-cg", 1, 6, make_lscm_cg_estimator)     \
-  X("jet", 2, 4, make_jet_estimator)
+  X("jet", 2, 4, make_jet_estimator)            \
+  X("meyer", 0, 0, make_meyer_estimator)        \
+  X("taubin", 0, 0, make_taubin_estimator)      \
+  X("rusinkiewicz", 0, 0, make_rusinkiewicz_estimator) \
+  X("quadric", 0, 0, make_quadric_estimator)    \
+  X("goldfeather", 0, 0, make_goldfeather_estimator) \
+  X("normal-cycle", 0, 0, make_normal_cycle_estimator)
 // clang-format on
 
 namespace curvbench {
@@ -70,6 +77,7 @@ const Registration* find(const std::string& name) {
 std::unique_ptr<Estimator> make_estimator(const std::string& name, EstimatorOptions options) {
   std::string base = lower(name);
   const Registration* reg = find(base);
+  bool attached = false;
   if (reg == nullptr) {
     // "LHF-2": a trailing "-<digits>" is the degree.
     const size_t dash = base.rfind('-');
@@ -77,12 +85,27 @@ std::unique_ptr<Estimator> make_estimator(const std::string& name, EstimatorOpti
         std::all_of(base.begin() + static_cast<std::ptrdiff_t>(dash + 1), base.end(),
                     [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; })) {
       reg = find(base.substr(0, dash));
-      if (reg != nullptr) options.degree = std::stoi(base.substr(dash + 1));
+      if (reg != nullptr) {
+        if (reg->max_degree == 0)
+          throw UsageError("method '" + std::string(reg->name) +
+                           "' takes no degree (it is not a polynomial fit): write '" + reg->name +
+                           "', not '" + name + "'");
+        options.degree = std::stoi(base.substr(dash + 1));
+        attached = true;
+      }
     }
   }
   if (reg == nullptr)
     throw UsageError("unknown method '" + name + "' (valid: " + valid_names() +
                      ", optionally with the degree attached, e.g. LHF-2)");
+  if (reg->max_degree == 0) {
+    if (options.degree != 0)
+      throw UsageError("method '" + std::string(reg->name) + "' takes no degree (got degree " +
+                       std::to_string(options.degree) + "; it is not a polynomial fit)");
+    return reg->make(options);
+  }
+  if (options.degree == 0 && !attached)
+    options.degree = std::clamp(2, reg->min_degree, reg->max_degree);
   if (options.degree < reg->min_degree || options.degree > reg->max_degree) {
     const std::string range =
         reg->min_degree == reg->max_degree
@@ -98,6 +121,14 @@ std::vector<std::string> estimator_names() {
   std::vector<std::string> names;
   for (const Registration& r : kRegistry) names.emplace_back(r.name);
   return names;
+}
+
+bool scores_interior_only(const std::string& method) {
+  try {
+    return make_estimator(method, EstimatorOptions{})->scores_interior_only();
+  } catch (const UsageError&) {
+    return false;  // not a built-in method
+  }
 }
 
 }  // namespace curvbench

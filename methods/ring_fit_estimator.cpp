@@ -31,6 +31,7 @@ struct RingFitWorkspace final : Workspace {
 
 RingFitEstimator::RingFitEstimator(EstimatorOptions options, FitRoute route)
     : Estimator(options), route_(route) {
+  if (options_.degree == 0) options_.degree = 2;  // the default degree (estimator.h)
   const EstimatorOptions& o = options_;
   if (o.degree < 1 || o.degree > kMaxDegree)
     throw UsageError("degree " + std::to_string(o.degree) + " is not supported (valid: 1..6)");
@@ -152,50 +153,46 @@ void RingFitEstimator::estimate(const MeshContext& ctx, int v, Workspace& base,
   const int d = options_.degree;
   const int min_nb = min_neighbours(d);
   const bool safeguard = use_normal_safeguard();
-  try {
-    const double r0 = collect_neighbourhood(ws.rings, v);
-    const double max_ring = 2.0 * r0;
-    double ring = ws.rings.ring();
-    FitResult fit;
-    bool have_fit = false;
-    double fit_ring = ring;
-    for (;;) {
-      const RingView view{
-          ctx.mesh, ctx.approx_normals, v, ws.rings.ring(), ws.rings.neighbours(), ws.rings.faces(),
-          frame};
-      const bool hook_ok = parameterize(view, ws.uv, ws.param.get());
-      FitResult attempt;
-      if (fit_current_ring(*this, hook_ok, ctx, v, frame, safeguard, ws, attempt)) {
-        fit = attempt;
-        have_fit = true;
-        fit_ring = ring;
-      }
-      // Rank-failure rule (ALGORITHM_NOTES §1.2, [C2]): grow by half a ring up to 2 r0.
-      const bool reduced = !have_fit || fit.degree < d;
-      if (!options_.adaptive || !reduced || ring >= max_ring - 1e-9) break;
-      const size_t before_v = ws.rings.neighbours().size();
-      const size_t before_f = ws.rings.faces().size();
-      ring = ws.rings.collect_at_least(v, ring + 0.5, min_nb, max_ring);
-      if (ws.rings.neighbours().size() == before_v && ws.rings.faces().size() == before_f)
-        break;  // the component is exhausted: nothing new to fit
+  const double r0 = collect_neighbourhood(ws.rings, v);
+  const double max_ring = 2.0 * r0;
+  double ring = ws.rings.ring();
+  FitResult fit;
+  bool have_fit = false;
+  double fit_ring = ring;
+  for (;;) {
+    const RingView view{
+        ctx.mesh, ctx.approx_normals, v, ws.rings.ring(), ws.rings.neighbours(), ws.rings.faces(),
+        frame};
+    const bool hook_ok = parameterize(view, ws.uv, ws.param.get());
+    FitResult attempt;
+    if (fit_current_ring(*this, hook_ok, ctx, v, frame, safeguard, ws, attempt)) {
+      fit = attempt;
+      have_fit = true;
+      fit_ring = ring;
     }
-    if (!have_fit || fit.degree < 1) {
-      set_failed(fit_ring, have_fit ? fit.rows : 0, out);
-      return;
-    }
-    const auto& t = fit.taylor;
-    const Curvature c =
-        route_ == FitRoute::height
-            ? curvature_from_height(frame.t1, frame.t2, frame.m, t(kFu, 0), t(kFv, 0), t(kFuu, 0),
-                                    t(kFuv, 0), t(kFvv, 0))
-            : curvature_from_parametric(t.row(kFu).transpose(), t.row(kFv).transpose(),
-                                        t.row(kFuu).transpose(), t.row(kFuv).transpose(),
-                                        t.row(kFvv).transpose());
-    if (!set_quantities(c, fit.degree, d, fit.rows, fit_ring, out))
-      set_failed(fit_ring, fit.rows, out);
-  } catch (...) {  // e.g. std::bad_alloc while a buffer grows; estimate() must not throw
-    set_failed(0.0, 0, out);
+    // Rank-failure rule (ALGORITHM_NOTES §1.2, [C2]): grow by half a ring up to 2 r0.
+    const bool reduced = !have_fit || fit.degree < d;
+    if (!options_.adaptive || !reduced || ring >= max_ring - 1e-9) break;
+    const size_t before_v = ws.rings.neighbours().size();
+    const size_t before_f = ws.rings.faces().size();
+    ring = ws.rings.collect_at_least(v, ring + 0.5, min_nb, max_ring);
+    if (ws.rings.neighbours().size() == before_v && ws.rings.faces().size() == before_f)
+      break;  // the component is exhausted: nothing new to fit
   }
+  if (!have_fit || fit.degree < 1) {
+    set_failed(fit_ring, have_fit ? fit.rows : 0, out);
+    return;
+  }
+  const auto& t = fit.taylor;
+  const Curvature c =
+      route_ == FitRoute::height
+          ? curvature_from_height(frame.t1, frame.t2, frame.m, t(kFu, 0), t(kFv, 0), t(kFuu, 0),
+                                  t(kFuv, 0), t(kFvv, 0))
+          : curvature_from_parametric(t.row(kFu).transpose(), t.row(kFv).transpose(),
+                                      t.row(kFuu).transpose(), t.row(kFuv).transpose(),
+                                      t.row(kFvv).transpose());
+  if (!set_quantities(c, fit.degree, d, fit.rows, fit_ring, out))
+    set_failed(fit_ring, fit.rows, out);
 }
 
 bool RingFitEstimator::first_system(const MeshContext& ctx, int v, Workspace& base,

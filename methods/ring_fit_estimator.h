@@ -17,8 +17,7 @@
 //   quantities (core/shape_operator.h): height route curvature_from_height(t1, t2, m0, f_u, ...),
 //   parametric route curvature_from_parametric(x_u, x_v, x_uu, x_uv, x_vv).
 // Status: ok (d_used = d), degree_reduced (1 <= d_used < d), failed (d_used = 0, the hook
-// failed, or non-finite quantities): normal = m0, k1 = k2 = H = K = 0, d1 = t1, d2 = t2.
-// estimate() never throws and leaves no NaN (a vertex without faces reports its zero m0).
+// failed, or non-finite quantities): every value NaN (vertex_result.h).
 //
 // ---- Extension point (LSCM and any other ring parameterization) -------------------------------
 // Derive from RingFitEstimator, pass FitRoute::parametric to the constructor, and override
@@ -43,7 +42,8 @@
 //        then reported as failed (or, in the adaptive rank-failure loop, the previous fit is
 //        kept if there was one).
 //   It is called once per fit attempt (several times when the ring grows), from several threads
-//   at once (const; keep all mutable state in the scratch object), and must not throw.
+//   at once (const; keep all mutable state in the scratch object). If it throws, the vertex is
+//   reported as failed (estimate_mesh).
 //
 // Optional overrides:
 //   std::unique_ptr<ParamScratch> make_param_scratch(const Mesh&) const
@@ -113,8 +113,9 @@ class RingFitEstimator : public Estimator {
                   double threshold = 1e-8, bool relative_threshold = false);
 
  protected:
-  /// Throws UsageError for a degree outside 1..kMaxDegree, a ring that is neither 0 nor one of
-  /// 1, 1.5, 2, ..., a negative QR tolerance, a non-finite weight power or negative threads.
+  /// Degree 0 means the default, 2. Throws UsageError for a degree outside 1..kMaxDegree, a ring
+  /// that is neither 0 nor one of 1, 1.5, 2, ..., a negative QR tolerance, a non-finite weight
+  /// power or negative threads.
   RingFitEstimator(EstimatorOptions options, FitRoute route);
 
   /// The parameterization hook; default: orthogonal projection onto the frame plane (LOP,

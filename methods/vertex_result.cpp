@@ -46,4 +46,31 @@ bool set_quantities(const Curvature& c, int degree, int requested, int points, d
   return true;
 }
 
+bool set_operator_quantities(const Curvature& c, const ComputedQuantities& computed, int points,
+                             double ring, VertexEstimate& out) {
+  const bool finite = (!computed.normal || c.normal.allFinite()) &&
+                      (!computed.principal || (std::isfinite(c.k1) && std::isfinite(c.k2))) &&
+                      (!computed.mean || std::isfinite(c.H)) &&
+                      (!computed.gaussian || std::isfinite(c.K)) &&
+                      (!computed.directions || (c.d1.allFinite() && c.d2.allFinite()));
+  if (!finite) return false;
+  out = VertexEstimate{};  // NaN everywhere
+  if (computed.normal) out.normal = c.normal;
+  if (computed.principal) {
+    out.k1 = c.k1;
+    out.k2 = c.k2;
+  }
+  if (computed.mean) out.H = c.H;
+  if (computed.gaussian) out.K = c.K;
+  if (computed.directions) {
+    out.d1 = c.d1;
+    out.d2 = c.d2;
+  }
+  out.degree = 0;
+  out.points = points;
+  out.ring = ring;
+  out.status = VertexStatus::ok;
+  return true;
+}
+
 }  // namespace curvbench

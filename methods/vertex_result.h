@@ -25,4 +25,10 @@ void set_excluded(double ring, int points, VertexEstimate& out);
 bool set_quantities(const Curvature& c, int degree, int requested, int points, double ring,
                     VertexEstimate& out);
 
+/// A degree-free method's estimate (degree 0, status ok): copies the quantities `computed` says
+/// the method computes and leaves the others NaN. Returns false, leaving out untouched, if a
+/// computed value is not finite.
+bool set_operator_quantities(const Curvature& c, const ComputedQuantities& computed, int points,
+                             double ring, VertexEstimate& out);
+
 }  // namespace curvbench

@@ -66,6 +66,8 @@ class XuEstimator final : public Estimator {
   std::string name() const override { return "xu"; }
   std::string display_name() const override { return "Xu"; }
   double default_ring() const override { return 1.0; }
+  /// Paper §5.2: Xu's errors are taken over interior vertices (its boundary rows are excluded).
+  bool scores_interior_only() const override { return true; }
 
   std::unique_ptr<Workspace> make_workspace(const Mesh&) const override {
     return std::make_unique<XuWorkspace>();
@@ -75,51 +77,47 @@ class XuEstimator final : public Estimator {
                 VertexEstimate& out) const override {
     auto& ws = static_cast<XuWorkspace&>(base);
     const Mesh& mesh = ctx.mesh;
-    try {
-      if (mesh.is_boundary_vertex(v) || !ordered_ring(mesh, v, ws)) {
-        set_excluded(1.0, 0, out);
-        return;
-      }
-      const int n = static_cast<int>(ws.order.size());
-      const Vec3 p0 = mesh.position(v);
-      // Angles at p0 between consecutive edges (atan2: robust for near-zero edges).
-      double alpha_sum = 0.0;
-      ws.w.resize(n);  // alpha_j, reused as scratch (the fit itself is unweighted)
-      for (int j = 0; j < n; ++j) {
-        const Vec3 a = mesh.position(ws.order[static_cast<size_t>(j)]) - p0;
-        const Vec3 b = mesh.position(ws.order[static_cast<size_t>((j + 1) % n)]) - p0;
-        ws.w(j) = std::atan2(a.cross(b).norm(), a.dot(b));
-        alpha_sum += ws.w(j);
-      }
-      if (!(alpha_sum > 0.0) || !std::isfinite(alpha_sum)) {
-        set_failed(1.0, n, out);
-        return;
-      }
-      const double scale = 2.0 * std::numbers::pi / alpha_sum;
-      ws.u.resize(n);
-      ws.v.resize(n);
-      ws.f.resize(n, 3);
-      double theta = 0.0;
-      for (int j = 0; j < n; ++j) {
-        const Vec3 d = mesh.position(ws.order[static_cast<size_t>(j)]) - p0;
-        const double r = d.norm();
-        ws.u(j) = r * std::cos(theta);
-        ws.v(j) = r * std::sin(theta);
-        for (int c = 0; c < 3; ++c) ws.f(j, c) = d(c);
-        theta += scale * ws.w(j);
-      }
-      ws.w.resize(0);  // unweighted
-      const FitResult fit = fit_polynomial(ws.u, ws.v, ws.f, ws.w, settings_, ws.fit);
-      const auto& t = fit.taylor;
-      const Curvature c = fit.degree < 1 ? Curvature{}
-                                         : curvature_from_parametric(
-                                               t.row(kFu).transpose(), t.row(kFv).transpose(),
-                                               t.row(kFuu).transpose(), t.row(kFuv).transpose(),
-                                               t.row(kFvv).transpose());
-      if (!set_quantities(c, fit.degree, 2, n, 1.0, out)) set_failed(1.0, n, out);
-    } catch (...) {  // estimate() must not throw
-      set_failed(1.0, 0, out);
+    if (mesh.is_boundary_vertex(v) || !ordered_ring(mesh, v, ws)) {
+      set_excluded(1.0, 0, out);
+      return;
     }
+    const int n = static_cast<int>(ws.order.size());
+    const Vec3 p0 = mesh.position(v);
+    // Angles at p0 between consecutive edges (atan2: robust for near-zero edges).
+    double alpha_sum = 0.0;
+    ws.w.resize(n);  // alpha_j, reused as scratch (the fit itself is unweighted)
+    for (int j = 0; j < n; ++j) {
+      const Vec3 a = mesh.position(ws.order[static_cast<size_t>(j)]) - p0;
+      const Vec3 b = mesh.position(ws.order[static_cast<size_t>((j + 1) % n)]) - p0;
+      ws.w(j) = std::atan2(a.cross(b).norm(), a.dot(b));
+      alpha_sum += ws.w(j);
+    }
+    if (!(alpha_sum > 0.0) || !std::isfinite(alpha_sum)) {
+      set_failed(1.0, n, out);
+      return;
+    }
+    const double scale = 2.0 * std::numbers::pi / alpha_sum;
+    ws.u.resize(n);
+    ws.v.resize(n);
+    ws.f.resize(n, 3);
+    double theta = 0.0;
+    for (int j = 0; j < n; ++j) {
+      const Vec3 d = mesh.position(ws.order[static_cast<size_t>(j)]) - p0;
+      const double r = d.norm();
+      ws.u(j) = r * std::cos(theta);
+      ws.v(j) = r * std::sin(theta);
+      for (int c = 0; c < 3; ++c) ws.f(j, c) = d(c);
+      theta += scale * ws.w(j);
+    }
+    ws.w.resize(0);  // unweighted
+    const FitResult fit = fit_polynomial(ws.u, ws.v, ws.f, ws.w, settings_, ws.fit);
+    const auto& t = fit.taylor;
+    const Curvature c =
+        fit.degree < 1 ? Curvature{}
+                       : curvature_from_parametric(t.row(kFu).transpose(), t.row(kFv).transpose(),
+                                                   t.row(kFuu).transpose(), t.row(kFuv).transpose(),
+                                                   t.row(kFvv).transpose());
+    if (!set_quantities(c, fit.degree, 2, n, 1.0, out)) set_failed(1.0, n, out);
   }
 
  private:

@@ -137,3 +137,36 @@ TEST(Metrics, VertexSets) {
 
 }  // namespace
 }  // namespace curvbench
+
+namespace curvbench {
+namespace {
+
+// A method that does not compute normals or directions (ComputedQuantities) leaves them NaN with
+// status ok: its H is still scored over every vertex, and the runner asks computes() to skip the
+// normal and d1 rows instead of counting every vertex as excluded.
+TEST(Metrics, QuantitiesAreJudgedOneByOne) {
+  Fixture f = make(4);
+  for (VertexEstimate& e : f.est) {
+    e.normal = Vec3::Constant(std::nan(""));
+    e.d1 = e.d2 = Vec3::Constant(std::nan(""));
+  }
+  f.est[1].H += 1.0;
+  const ErrorValue h = compute_error(Quantity::H, Norm::Linf, f.est, f.exact, f.all);
+  EXPECT_EQ(h.vertices, 4);
+  EXPECT_EQ(h.excluded, 0);
+  EXPECT_DOUBLE_EQ(h.value, 1.0 / 2.0);  // max |H error| 1 over max |H| = 4 * 0.5
+  const ErrorValue n = compute_error(Quantity::normal, Norm::L2, f.est, f.exact, f.all);
+  EXPECT_EQ(n.vertices, 0);
+  EXPECT_EQ(n.excluded, 4);
+  ComputedQuantities only_h;
+  only_h.normal = only_h.principal = only_h.gaussian = only_h.directions = false;
+  EXPECT_TRUE(computes(only_h, Quantity::H));
+  for (Quantity q : {Quantity::normal, Quantity::K, Quantity::k1, Quantity::k2, Quantity::d1})
+    EXPECT_FALSE(computes(only_h, q)) << to_string(q);
+  for (Quantity q :
+       {Quantity::normal, Quantity::H, Quantity::K, Quantity::k1, Quantity::k2, Quantity::d1})
+    EXPECT_TRUE(computes(ComputedQuantities{}, q)) << to_string(q);
+}
+
+}  // namespace
+}  // namespace curvbench

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -16,6 +18,7 @@
 #include "method_test_util.h"
 #include "methods/estimator.h"
 #include "methods/ring_fit_estimator.h"
+#include "methods/vertex_result.h"
 
 namespace curvbench {
 namespace {
@@ -182,7 +185,8 @@ SphereErrors sphere_errors(const std::string& method, int degree, int level) {
 TEST(Sphere, EveryMethodGivesMinusHalfAndConverges) {
   // Radius 2, outward normals: k1 = k2 = H = -0.5, K = 0.25 (ALGORITHM_NOTES §0).
   std::vector<std::pair<std::string, int>> runs;
-  for (const std::string& name : estimator_names()) runs.emplace_back(name, 2);
+  for (const std::string& name : estimator_names())
+    if (make_estimator(name, {})->takes_degree()) runs.emplace_back(name, 2);  // the fits
   runs.emplace_back("lhf", 3);
   runs.emplace_back("lhf", 4);
   runs.emplace_back("lop", 4);
@@ -565,6 +569,100 @@ TEST(Registry, NamesDegreesAndErrors) {
   EXPECT_STREQ(to_string(VertexStatus::degree_reduced), "degree_reduced");
   EXPECT_STREQ(to_string(VertexStatus::failed), "failed");
   EXPECT_STREQ(to_string(VertexStatus::excluded), "excluded");
+}
+
+}  // namespace
+}  // namespace curvbench
+
+// ---- the interface of issue 12: degree-free methods, interior-only scoring, prepare(),
+// per-vertex exceptions, quantities a method does not compute -----------------------------------
+
+namespace curvbench {
+namespace {
+
+TEST(Registry, DegreeIsOptional) {
+  EXPECT_EQ(make_estimator("lhf", {})->label(), "LHF-2");  // degree 0 = the fit's default 2
+  EXPECT_EQ(make_estimator("jet", {})->options().degree, 2);
+  for (const char* name : {"meyer", "taubin", "rusinkiewicz", "quadric"}) {
+    const auto est = make_estimator(name, {});
+    EXPECT_FALSE(est->takes_degree()) << name;
+    EXPECT_EQ(est->label().find('-'), std::string::npos) << est->label();
+    EstimatorOptions o;
+    o.degree = 2;
+    try {
+      make_estimator(name, o);
+      ADD_FAILURE() << name << " accepted a degree";
+    } catch (const UsageError& e) {
+      EXPECT_NE(std::string(e.what()).find("takes no degree"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(make_estimator(std::string(name) + "-2", {}), UsageError);
+  }
+  EXPECT_TRUE(make_estimator("lhf", {})->takes_degree());
+}
+
+TEST(Registry, InteriorOnlyFlag) {
+  EXPECT_TRUE(make_estimator("xu", {})->scores_interior_only());
+  EXPECT_TRUE(scores_interior_only("Xu-2"));
+  EXPECT_TRUE(scores_interior_only("xu"));
+  // The operators that exclude boundary vertices by design.
+  for (const char* m : {"Meyer", "taubin", "normal-cycle"})
+    EXPECT_TRUE(scores_interior_only(m)) << m;
+  for (const char* m :
+       {"LHF-2", "lop", "Jet-3", "LSCM-2", "rusinkiewicz", "quadric", "goldfeather", "myest", ""})
+    EXPECT_FALSE(scores_interior_only(m)) << m;
+}
+
+// A test method: prepare() stores 2 v per vertex; estimate() throws at odd vertices and reports
+// only H (normal and the rest NaN) at even ones.
+struct Doubled final : MeshData {
+  std::vector<double> value;
+};
+
+class ThrowingHalf final : public Estimator {
+ public:
+  ThrowingHalf() : Estimator(EstimatorOptions{}) {}
+  std::string name() const override { return "throwing-half"; }
+  bool takes_degree() const override { return false; }
+  ComputedQuantities computes() const override {
+    ComputedQuantities c;
+    c.normal = c.principal = c.gaussian = c.directions = false;
+    return c;
+  }
+  std::unique_ptr<Workspace> make_workspace(const Mesh&) const override {
+    return std::make_unique<Workspace>();
+  }
+  std::unique_ptr<MeshData> prepare(const Mesh& mesh, const VertexMatrix&, int) const override {
+    auto d = std::make_unique<Doubled>();
+    for (int v = 0; v < mesh.num_vertices(); ++v) d->value.push_back(2.0 * v);
+    ++prepared;
+    return d;
+  }
+  void estimate(const MeshContext& ctx, int v, Workspace&, VertexEstimate& out) const override {
+    if (v % 2 == 1) throw std::runtime_error("odd");
+    Curvature c;
+    c.H = static_cast<const Doubled&>(*ctx.data).value[static_cast<size_t>(v)];
+    ASSERT_TRUE(set_operator_quantities(c, computes(), 1, 1.0, out));
+  }
+  mutable int prepared = 0;
+};
+
+TEST(EstimateMesh, PrepareOnceExceptionsFailTheVertexPartialQuantitiesStayOk) {
+  const Mesh m = icosphere(1, 1.0);
+  ThrowingHalf est;
+  const auto r = estimate_mesh(m, est);
+  EXPECT_EQ(est.prepared, 1);
+  EXPECT_EQ(est.label(), "THROWING-HALF");
+  for (int v = 0; v < m.num_vertices(); ++v) {
+    const VertexEstimate& q = r[static_cast<size_t>(v)];
+    EXPECT_TRUE(q.normal.array().isNaN().all() && std::isnan(q.k1) && std::isnan(q.K));
+    if (v % 2 == 1) {
+      EXPECT_EQ(q.status, VertexStatus::failed);
+      EXPECT_TRUE(std::isnan(q.H));
+    } else {
+      EXPECT_EQ(q.status, VertexStatus::ok);
+      EXPECT_EQ(q.H, 2.0 * v);
+    }
+  }
 }
 
 }  // namespace

@@ -1,0 +1,49 @@
+// Common base of the degree-free discrete operators; see operator_estimator.h.
+#include "methods/operator_estimator.h"
+
+#include <string>
+
+#include "core/errors.h"
+#include "core/text.h"
+#include "methods/vertex_normals.h"
+
+namespace curvbench {
+
+OperatorEstimator::OperatorEstimator(EstimatorOptions options, VertexNormals default_normals,
+                                     bool needs_face_geometry, bool ring_option)
+    : Estimator(options),
+      default_normals_(default_normals),
+      needs_face_geometry_(needs_face_geometry) {
+  if (options_.degree != 0)
+    throw UsageError("a discrete operator takes no degree (got " + std::to_string(options_.degree) +
+                     ")");
+  if (options_.threads < 0) throw UsageError("threads must be >= 0");
+  if (!ring_option && options_.ring != 0.0 && options_.ring != 1.0)
+    throw UsageError("this method uses the 1-ring only (got ring " + format_g(options_.ring) + ")");
+}
+
+VertexNormals OperatorEstimator::normal_weighting() const {
+  return options_.vertex_normals == VertexNormals::method_default ? default_normals_
+                                                                  : options_.vertex_normals;
+}
+
+std::unique_ptr<Workspace> OperatorEstimator::make_workspace(const Mesh&) const {
+  return std::make_unique<Workspace>();
+}
+
+void OperatorEstimator::fill_mesh_data(const Mesh& mesh, int threads,
+                                       OperatorMeshData& data) const {
+  if (needs_face_geometry_) data.faces = face_geometry(mesh, threads);
+  // The area-weighted normals are MeshContext::approx_normals already.
+  if (normal_weighting() != VertexNormals::area)
+    data.normals = weighted_vertex_normals(mesh, normal_weighting(), threads);
+}
+
+std::unique_ptr<MeshData> OperatorEstimator::prepare(const Mesh& mesh, const VertexMatrix&,
+                                                     int threads) const {
+  auto data = std::make_unique<OperatorMeshData>();
+  fill_mesh_data(mesh, threads, *data);
+  return data;
+}
+
+}  // namespace curvbench

@@ -1,0 +1,158 @@
+// Quadric: the k-ring quadric fit of libigl's principal_curvature (D. Panozzo, E. Puppo,
+// L. Rocca, "Efficient multi-scale curvature and crease estimation", Proc. Computer Graphics,
+// Visualization, Computer Vision and Image Processing 2010, 9-16). Degree-free; label "Quadric".
+//
+// Per vertex v with unit normal n (see "Choices") and its local frame (t1, t2, n):
+//   neighbourhood  the k-ring of v (k = options().ring, default 5, libigl's default radius in
+//                  k-ring mode), centre included; fewer than 6 points: failed (as libigl);
+//                  neighbours whose normal faces away (n_i . n <= 0) are dropped when at least
+//                  6 points remain (libigl's projection-plane check)
+//   points         (u, v, w) = ((x - x_v) . t1, (x - x_v) . t2, (x - x_v) . n)
+//   fit            w = a u^2 + b u v + c v^2 + d u + e v  (+ f with quadric_constant), unweighted
+//                  least squares (coordinates scaled by their RMS distance for conditioning;
+//                  normal equations, a rank-deficient system fails the vertex, where libigl's
+//                  SVD would return its minimum-norm solution)
+//   quantities     the height-function column of paper Table 1 at (0, 0) with f_u = d, f_v = e,
+//                  f_uu = 2a, f_uv = b, f_vv = 2c (curvature_from_height): libigl's fundamental
+//                  forms E, F, G, L, M, N of the quadric give the same shape operator. The
+//                  normal is the quadric's, (-d, -e, 1) normalised in the frame.
+// Sign convention (estimator.h): with the outward normal as the w axis a sphere gives
+// w ~ -(u^2 + v^2)/(2r), so k = -1/r directly (libigl negates its eigenvalues and reports +1/r).
+// Choices (libigl's defaults): the area-weighted vertex normal for the frame and the
+// projection-plane check (option EstimatorOptions::vertex_normals); 5 coefficients through the
+// vertex (option EstimatorOptions::quadric_constant: 6); ring 5 (option ring, `--rings`, any
+// integer >= 1).
+// Boundary vertices: the k-ring is one-sided but the fit is defined (as in libigl): status ok.
+// Cost: O(k^2) points per vertex.
+#include <Eigen/Cholesky>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/errors.h"
+#include "core/shape_operator.h"
+#include "core/text.h"
+#include "mesh/rings.h"
+#include "methods/local_frame.h"
+#include "methods/operator_estimator.h"
+#include "methods/vertex_result.h"
+
+namespace curvbench {
+
+namespace {
+
+constexpr int kMinPoints = 6;  // libigl: at least 6 points, centre included
+constexpr double kDefaultRing = 5.0;
+
+struct QuadricWorkspace final : Workspace {
+  explicit QuadricWorkspace(const Mesh& mesh) : rings(mesh) { keep.reserve(256); }
+  RingCollector rings;
+  std::vector<int> keep;
+};
+
+class QuadricEstimator final : public OperatorEstimator {
+ public:
+  explicit QuadricEstimator(EstimatorOptions options)
+      : OperatorEstimator(options, VertexNormals::area, /*needs_face_geometry=*/false,
+                          /*ring_option=*/true) {
+    const double r = options_.ring;
+    if (!(r == 0.0 || (std::isfinite(r) && r >= 1.0 && r == std::round(r) && r <= 64.0)))
+      throw UsageError("quadric: ring " + format_g(r) +
+                       " is not supported (valid: 0 = default 5, or an integer 1..64)");
+  }
+
+  std::string name() const override { return "quadric"; }
+  std::string display_name() const override { return "Quadric"; }
+  double default_ring() const override { return kDefaultRing; }
+
+  std::unique_ptr<Workspace> make_workspace(const Mesh& mesh) const override {
+    return std::make_unique<QuadricWorkspace>(mesh);
+  }
+
+  void estimate(const MeshContext& ctx, int v, Workspace& base,
+                VertexEstimate& out) const override {
+    auto& ws = static_cast<QuadricWorkspace&>(base);
+    const Mesh& mesh = ctx.mesh;
+    const OperatorMeshData& data = mesh_data(ctx);
+    const double ring = options_.ring > 0.0 ? options_.ring : kDefaultRing;
+    ws.rings.collect(v, ring);
+    const auto nb = ws.rings.neighbours();
+    if (1 + static_cast<int>(nb.size()) < kMinPoints) {
+      set_failed(ring, 1 + static_cast<int>(nb.size()), out);
+      return;
+    }
+    const Vec3 n = data.normal(ctx, v);
+    ws.keep.clear();
+    for (int w : nb)
+      if (data.normal(ctx, w).dot(n) > 0.0) ws.keep.push_back(w);
+    if (1 + static_cast<int>(ws.keep.size()) < kMinPoints) ws.keep.assign(nb.begin(), nb.end());
+    const LocalFrame frame = make_local_frame(n);
+    const Vec3 x0 = mesh.position(v);
+    // RMS tangent distance: the scale of the (u, v) coordinates.
+    double s2 = 0.0;
+    for (int w : ws.keep) {
+      const Vec3 d = mesh.position(w) - x0;
+      const double u = d.dot(frame.t1), t = d.dot(frame.t2);
+      s2 += u * u + t * t;
+    }
+    const double s = std::sqrt(s2 / static_cast<double>(ws.keep.size()));
+    const int points = 1 + static_cast<int>(ws.keep.size());
+    if (!(s > 0.0) || !std::isfinite(s)) {
+      set_failed(ring, points, out);
+      return;
+    }
+    const bool constant = options_.quadric_constant;
+    Eigen::Matrix<double, 6, 6> ata = Eigen::Matrix<double, 6, 6>::Zero();
+    Eigen::Matrix<double, 6, 1> atb = Eigen::Matrix<double, 6, 1>::Zero();
+    const auto add_row = [&](double u, double t, double w) {
+      Eigen::Matrix<double, 6, 1> row;
+      row << u * u, u * t, t * t, u, t, 1.0;
+      ata.noalias() += row * row.transpose();
+      atb.noalias() += w * row;
+    };
+    add_row(0.0, 0.0, 0.0);  // the centre (libigl's k-ring includes it)
+    const double inv = 1.0 / s;
+    for (int w : ws.keep) {
+      const Vec3 d = (mesh.position(w) - x0) * inv;
+      add_row(d.dot(frame.t1), d.dot(frame.t2), d.dot(frame.m));
+    }
+    Eigen::Matrix<double, 6, 1> coef = Eigen::Matrix<double, 6, 1>::Zero();
+    if (constant) {
+      const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> ldlt(ata);
+      if (!solvable(ldlt.vectorD())) {
+        set_failed(ring, points, out);
+        return;
+      }
+      coef = ldlt.solve(atb);
+    } else {
+      const Eigen::LDLT<Eigen::Matrix<double, 5, 5>> ldlt(ata.topLeftCorner<5, 5>());
+      if (!solvable(ldlt.vectorD())) {
+        set_failed(ring, points, out);
+        return;
+      }
+      coef.head<5>() = ldlt.solve(atb.head<5>());
+    }
+    // Back to unscaled coordinates: w = s W(u/s, v/s), so second derivatives divide by s.
+    const Curvature c =
+        curvature_from_height(frame.t1, frame.t2, frame.m, coef(3), coef(4), 2.0 * coef(0) * inv,
+                              coef(1) * inv, 2.0 * coef(2) * inv);
+    if (!set_operator_quantities(c, computes(), points, ring, out)) set_failed(ring, points, out);
+  }
+
+ private:
+  // Full rank: every pivot of the LDLT is clearly positive.
+  template <class D>
+  static bool solvable(const D& d) {
+    const double big = d.cwiseAbs().maxCoeff();
+    return big > 0.0 && std::isfinite(big) && d.minCoeff() > 1e-12 * big;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Estimator> make_quadric_estimator(EstimatorOptions options) {
+  return std::make_unique<QuadricEstimator>(options);
+}
+
+}  // namespace curvbench

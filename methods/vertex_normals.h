@@ -1,0 +1,23 @@
+// Weighted vertex normals of the discrete operators: the vertex normal each method's authors'
+// code uses is selectable (EstimatorOptions::vertex_normals).
+//
+//   n_v = normalize( sum over the faces f of v of  w_f(v) (x1 - x0) x (x2 - x0) / |...| )
+//   area   w = area of f                      (libigl's per_vertex_normals default; equals
+//                                              Mesh::area_weighted_normals)
+//   angle  w = angle of f at v                (Thürmer & Wüthrich 1998)
+//   max    w = |a x b| / (|a|^2 |b|^2) = sin(theta) / (|a| |b|), a, b the edges of f at v
+//          (Max 1999; trimesh2's choice, used by Rusinkiewicz 2004)
+// A vertex without faces, or whose weighted sum vanishes, gets the zero vector. n x 3.
+// Deterministic: each vertex sums its faces in increasing face order.
+#pragma once
+
+#include "core/types.h"
+#include "mesh/mesh.h"
+#include "methods/estimator.h"
+
+namespace curvbench {
+
+/// Normals with the given weighting (not VertexNormals::method_default) and `threads` threads.
+VertexMatrix weighted_vertex_normals(const Mesh& mesh, VertexNormals weighting, int threads);
+
+}  // namespace curvbench
