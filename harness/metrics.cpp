@@ -42,8 +42,13 @@ double scalar_of(Quantity q, const SurfacePoint& p) {
   }
 }
 
-bool usable(const VertexEstimate& e) {
-  return e.status != VertexStatus::excluded && e.normal.allFinite() && std::isfinite(e.H);
+// A vertex counts for quantity q when its estimate is not excluded and q's value is finite (a
+// method or an outside estimator may leave a quantity it does not compute NaN).
+bool usable(Quantity q, const VertexEstimate& e) {
+  if (e.status == VertexStatus::excluded) return false;
+  if (q == Quantity::normal) return e.normal.allFinite();
+  if (q == Quantity::d1) return e.d1.allFinite();
+  return std::isfinite(scalar_of(q, e));
 }
 
 }  // namespace
@@ -138,7 +143,7 @@ ErrorValue compute_error(Quantity q, Norm norm, std::span<const VertexEstimate> 
       const SurfacePoint& p = exact[v];
       if (p.umbilic || std::abs(p.k1 - p.k2) <= 1e-8 * kmax) continue;
       const VertexEstimate& e = estimates[v];
-      if (!usable(e) || !e.d1.allFinite()) {
+      if (!usable(q, e)) {
         ++r.excluded;
         continue;
       }
@@ -154,7 +159,7 @@ ErrorValue compute_error(Quantity q, Norm norm, std::span<const VertexEstimate> 
   }
   for (int v : vertices) {
     const VertexEstimate& e = estimates[v];
-    if (!usable(e)) {
+    if (!usable(q, e)) {
       ++r.excluded;
       continue;
     }

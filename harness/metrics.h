@@ -6,7 +6,8 @@
 //                vertices (|k1 - k2| > 1e-8 max|k|), Linf = max_i e_i
 //   rate         log(e_1 / e_N) / log(h_1 / h_N) with the measured mean edge lengths
 //
-// Vertices whose estimate is `excluded` (NaN by design) are left out of every sum and counted.
+// Vertices whose estimate is `excluded`, or whose value of the quantity scored is NaN (failed, or
+// not computed by the method), are left out of every sum and counted.
 #pragma once
 
 #include <span>
