@@ -1,5 +1,6 @@
 // `curvbench run`: runs declarative experiments (experiments/*.exp) and regenerates results/:
-// per-experiment error CSVs, rates.csv, table2.csv, table4.csv, REPORT.md, plots, CLAIMS.md.
+// per-experiment error CSVs, rates.csv, table2.csv, table4.csv, REPORT.md, plots, CLAIMS.md, and
+// the estimation time of every case in timings/<experiment>.csv (results_table.h).
 //
 // Runs that lose nothing: every finished case is kept in <output>/.cache (case_store.h) and a
 // rerun recomputes only the missing or stale cases; every file is written under a temporary
@@ -9,6 +10,7 @@
 // experiments and are written only by a run that was not interrupted.
 #include <signal.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -125,7 +127,7 @@ Command add_run_command(CLI::App& app) {
       "the outputs instead of the current time, so that two runs give byte-identical files.");
 
   return [args]() {
-    const auto available = load_all(args->experiments_dir);
+    auto available = load_all(args->experiments_dir);
     if (args->list) {
       for (const auto& e : available)
         std::printf("%-10s  %s (paper §%s)  [%s]\n", e.name.c_str(), e.title.c_str(),
@@ -156,6 +158,11 @@ Command add_run_command(CLI::App& app) {
         }
       }
     }
+    // An experiment given as a file outside the experiments folder joins the rates and report.
+    for (const auto& e : selected)
+      if (std::none_of(available.begin(), available.end(),
+                       [&](const Experiment& a) { return a.name == e.name; }))
+        available.push_back(e);
     std::filesystem::create_directories(args->output);
     install_stop_handlers();
     // Temporary files of an earlier run that was killed before it could rename them.
@@ -187,21 +194,23 @@ Command add_run_command(CLI::App& app) {
       ro.stop = stop_requested;
       ro.progress = [](const RunProgress& p) {
         const RunCase& c = *p.current;
+        const char* method = (c.method->is_external() ? c.method->label : c.method->spec).c_str();
         if (p.reused)
           std::fprintf(stderr, "[%3d/%3d] %-9s %-20s L%d %-7s %7d verts  reused\n", p.done, p.total,
-                       c.experiment->name.c_str(), c.mesh->family.c_str(), c.level,
-                       c.method->spec.c_str(), p.vertices);
+                       c.experiment->name.c_str(), c.mesh->family.c_str(), c.level, method,
+                       p.vertices);
         else
           std::fprintf(stderr,
                        "[%3d/%3d] %-9s %-20s L%d %-7s %7d verts %6.2fs  elapsed %s  ETA %s\n",
                        p.done, p.total, c.experiment->name.c_str(), c.mesh->family.c_str(), c.level,
-                       c.method->spec.c_str(), p.vertices, p.case_seconds,
-                       duration(p.elapsed_seconds).c_str(), duration(p.eta_seconds).c_str());
+                       method, p.vertices, p.case_seconds, duration(p.elapsed_seconds).c_str(),
+                       duration(p.eta_seconds).c_str());
       };
       // Each experiment's CSV lands as soon as its last case is done.
       const std::string out_dir = args->output;
       ro.experiment_done = [out_dir](const Experiment& e, const std::vector<ErrorRow>& rows) {
         write_error_csv(out_dir + "/" + e.name + ".csv", rows);
+        write_timing_csv(out_dir + "/timings/" + e.name + ".csv", rows);
         std::fprintf(stderr, "[run] wrote %s/%s.csv\n", out_dir.c_str(), e.name.c_str());
       };
       const RunSummary done = run_experiments(selected, ro);

@@ -16,6 +16,7 @@ packages=(
   libcli11-dev             # command line
   gnuplot-nox              # convergence plots (PNG and SVG)
   time                     # /usr/bin/time -v: peak memory in make bench
+  python3-numpy            # the outside-estimator example (experiments/examples/) and its test
 )
 case "$mode" in
   build) ;;
