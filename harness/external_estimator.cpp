@@ -154,7 +154,9 @@ ExternalResult run_external_estimator(const Mesh& mesh, const ExternalRun& run) 
     result.estimates = std::move(t.estimates);
     result.quantities = std::move(t.quantities);
   } catch (const InputError& e) {
-    throw ExternalEstimatorError(who + " " + quoted + " wrote a bad {out}: " + e.what());
+    // The temporary path means nothing once removed: name it {out}.
+    throw ExternalEstimatorError(who + " " + quoted + " wrote a bad " +
+                                 replace_all(e.what(), out_path.string(), "{out}"));
   }
   return result;
 }
