@@ -31,11 +31,14 @@ struct MeshOptions {
   int max_grid = 256;
 };
 
-// Per-vertex exact quantities at the exact points: ex ey ez, exact normal nx ny nz, k1 k2 H K.
+// Per-vertex exact quantities at the exact points: ex ey ez, exact normal nx ny nz, k1 k2 H K,
+// principal direction d1x d1y d1z and umbilic (1 where d1 is arbitrary); `curvbench score`
+// reads them.
 std::vector<VertexProperty> exact_properties(const GeneratedMesh& gm) {
-  const char* names[] = {"ex", "ey", "ez", "nx", "ny", "nz", "k1", "k2", "H", "K"};
+  const char* names[] = {"ex", "ey", "ez", "nx",  "ny",  "nz",  "k1",
+                         "k2", "H",  "K",  "d1x", "d1y", "d1z", "umbilic"};
   std::vector<VertexProperty> props;
-  for (const char* name : names) props.push_back({name, {}, false});
+  for (const char* name : names) props.push_back({name, {}, std::string(name) == "umbilic"});
   const int n = gm.mesh.num_vertices();
   for (auto& p : props) p.values.resize(n);
   for (int i = 0; i < n; ++i) {
@@ -49,7 +52,11 @@ std::vector<VertexProperty> exact_properties(const GeneratedMesh& gm) {
                              sp.k1,
                              sp.k2,
                              sp.H,
-                             sp.K};
+                             sp.K,
+                             sp.d1.x(),
+                             sp.d1.y(),
+                             sp.d1.z(),
+                             sp.umbilic ? 1.0 : 0.0};
     for (size_t k = 0; k < props.size(); ++k) props[k].values[i] = values[k];
   }
   return props;
@@ -86,7 +93,7 @@ int write_generated_mesh(const MeshOptions& o) {
   if (ext == "ply")
     std::printf(
         "vertex properties:     ex ey ez (exact point), nx ny nz (exact normal), "
-        "k1 k2 H K (exact)\n");
+        "k1 k2 H K, d1x d1y d1z, umbilic (exact)\n");
   return 0;
 }
 
@@ -165,7 +172,9 @@ Command add_mesh_command(CLI::App& app) {
                                "along the torus");
   auto* output = sub->add_option("--output", o->output,
                                  "Output file, .off or .ply (PLY carries the exact point ex ey "
-                                 "ez, exact normal nx ny nz, and k1 k2 H K per vertex)");
+                                 "ez, exact normal nx ny nz, k1 k2 H K, principal direction "
+                                 "d1x d1y d1z and umbilic per vertex; `curvbench score` reads "
+                                 "them)");
   auto* table = sub->add_flag("--table4", o->table4,
                               "Print the Table 4 reproduction (isosurface torus position errors)");
   auto* max_grid = sub->add_option("--max-grid", o->max_grid,

@@ -12,6 +12,7 @@
 // experiments and are written only by a run that was not interrupted.
 #include <signal.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -156,7 +157,7 @@ Command add_run_command(CLI::App& app) {
       "the outputs instead of the current time, so that two runs give byte-identical files.");
 
   return [args]() {
-    const auto available = load_all(args->experiments_dir);
+    auto available = load_all(args->experiments_dir);
     if (args->list) {
       for (const auto& e : available)
         std::printf("%-10s  %s (paper §%s)  [%s]\n", e.name.c_str(), e.title.c_str(),
@@ -195,6 +196,12 @@ Command add_run_command(CLI::App& app) {
       return 0;
     }
 
+    // An experiment given as a file outside the experiments folder joins the rates and report.
+    for (const auto& e : selected)
+      if (std::none_of(available.begin(), available.end(),
+                       [&](const Experiment& a) { return a.name == e.name; }))
+        available.push_back(e);
+
     PipelineOptions po;
     po.experiments = selected;
     po.available = available;
@@ -210,14 +217,15 @@ Command add_run_command(CLI::App& app) {
     po.message = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
     po.progress = [](const RunProgress& p) {
       const RunCase& c = *p.current;
+      const char* method = (c.method->is_external() ? c.method->label : c.method->spec).c_str();
       if (p.reused)
         std::fprintf(stderr, "[%3d/%3d] %-9s %-20s L%d %-7s %7d verts  reused\n", p.done, p.total,
                      c.experiment->name.c_str(), c.mesh->family.c_str(), c.level,
-                     c.method->spec.c_str(), p.vertices);
+                     method, p.vertices);
       else
         std::fprintf(stderr, "[%3d/%3d] %-9s %-20s L%d %-7s %7d verts %6.2fs  elapsed %s  ETA %s\n",
                      p.done, p.total, c.experiment->name.c_str(), c.mesh->family.c_str(), c.level,
-                     c.method->spec.c_str(), p.vertices, p.case_seconds,
+                     method, p.vertices, p.case_seconds,
                      duration(p.elapsed_seconds).c_str(), duration(p.eta_seconds).c_str());
     };
     po.stop = stop_requested;

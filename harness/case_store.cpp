@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -9,6 +10,8 @@
 
 #include "core/build_info.h"
 #include "core/errors.h"
+#include "core/text.h"
+#include "harness/external_estimator.h"
 #include "harness/results_table.h"
 #include "mesh/io.h"
 
@@ -44,8 +47,26 @@ std::string file_safe(const std::string& s) {
   return out.empty() ? "_" : out;
 }
 
+// Line 3 of a case file: the estimation time of the case, in seconds.
+constexpr const char* kSecondsComment = "# estimate-seconds ";
+
 const char* yes_no(bool b) {
   return b ? "yes" : "no";
+}
+
+// An outside estimator's command and the contents of the files it names (e.g. its script).
+std::string external_inputs(const ExperimentMethod& m) {
+  std::string s = ";command=" + escaped(m.command);
+  for (const std::string& f : files_named_in(m.command)) {
+    std::string hash;
+    try {
+      hash = hex64(fnv1a64(read_file(f)));
+    } catch (const InputError&) {
+      hash = "unreadable";
+    }
+    s += ";file=" + escaped(f) + ":" + hash;
+  }
+  return s;
 }
 
 // The method's part of case_inputs: its spec, label and every estimator option it sets.
@@ -55,7 +76,8 @@ std::string method_inputs(const ExperimentMethod& m) {
          std::string(m.has_vertex_set ? to_string(m.vertex_set) : "default") +
          ";centre=" + yes_no(m.include_centre) + ";qr-tol=" + format_double(m.qr_tolerance) +
          ";safeguard=" + yes_no(m.normal_safeguard) + ";adaptive=" + yes_no(m.adaptive) +
-         ";weight-power=" + format_double(m.weight_power);
+         ";weight-power=" + format_double(m.weight_power) +
+         (m.is_external() ? external_inputs(m) : std::string());
 }
 
 std::string first_line(std::uint64_t inputs, std::uint64_t content) {
@@ -152,6 +174,20 @@ std::optional<std::vector<ErrorRow>> CaseStore::load(const RunCase& c) const {
   }
   // A consistent file of this case has one row per panel measure, all of this case.
   if (rows.size() != panel_measures(*c.experiment).size()) return std::nullopt;
+  // The estimation time measured when the case was computed (kept, so that a reused case
+  // reports the same time).
+  const std::string key = "\n" + std::string(kSecondsComment);
+  if (const auto at = rest.find(key); at != std::string_view::npos) {
+    const auto from = at + key.size();
+    const std::string value(rest.substr(from, rest.find('\n', from) - from));
+    double seconds;
+    try {
+      seconds = parse_double(value, p);
+    } catch (const InputError&) {
+      return std::nullopt;
+    }
+    for (auto& r : rows) r.seconds = seconds;
+  }
   for (const auto& r : rows)
     if (r.experiment != c.experiment->name || r.family != c.mesh->family || r.level != c.level)
       return std::nullopt;
@@ -159,8 +195,10 @@ std::optional<std::vector<ErrorRow>> CaseStore::load(const RunCase& c) const {
 }
 
 void CaseStore::save(const RunCase& c, const std::vector<ErrorRow>& rows) const {
+  const double seconds = rows.empty() ? std::nan("") : rows.front().seconds;
   const std::string rest =
-      error_csv_text(rows, "# " + case_inputs(c) + ";code=" + escaped(version_));
+      error_csv_text(rows, "# " + case_inputs(c) + ";code=" + escaped(version_) + "\n" +
+                               kSecondsComment + format_double(seconds));
   write_file_atomic(path(c), first_line(case_hash(c, version_), fnv1a64(rest)) + "\n" + rest);
 }
 

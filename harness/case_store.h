@@ -6,6 +6,8 @@
 //   <store>/<experiment>/<family>_L<level>_<method>_<8 hex>.csv
 //     line 1   "# curvbench case: inputs <16 hex> content <16 hex>"
 //     line 2   "# " + case_inputs(c) + ";code=" + code version   (for people; not parsed)
+//     line 3   "# estimate-seconds <s>": the case's estimation time when it was computed; a
+//              reused case keeps it (ErrorRow::seconds), so reruns report the same times
 //     then     the errors CSV of results_table.h (header + this case's rows)
 //
 //   <method> is the method's label or spec with characters outside [A-Za-z0-9.+-] replaced by

@@ -143,8 +143,26 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
           else if (k == "vertex-set") {
             m.vertex_set = parse_vertex_set(v);
             m.has_vertex_set = true;
+          } else if (m.is_external() && k == "name") {
+            if (v.empty() || v.find(',') != std::string::npos)
+              throw InputError(where + ": a name must be non-empty and contain no comma");
+            m.label = v;
+          } else if (m.is_external() && k == "command")
+            m.command = v;
+          else if (m.is_external() && k == "timeout") {
+            m.timeout_seconds = parse_double(v, where);
+            if (!(m.timeout_seconds > 0))
+              throw InputError(where + ": timeout must be a positive number of seconds");
           } else
             throw InputError(where + ": unknown method option '" + k + "'");
+        }
+        if (m.is_external()) {
+          if (m.label.empty()) throw InputError(where + ": method external needs name=NAME");
+          if (m.command.find("{mesh}") == std::string::npos ||
+              m.command.find("{out}") == std::string::npos)
+            throw InputError(where +
+                             ": method external needs command=\"... {mesh} ... {out}\" (the "
+                             "input mesh and the estimate CSV it writes)");
         }
         e.methods.push_back(m);
       } else if (key == "panel") {

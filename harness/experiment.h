@@ -12,6 +12,9 @@
 //   method      lhf-2 [ring=2.5] [vertex-set=interior]   one line per method and degree
 //               ablation options: centre=yes|no qr-tol=X safeguard=yes|no adaptive=yes|no
 //               weight-power=X, and label="LHF-2 interp" to tell variants apart
+//               external name=N command="prog {mesh} {out}" [timeout=SECONDS]: an outside
+//               estimator (external_estimator.h), labelled N, limited to SECONDS per case
+//               (default 600)
 //   panel       fig3-left "Fig. 3 (left). ..." normal L2  one table/plot per mesh family
 //
 // Methods that score interior vertices only (Estimator::scores_interior_only(): Xu-2, paper
@@ -44,6 +47,11 @@ struct ExperimentMethod {
   bool normal_safeguard = true;  ///< safeguard=yes|no (gamma of eq. 15)
   bool adaptive = true;          ///< adaptive=yes|no (half-ring growth)
   double weight_power = -1.0;    ///< weight-power=X (< 0: eq. 15's d/4)
+  // spec "external": an outside estimator (external_estimator.h); its name is the label.
+  std::string command;           ///< command=".. {mesh} .. {out}"
+  double timeout_seconds = 0.0;  ///< timeout=S (<= 0: kDefaultExternalTimeout)
+
+  bool is_external() const { return spec == "external"; }
 };
 
 struct ExperimentPanel {

@@ -70,6 +70,27 @@ bool computes(const ComputedQuantities& computed, Quantity q) {
   return false;
 }
 
+void mark_computed(ComputedQuantities& computed, Quantity q) {
+  switch (q) {
+    case Quantity::normal:
+      computed.normal = true;
+      break;
+    case Quantity::H:
+      computed.mean = true;
+      break;
+    case Quantity::K:
+      computed.gaussian = true;
+      break;
+    case Quantity::k1:
+    case Quantity::k2:
+      computed.principal = true;
+      break;
+    case Quantity::d1:
+      computed.directions = true;
+      break;
+  }
+}
+
 const char* to_string(Quantity q) {
   switch (q) {
     case Quantity::normal:

@@ -6,8 +6,8 @@
 //                vertices (|k1 - k2| > 1e-8 max|k|), Linf = max_i e_i
 //   rate         log(e_1 / e_N) / log(h_1 / h_N) with the measured mean edge lengths
 //
-// Vertices whose estimate is `excluded` (NaN by design) or whose value of the quantity is NaN (a
-// failed row) are left out of every sum and counted.
+// Vertices whose estimate is `excluded`, or whose value of the quantity scored is NaN (failed, or
+// not computed by the method), are left out of every sum and counted.
 #pragma once
 
 #include <span>
@@ -49,6 +49,8 @@ struct ErrorValue {
 
 /// Whether a method computing `computed` outputs quantity q (d1: the directions).
 bool computes(const ComputedQuantities& computed, Quantity q);
+/// Marks q as output (k1 or k2: the principal curvatures; d1: the directions).
+void mark_computed(ComputedQuantities& computed, Quantity q);
 
 /// Error of one quantity in one norm over the given vertices (indices into both arrays).
 ErrorValue compute_error(Quantity q, Norm norm, std::span<const VertexEstimate> estimates,

@@ -16,6 +16,7 @@
 #include "core/build_info.h"
 #include "core/errors.h"
 #include "harness/metrics.h"
+#include "harness/report_field.h"
 #include "mesh/io.h"
 #include "mesh/rings.h"
 #include "meshgen/generate.h"
@@ -127,15 +128,15 @@ void write_table4_csv(const std::string& path, int max_grid_points) {
 }
 
 bool render_plot(const std::string& base, const std::string& title,
-                 const std::vector<ErrorRow>& rows) {
+                 const std::vector<ErrorRow>& rows, const PlotAxis& x_axis) {
   std::vector<const ErrorRow*> ptrs;
   for (const auto& r : rows) ptrs.push_back(&r);
   const auto series = series_of(ptrs);
   std::ostringstream gp;
-  gp << "set logscale xy\nset format y '10^{%L}'\nset xlabel 'mean edge length h'\n"
-        "set ylabel 'error'\nset key outside right top\nset grid\nset xrange [*:*] reverse\n"
-     << "set label 1 \"" << build_info() << ", " << utc_timestamp()
-     << "\" at screen 0.01, screen 0.02 font ',8' noenhanced\n"
+  gp << "set logscale xy\nset format y '10^{%L}'\nset xlabel '" << x_axis.label << "'\n"
+     << "set ylabel 'error'\nset key outside right top\nset grid\n"
+     << (x_axis.reversed ? "set xrange [*:*] reverse\n" : "") << "set label 1 \"" << build_info()
+     << ", " << utc_timestamp() << "\" at screen 0.01, screen 0.02 font ',8' noenhanced\n"
      << "set title \"" << title << "\" noenhanced\n";
   for (size_t i = 0; i < series.size(); ++i) {
     gp << "$S" << i << " << EOD\n";
@@ -149,7 +150,8 @@ bool render_plot(const std::string& base, const std::string& title,
   for (size_t i = 0; i < series.size(); ++i) {
     const double rate = series_rate(series[i]);
     plot << (i ? ", " : "") << "$S" << i << " using 1:2 with linespoints lw 2 pt " << (i % 7) + 4
-         << " title \"" << series[i].method << " (rate " << fixed(rate) << ")\" noenhanced";
+         << " title \"" << series[i].method
+         << (x_axis.rate_in_legend ? " (rate " + fixed(rate) + ")" : "") << "\" noenhanced";
   }
   plot << "\n";
   // Script and images under temporary names (swept by remove_stale_temp_files if killed).
@@ -331,6 +333,7 @@ std::string write_report(const std::vector<Experiment>& experiments, const Repor
       }
     }
   }
+  if (!append_field_estimators_section(md, experiments, options, missing_plots)) return "";
   if (missing_plots > 0)
     std::fprintf(stderr, "report: %d plots not rendered (is gnuplot installed?)\n", missing_plots);
   const std::string path = dir + "/REPORT.md";

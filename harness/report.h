@@ -33,11 +33,20 @@ void write_table4_csv(const std::string& path, int max_grid_points);
 /// Returns the path of REPORT.md, or "" if options.stop asked to stop (REPORT.md untouched).
 std::string write_report(const std::vector<Experiment>& experiments, const ReportOptions& options);
 
+/// The x axis of a plot: by default the mean edge length h, decreasing to the right, with each
+/// method's convergence rate in the legend. The accuracy-versus-cost plots put the time per
+/// vertex there instead (the rows' `h` then holds it).
+struct PlotAxis {
+  std::string label = "mean edge length h";
+  bool reversed = true;
+  bool rate_in_legend = true;
+};
+
 /// Renders one panel's log-log plot (error vs h, one line per method, rate in the legend) to
 /// <base>.png and <base>.svg with gnuplot, each under its temp_path() name first and then renamed
 /// into place. Returns false if gnuplot is unavailable or fails. If gnuplot was killed by SIGINT
 /// or SIGTERM (std::system ignores them in the caller meanwhile), the signal is re-raised.
 bool render_plot(const std::string& base, const std::string& title,
-                 const std::vector<ErrorRow>& rows);
+                 const std::vector<ErrorRow>& rows, const PlotAxis& x_axis = {});
 
 }  // namespace curvbench

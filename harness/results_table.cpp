@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <tuple>
 
@@ -93,6 +94,31 @@ std::string error_csv_text(const std::vector<ErrorRow>& rows, const std::string&
 
 void write_error_csv(const std::string& path, const std::vector<ErrorRow>& rows) {
   write_file_atomic(path, error_csv_text(rows, provenance_comment()));
+}
+
+void write_timing_csv(const std::string& path, const std::vector<ErrorRow>& rows) {
+  std::ostringstream out;
+  out << provenance_comment() << "\n"
+      << "experiment,family,level,vertices,method,seconds,us_per_vertex\n";
+  std::set<std::tuple<std::string, int, std::string>> seen;
+  for (const auto& r : rows) {
+    if (!seen.insert({r.family, r.level, r.method}).second) continue;
+    out << r.experiment << ',' << r.family << ',' << r.level << ',' << r.vertices << ',' << r.method
+        << ',' << format_double(r.seconds) << ','
+        << format_double(r.vertices > 0 ? 1e6 * r.seconds / r.vertices : r.seconds) << "\n";
+  }
+  write_file_atomic(path, out.str());
+}
+
+std::vector<TimingRow> read_timing_csv(const std::string& path) {
+  const CsvTable t = read_csv_table(path);
+  const size_t ce = t.col("experiment"), cf = t.col("family"), cl = t.col("level"),
+               cv = t.col("vertices"), cm = t.col("method"), cs = t.col("seconds");
+  std::vector<TimingRow> out;
+  for (size_t i = 0; i < t.rows.size(); ++i)
+    out.push_back({t.text(i, ce), t.text(i, cf), t.text(i, cm), t.integer(i, cl), t.integer(i, cv),
+                   t.number(i, cs)});
+  return out;
 }
 
 void write_rate_csv(const std::string& path, const std::vector<RateRow>& rows) {

@@ -7,9 +7,15 @@
 // rates CSV (results/rates.csv), one row per (experiment, family, method, quantity, norm):
 //   experiment,family,method,degree,rings,noise,vertex_set,quantity,norm,levels,h_first,h_last,
 //   e_first,e_last,rate,pairwise_rates
+// timings CSV (one per experiment, results/timings/<name>.csv), one row per case:
+//   experiment,family,level,vertices,method,seconds,us_per_vertex
+//   the wall time of the case's estimation (ErrorRow::seconds). Unlike the errors CSV it is not
+//   reproducible byte for byte: it is measured when a case is computed, and kept with the case
+//   in the case store, so a rerun that reuses a case writes its stored time again.
 // Numbers are written with %.17g so a CSV read back gives the same doubles.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -36,6 +42,10 @@ struct ErrorRow {
   int excluded = 0;        ///< vertices of the set skipped (estimate excluded)
   int degree_reduced = 0;  ///< vertices of the mesh with status degree_reduced
   int failed = 0;          ///< vertices of the mesh with status failed
+  /// Wall time of the case's estimation (estimate_mesh, or an outside estimator's command), in
+  /// seconds; NaN when unknown. Not a column of the errors CSV (timings vary from run to run,
+  /// the errors CSV does not): kept in the case store and written to the timings CSV.
+  double seconds = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct RateRow {
@@ -54,6 +64,20 @@ void write_rate_csv(const std::string& path, const std::vector<RateRow>& rows);
 /// The text of an errors CSV: `comment` (one or more '#' lines, without the final newline),
 /// the header, then the rows. write_error_csv uses provenance_comment() as the comment.
 std::string error_csv_text(const std::vector<ErrorRow>& rows, const std::string& comment);
+
+/// One row of a timings CSV.
+struct TimingRow {
+  std::string experiment, family, method;
+  int level = 0;
+  int vertices = 0;
+  double seconds = 0.0;
+};
+
+/// Writes the timings CSV of an experiment's rows (one row per case: the first row of each
+/// (family, level, method)) atomically.
+void write_timing_csv(const std::string& path, const std::vector<ErrorRow>& rows);
+/// Reads a timings CSV. Throws InputError naming file and line.
+std::vector<TimingRow> read_timing_csv(const std::string& path);
 
 /// Reads an errors CSV written by write_error_csv. Throws InputError naming file and line.
 std::vector<ErrorRow> read_error_csv(const std::string& path);

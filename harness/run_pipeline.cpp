@@ -111,6 +111,7 @@ PipelineResult run_pipeline(const PipelineOptions& o) {
     const auto rows = stored_rows(o.experiments, store, o.output);
     for (const auto& [name, r] : rows) {
       write_error_csv(o.output + "/" + name + ".csv", r);
+      write_timing_csv(o.output + "/timings/" + name + ".csv", r);
       say("[run] wrote " + o.output + "/" + name + ".csv from the case store");
     }
   }
@@ -135,6 +136,7 @@ PipelineResult run_pipeline(const PipelineOptions& o) {
     // Each experiment's CSV lands as soon as its last case is done.
     ro.experiment_done = [&say, out_dir](const Experiment& e, const std::vector<ErrorRow>& rows) {
       write_error_csv(out_dir + "/" + e.name + ".csv", rows);
+      write_timing_csv(out_dir + "/timings/" + e.name + ".csv", rows);
       say("[run] wrote " + out_dir + "/" + e.name + ".csv");
     };
     if (sharded)

@@ -10,6 +10,7 @@
 #include "core/errors.h"
 #include "core/text.h"
 #include "harness/case_store.h"
+#include "harness/external_estimator.h"
 #include "meshgen/generate.h"
 #include "methods/estimator.h"
 
@@ -113,17 +114,45 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads) 
   const ScoredMesh& sm = cache.get(c.mesh->family, c.level, e.noise_order, e.noise_seed);
   const Mesh& mesh = sm.generated.mesh;
 
-  EstimatorOptions opt;
-  opt.ring = c.method->ring;
-  opt.include_centre = c.method->include_centre;
-  opt.qr_tolerance = c.method->qr_tolerance;
-  opt.normal_safeguard = c.method->normal_safeguard;
-  opt.adaptive = c.method->adaptive;
-  opt.weight_power = c.method->weight_power;
-  opt.noisy = e.noisy;
-  opt.threads = threads;
-  const auto estimator = make_estimator(c.method->spec, opt);
-  const std::vector<VertexEstimate> est = estimate_mesh(mesh, *estimator);
+  using clock = std::chrono::steady_clock;
+  std::vector<VertexEstimate> est;
+  double seconds = 0.0;
+  std::string method_label, rings = "";
+  int degree = 0;
+  bool interior_only = false;     // the method scores interior vertices only (Xu-2, paper §5.2)
+  ComputedQuantities computed{};  // quantities the method outputs (an outside one: what it wrote)
+  if (c.method->is_external()) {
+    ExternalRun run;
+    run.command = c.method->command;
+    run.timeout_seconds = c.method->timeout_seconds;
+    run.case_name = "experiment " + e.name + ", " + c.mesh->family + " level " +
+                    std::to_string(c.level) + ", method " + c.method->label;
+    ExternalResult ext = run_external_estimator(mesh, run);
+    est = std::move(ext.estimates);
+    seconds = ext.seconds;
+    method_label = c.method->label;
+    computed = ComputedQuantities{false, false, false, false, false};
+    for (Quantity q : ext.quantities) mark_computed(computed, q);
+  } else {
+    EstimatorOptions opt;
+    opt.ring = c.method->ring;
+    opt.include_centre = c.method->include_centre;
+    opt.qr_tolerance = c.method->qr_tolerance;
+    opt.normal_safeguard = c.method->normal_safeguard;
+    opt.adaptive = c.method->adaptive;
+    opt.weight_power = c.method->weight_power;
+    opt.noisy = e.noisy;
+    opt.threads = threads;
+    const auto estimator = make_estimator(c.method->spec, opt);
+    const auto t0 = clock::now();
+    est = estimate_mesh(mesh, *estimator);
+    seconds = std::chrono::duration<double>(clock::now() - t0).count();
+    method_label = c.method->label.empty() ? estimator->label() : c.method->label;
+    interior_only = estimator->scores_interior_only();
+    computed = estimator->computes();
+    degree = estimator->options().degree;
+    rings = format_g(opt.ring > 0 ? opt.ring : estimator->default_ring());
+  }
 
   int reduced = 0, failed = 0;
   for (const auto& x : est) {
@@ -136,12 +165,11 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads) 
   VertexSet set = e.vertex_set;
   if (c.method->has_vertex_set)
     set = c.method->vertex_set;
-  else if (estimator->scores_interior_only() && mesh.has_boundary() && set == VertexSet::all)
+  else if (interior_only && mesh.has_boundary() && set == VertexSet::all)
     set = VertexSet::interior;
   const std::vector<int> vertices = select_vertices(mesh, set);
 
   std::vector<ErrorRow> rows;
-  const ComputedQuantities computed = estimator->computes();
   for (const auto& [q, norm] : panel_measures(e)) {
     if (!computes(computed, q)) continue;  // not an output of the method: no error row
     const ErrorValue ev = compute_error(q, norm, est, sm.exact, vertices);
@@ -152,9 +180,9 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads) 
     r.level = c.level;
     r.vertices = mesh.num_vertices();
     r.h = mesh.mean_edge_length();
-    r.method = c.method->label.empty() ? estimator->label() : c.method->label;
-    r.degree = estimator->options().degree;
-    r.rings = format_g(opt.ring > 0 ? opt.ring : estimator->default_ring());
+    r.method = method_label;
+    r.degree = degree;
+    r.rings = rings;
     r.noise = noise_label(e, c.mesh->family);
     r.vertex_set = to_string(set);
     r.quantity = to_string(q);
@@ -164,6 +192,7 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads) 
     r.excluded = ev.excluded;
     r.degree_reduced = reduced;
     r.failed = failed;
+    r.seconds = seconds;
     rows.push_back(std::move(r));
   }
   return rows;

@@ -82,7 +82,9 @@ std::vector<RunCase> expand_cases(const std::vector<Experiment>& experiments);
 /// The (quantity, norm) pairs of the experiment's panels, in first-seen order: the rows of a case.
 std::vector<std::pair<Quantity, Norm>> panel_measures(const Experiment& e);
 
-/// Runs one case and returns its rows: every panel's (quantity, norm) on the case's vertex set.
+/// Runs one case and returns its rows: every panel's (quantity, norm) on the case's vertex set,
+/// each with the wall time of the estimation (ErrorRow::seconds). A `method external` runs its
+/// command (external_estimator.h) and throws ExternalEstimatorError if it fails.
 std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads);
 
 /// Expected relative cost of a case for balancing shards: 4^level (the vertex count grows about

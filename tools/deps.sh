@@ -17,6 +17,7 @@ packages=(
   pybind11-dev python3-dev python3-numpy python3-pytest  # Python module (for /usr/bin/python3)
   gnuplot-nox              # convergence plots (PNG and SVG)
   time                     # /usr/bin/time -v: peak memory in make bench
+  python3-numpy            # the outside-estimator example (experiments/examples/) and its test
 )
 case "$mode" in
   build) ;;

@@ -135,6 +135,9 @@ TEST(CaseStore, RoundTripAndRejectsStaleCorruptOrTruncatedFiles) {
   const auto back = store.load(c);
   ASSERT_TRUE(back.has_value());
   EXPECT_EQ(text_of(*back), text_of(rows));  // every field, doubles bit for bit (%.17g)
+  // The estimation time measured for the case comes back with it.
+  EXPECT_GT(rows.front().seconds, 0.0);
+  for (const auto& r : *back) EXPECT_EQ(r.seconds, rows.front().seconds);
   for (const auto& entry : fs::recursive_directory_iterator(dir))
     EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();
 
@@ -213,6 +216,7 @@ TEST(RunExperiments, StoppedRunResumesToTheRowsOfAnUninterruptedOne) {
   EXPECT_EQ(second.reused, 2);
   EXPECT_EQ(second.computed, 2);
   EXPECT_EQ(reused, (std::vector<bool>{true, true, false, false}));
+  EXPECT_EQ(second.rows[0].seconds, first.rows[0].seconds);  // a reused case keeps its time
   EXPECT_EQ(text_of(second.rows), text_of(reference.rows));
 
   stored.force = true;

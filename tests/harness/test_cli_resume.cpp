@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -120,12 +121,14 @@ int run_and_signal(const fs::path& exp_dir, const fs::path& out, const fs::path&
   return wait_for(c);
 }
 
-// Every file under `dir` (relative path -> bytes), skipping the case store.
+// Every file under `dir` (relative path -> bytes), skipping the case store and the measured
+// estimation times (timings/: each computed case has its own; checked separately below).
 std::map<std::string, std::string> outputs(const fs::path& dir) {
   std::map<std::string, std::string> files;
   for (const auto& entry : fs::recursive_directory_iterator(dir)) {
     const auto rel = fs::relative(entry.path(), dir).string();
-    if (!entry.is_regular_file() || rel.rfind(".cache", 0) == 0) continue;
+    if (!entry.is_regular_file() || rel.rfind(".cache", 0) == 0 || rel.rfind("timings", 0) == 0)
+      continue;
     files[rel] = slurp(entry.path());
   }
   return files;
@@ -227,11 +230,16 @@ TEST_F(CliResume, ForceRecomputesEverythingToTheSameBytes) {
   const auto out = *root_ / "force";
   auto [code, log] = run_to_end(*exp_dir_, out, *root_ / "force1.log");
   ASSERT_EQ(code, 0) << log;
-  // A complete rerun reuses every case.
+  const std::string timings = slurp(out / "timings" / "resume.csv");
+  // One row per case (header, provenance comment), each with a positive time.
+  EXPECT_EQ(std::count(timings.begin(), timings.end(), '\n'), 18 + 2) << timings;
+  EXPECT_EQ(timings.find(",nan,"), std::string::npos) << timings;
+  // A complete rerun reuses every case, and with it the time measured when it was computed.
   std::tie(code, log) = run_to_end(*exp_dir_, out, *root_ / "force2.log");
   ASSERT_EQ(code, 0) << log;
   EXPECT_EQ(reused_count(log), 18) << log;
   expect_same_as_reference(out);
+  EXPECT_EQ(slurp(out / "timings" / "resume.csv"), timings);
   // --force recomputes every case and still gives the same bytes.
   std::tie(code, log) = run_to_end(*exp_dir_, out, *root_ / "force3.log", /*force=*/true);
   ASSERT_EQ(code, 0) << log;

@@ -1,0 +1,237 @@
+#include "harness/report_field.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <string>
+
+#include "harness/metrics.h"
+#include "harness/results_table.h"
+
+namespace curvbench {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr Quantity kQuantities[] = {Quantity::normal, Quantity::H, Quantity::K, Quantity::d1};
+
+bool is_field_experiment(const Experiment& e) {
+  return e.name.rfind("field-estimators", 0) == 0;
+}
+
+// "1.23e-04", or "n/a" when not finite.
+std::string error_text(double e) {
+  if (!std::isfinite(e)) return "n/a";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2e", e);
+  return buf;
+}
+
+// "1.98", or "n/a".
+std::string rate_text(double r) {
+  if (!std::isfinite(r)) return "n/a";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f", r);
+  return buf;
+}
+
+// One method's rows on one family: (quantity, norm) -> level -> row.
+struct MethodRows {
+  std::string method;
+  std::map<std::pair<std::string, std::string>, std::map<int, const ErrorRow*>> series;
+
+  const std::map<int, const ErrorRow*>* find(Quantity q, Norm n) const {
+    const auto it = series.find({to_string(q), to_string(n)});
+    return it == series.end() ? nullptr : &it->second;
+  }
+};
+
+// Average rate over the first and last level, and the rate between the two finest levels.
+std::pair<double, double> rates(const std::map<int, const ErrorRow*>& s) {
+  if (s.size() < 2) return {std::nan(""), std::nan("")};
+  const ErrorRow* first = s.begin()->second;
+  const ErrorRow* last = s.rbegin()->second;
+  const ErrorRow* before_last = std::prev(s.end(), 2)->second;
+  return {convergence_rate(first->error, last->error, first->h, last->h),
+          convergence_rate(before_last->error, last->error, before_last->h, last->h)};
+}
+
+bool converges(const std::pair<double, double>& r) {
+  return r.first >= kConvergenceRateThreshold && r.second >= kConvergenceRateThreshold;
+}
+
+std::string quantity_name(Quantity q) {
+  switch (q) {
+    case Quantity::normal:
+      return "normals";
+    case Quantity::H:
+      return "mean curvature H";
+    case Quantity::K:
+      return "Gaussian curvature K";
+    case Quantity::d1:
+      return "principal direction d1";
+    default:
+      return to_string(q);
+  }
+}
+
+}  // namespace
+
+bool append_field_estimators_section(std::ostringstream& md,
+                                     const std::vector<Experiment>& experiments,
+                                     const ReportOptions& options, int& missing_plots) {
+  const std::string dir = options.results_dir;
+  bool header_written = false;
+  for (const Experiment& e : experiments) {
+    if (!is_field_experiment(e)) continue;
+    const std::string csv = dir + "/" + e.name + ".csv";
+    if (!fs::exists(csv)) continue;
+    const std::vector<ErrorRow> rows = read_error_csv(csv);
+    // Microseconds per vertex by (family, level, method), when the timings were kept.
+    std::map<std::tuple<std::string, int, std::string>, double> us_per_vertex;
+    const std::string timings = dir + "/timings/" + e.name + ".csv";
+    if (fs::exists(timings))
+      for (const TimingRow& t : read_timing_csv(timings))
+        if (t.vertices > 0 && std::isfinite(t.seconds))
+          us_per_vertex[{t.family, t.level, t.method}] = 1e6 * t.seconds / t.vertices;
+
+    if (!header_written) {
+      md << "## The estimators in common use\n\n"
+         << "Every built-in estimator on the same meshes with the same metrics (experiments "
+            "`field_estimators*.exp`). Per mesh family: the errors at the finest level with, "
+            "in brackets, the average convergence rate log(e1/eN)/log(h1/hN) of the series; "
+            "the time per vertex of the estimation at the finest level (wall time of the whole "
+            "mesh over its vertices, with the run's threads, measured when the case was "
+            "computed); and the accuracy-versus-cost plot of the L2 error in H against the time "
+            "per vertex, one point per method and level (levels joined, finest at the bottom "
+            "right for a converging method). A series *converges* when its average L2 rate and "
+            "its rate between the two finest levels are both at least "
+         << rate_text(kConvergenceRateThreshold) << " (a finest-level error of at most "
+         << error_text(kRoundOffError) << " counts as exact up to round-off)"
+         << "; the words below are generated from the tables with that threshold.\n\n";
+      header_written = true;
+    }
+    for (const ExperimentMesh& mesh : e.meshes) {
+      std::vector<MethodRows> methods;
+      std::map<std::string, size_t> index;
+      std::set<int> levels;
+      const ErrorRow* any = nullptr;
+      for (const ErrorRow& r : rows) {
+        if (r.family != mesh.family) continue;
+        any = &r;
+        levels.insert(r.level);
+        auto [it, inserted] = index.try_emplace(r.method, methods.size());
+        if (inserted) methods.push_back({r.method, {}});
+        methods[it->second].series[{r.quantity, r.norm}][r.level] = &r;
+      }
+      if (any == nullptr) continue;
+      const int finest = *levels.rbegin();
+      md << "### " << e.name << ": `" << mesh.family << "`"
+         << (any->noise != "none" ? " (noise " + any->noise + ")" : std::string()) << "\n\n"
+         << "Finest level " << finest << ": " << any->vertices
+         << " vertices, h = " << error_text(any->h) << "; levels " << *levels.begin() << "-"
+         << finest << ".\n\n"
+         << "| method |";
+      for (Quantity q : kQuantities)
+        for (Norm n : {Norm::L2, Norm::Linf})
+          md << " " << to_string(q) << " " << to_string(n) << " |";
+      md << " us/vertex |\n|---|";
+      for (size_t i = 0; i < 2 * std::size(kQuantities) + 1; ++i) md << "---|";
+      md << "\n";
+      for (const MethodRows& m : methods) {
+        md << "| " << m.method << " |";
+        for (Quantity q : kQuantities)
+          for (Norm n : {Norm::L2, Norm::Linf}) {
+            const auto* s = m.find(q, n);
+            if (s == nullptr || s->empty() || s->rbegin()->first != finest) {
+              md << " - |";
+              continue;
+            }
+            md << " " << error_text(s->rbegin()->second->error) << " ("
+               << rate_text(rates(*s).first) << ") |";
+          }
+        const auto t = us_per_vertex.find({mesh.family, finest, m.method});
+        md << " " << (t == us_per_vertex.end() ? "n/a" : rate_text(t->second)) << " |\n";
+      }
+      md << "\n";
+
+      // Which estimators converge, per quantity (L2).
+      for (Quantity q : kQuantities) {
+        std::string yes, no, exact;
+        for (const MethodRows& m : methods) {
+          const auto* s = m.find(q, Norm::L2);
+          if (s == nullptr || s->size() < 2) continue;
+          const auto r = rates(*s);
+          if (s->rbegin()->second->error <= kRoundOffError)
+            exact += (exact.empty() ? "" : ", ") + m.method;
+          else if (converges(r))
+            yes += (yes.empty() ? "" : ", ") + m.method + " (" + rate_text(r.first) + ")";
+          else
+            no += (no.empty() ? "" : ", ") + m.method + " (" + rate_text(r.first) + ", last " +
+                  rate_text(r.second) + ")";
+        }
+        if (yes.empty() && no.empty() && exact.empty()) continue;
+        md << "- " << quantity_name(q) << ": "
+           << (yes.empty() ? "no estimator converges" : "converge: " + yes)
+           << (no.empty() ? "" : "; do not converge (average rate, last rate): " + no)
+           << (exact.empty() ? ""
+                             : "; exact up to round-off (error <= " + error_text(kRoundOffError) +
+                                   "): " + exact)
+           << ".\n";
+      }
+      // The most accurate estimator in H at the finest level, and its cost.
+      const MethodRows* best = nullptr;
+      double best_error = INFINITY;
+      for (const MethodRows& m : methods)
+        if (const auto* s = m.find(Quantity::H, Norm::L2); s && !s->empty()) {
+          const double err = s->rbegin()->second->error;
+          if (std::isfinite(err) && err < best_error) {
+            best_error = err;
+            best = &m;
+          }
+        }
+      if (best != nullptr) {
+        const auto t = us_per_vertex.find({mesh.family, finest, best->method});
+        md << "- Smallest L2 error in H at level " << finest << ": " << best->method << " ("
+           << error_text(best_error)
+           << (t == us_per_vertex.end() ? "" : ", " + rate_text(t->second) + " us/vertex")
+           << ").\n";
+      }
+      md << "\n";
+
+      // Accuracy versus cost: L2 error in H against microseconds per vertex.
+      std::vector<ErrorRow> frontier;
+      for (const MethodRows& m : methods)
+        if (const auto* s = m.find(Quantity::H, Norm::L2))
+          for (const auto& [level, r] : *s) {
+            const auto t = us_per_vertex.find({mesh.family, level, m.method});
+            if (t == us_per_vertex.end()) continue;
+            ErrorRow p = *r;
+            p.h = t->second;  // the x axis of the plot
+            frontier.push_back(p);
+          }
+      if (options.plots && !frontier.empty()) {
+        if (options.stop && options.stop()) return false;
+        const std::string base = "field-frontier_" + e.name + "_" + mesh.family;
+        PlotAxis axis;
+        axis.label = "time per vertex (microseconds)";
+        axis.reversed = false;
+        axis.rate_in_legend = false;
+        if (render_plot(dir + "/plots/" + base,
+                        "Accuracy versus cost: L2 error in H against time per vertex [" +
+                            mesh.family + (any->noise != "none" ? ", noise " + any->noise : "") +
+                            "]",
+                        frontier, axis))
+          md << "![" << base << "](plots/" << base << ".png) ([svg](plots/" << base << ".svg))\n\n";
+        else
+          ++missing_plots;
+      }
+    }
+  }
+  return true;
+}
+
+}  // namespace curvbench

@@ -1,0 +1,86 @@
+// The REPORT.md section "The estimators in common use" (harness/report_field.h): finest-level
+// errors with rates, the time per vertex from the timings CSV, and the generated words about
+// convergence follow the numbers and the stated thresholds.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "harness/report_field.h"
+#include "harness/results_table.h"
+#include "tests/harness/cli_runner.h"
+
+namespace curvbench {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Three levels with h = 0.4, 0.2, 0.1 and errors e0 * (h/0.4)^rate, H L2 only.
+std::vector<ErrorRow> series(const std::string& method, double e0, double rate) {
+  std::vector<ErrorRow> rows;
+  for (int level = 1; level <= 3; ++level) {
+    ErrorRow r;
+    r.experiment = "field-estimators-test";
+    r.surface = "bump";
+    r.family = "bump-irregular";
+    r.level = level;
+    r.vertices = 100 << (2 * level);
+    r.h = 0.4 / (1 << (level - 1));
+    r.method = method;
+    r.noise = "none";
+    r.vertex_set = "all";
+    r.quantity = "H";
+    r.norm = "L2";
+    r.error = e0 * std::pow(r.h / 0.4, rate);
+    r.seconds = 1e-6 * 5.0 * r.vertices;  // 5 us per vertex
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+TEST(ReportField, TablesRatesTimesAndWordsFollowTheNumbers) {
+  const fs::path dir = testing::fresh_dir("report_field");
+  Experiment e;
+  e.name = "field-estimators-test";
+  e.meshes = {{"bump-irregular", {1, 2, 3}}};
+  std::vector<ErrorRow> rows;
+  for (const auto& [method, e0, rate] : std::vector<std::tuple<std::string, double, double>>{
+           {"Second", 1e-2, 2.0}, {"Stalls", 1e-1, 0.2}, {"Exact", 1e-14, -1.0}}) {
+    const auto s = series(method, e0, rate);
+    rows.insert(rows.end(), s.begin(), s.end());
+  }
+  write_error_csv((dir / "field-estimators-test.csv").string(), rows);
+  write_timing_csv((dir / "timings" / "field-estimators-test.csv").string(), rows);
+
+  ReportOptions options;
+  options.results_dir = dir.string();
+  options.plots = false;
+  std::ostringstream md;
+  int missing = 0;
+  ASSERT_TRUE(append_field_estimators_section(md, {e}, options, missing));
+  const std::string text = md.str();
+  EXPECT_NE(text.find("## The estimators in common use"), std::string::npos) << text;
+  // Finest level: 1e-2 * (1/4)^2 = 6.25e-4, rate 2, 5 us per vertex.
+  EXPECT_NE(text.find("| Second | - | - | 6.25e-04 (2.00) | - |"), std::string::npos) << text;
+  EXPECT_NE(text.find("| 5.00 |"), std::string::npos) << text;
+  EXPECT_NE(text.find("- mean curvature H: converge: Second (2.00); do not converge (average "
+                      "rate, last rate): Stalls (0.20, last 0.20); exact up to round-off "
+                      "(error <= 1.00e-10): Exact."),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("Smallest L2 error in H at level 3: Exact"), std::string::npos) << text;
+
+  // No field-estimators experiment: nothing.
+  Experiment other = e;
+  other.name = "fig03-05";
+  std::ostringstream none;
+  ASSERT_TRUE(append_field_estimators_section(none, {other}, options, missing));
+  EXPECT_TRUE(none.str().empty());
+}
+
+}  // namespace
+}  // namespace curvbench
