@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "bench/table5.h"
+#include "harness/paper_tables.h"
 #include "meshgen/generate.h"
 #include "methods/estimator.h"
 
@@ -137,19 +138,13 @@ void register_all() {
 
 // ---- results/table5_timing.md -----------------------------------------------------------------
 
-// The paper's Table 5 (seconds; 3 GHz Pentium 4, gcc 4.2.4): PAPER_CLAIMS.md §F.
-const std::vector<std::string> kPaperMethods = {"Xu-2",  "LOP-2",  "LHF-2",  "LHF-3",
-                                                "LHF-4", "LSCM-2", "LSCM-3", "LSCM-4"};
-const double kPaper[4][2 + 8] = {
-    {1338, 2676, 0.035, 0.011, 0.0061, 0.013, 0.028, 0.20, 0.36, 0.66},
-    {5246, 10492, 0.12, 0.039, 0.023, 0.050, 0.11, 0.81, 1.43, 2.65},
-    {21156, 42312, 0.51, 0.16, 0.096, 0.20, 0.44, 3.32, 5.74, 10.58},
-    {85208, 170416, 2.06, 0.65, 0.38, 0.83, 1.81, 13.66, 23.21, 43.16}};
+// The paper's Table 5 (seconds; 3 GHz Pentium 4, gcc 4.2.4): harness/paper_tables.h.
+std::vector<std::string> paper_methods() {
+  return {paper::kTable5Methods.begin(), paper::kTable5Methods.end()};
+}
 
 double paper_time(const std::string& method, int level) {
-  for (size_t j = 0; j < kPaperMethods.size(); ++j)
-    if (kPaperMethods[j] == method) return kPaper[level - 1][2 + j];
-  return 0.0;
+  return paper::table5_seconds(method, level);
 }
 
 std::string cpu_model() {
@@ -254,7 +249,7 @@ std::string make_markdown(const std::vector<Table5Row>& rows, const std::string&
       "(PAPER_CLAIMS.md §F).\n\n";
 
   // Our Table 5.
-  std::vector<std::string> ours = kPaperMethods;
+  std::vector<std::string> ours = paper_methods();
   for (const char* m : {"Jet-2", "Jet-3", "Jet-4", "LSCM-fast-2", "LSCM-fast-3", "LSCM-fast-4"})
     ours.push_back(m);
   md += "## Our times (seconds, 1 thread), paper's in parentheses\n\n| mesh | #V | #T |";
@@ -265,8 +260,9 @@ std::string make_markdown(const std::vector<Table5Row>& rows, const std::string&
   for (int level = 1; level <= kLevels; ++level) {
     const Table5Row* any = t.get("LHF-2", level);
     md += "| " + std::to_string(level) + " | " + (any ? std::to_string(any->verts) : "-") + " (" +
-          fmt("%.0f", kPaper[level - 1][0]) + ") | " + (any ? std::to_string(any->tris) : "-") +
-          " (" + fmt("%.0f", kPaper[level - 1][1]) + ") |";
+          fmt("%.0f", double(paper::kTable5[level - 1].vertices)) + ") | " +
+          (any ? std::to_string(any->tris) : "-") + " (" +
+          fmt("%.0f", double(paper::kTable5[level - 1].triangles)) + ") |";
     for (const auto& m : ours) {
       const Table5Row* r = t.get(m, level);
       const double p = paper_time(m, level);

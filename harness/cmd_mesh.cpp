@@ -12,6 +12,7 @@
 #include "core/errors.h"
 #include "core/text.h"
 #include "harness/commands.h"
+#include "harness/paper_tables.h"
 #include "mesh/io.h"
 #include "meshgen/generate.h"
 #include "meshgen/torus_isosurface.h"
@@ -90,19 +91,6 @@ int write_generated_mesh(const MeshOptions& o) {
   return 0;
 }
 
-// Paper Table 4, as printed (n, #verts, average edge length, L2, Linf, rates L2, Linf).
-struct PaperRow {
-  int n, verts;
-  double h, l2, linf, rate_l2, rate_linf;
-};
-constexpr PaperRow kPaperTable4[] = {
-    {16, 320, 0.11, 3.60e-3, 9.30e-3, NAN, NAN},
-    {32, 1760, 0.048, 1.12e-3, 3.47e-3, 1.69, 1.42},
-    {64, 7320, 0.023, 2.59e-4, 9.03e-4, 2.11, 1.94},
-    {128, 31136, 0.011, 6.71e-5, 2.25e-4, 1.95, 2.00},
-    {256, 122464, 0.0057, 1.65e-5, 5.70e-5, 2.03, 1.98},
-};
-
 int print_table4(int max_grid) {
   const std::vector<Table4Row> rows = table4(max_grid);
   std::printf(
@@ -115,12 +103,13 @@ int print_table4(int max_grid) {
               "mean/2 [paper]", "L2 (RMS) [paper]", "Linf (max) [paper]", "rate L2", "rate Linf");
   for (size_t i = 0; i < rows.size(); ++i) {
     const Table4Row& r = rows[i];
-    const PaperRow* p = nullptr;
-    for (const auto& pr : kPaperTable4)
-      if (pr.n == r.grid_points) p = &pr;
+    const paper::Table4Row* p = nullptr;
+    for (const auto& pr : paper::kTable4)
+      if (pr.grid_points == r.grid_points) p = &pr;
     char verts[32], half[32], l2[40], linf[40], rl2[32] = "-", rlinf[32] = "-";
-    std::snprintf(verts, sizeof verts, "%d [%d]", r.vertices, p ? p->verts : 0);
-    std::snprintf(half, sizeof half, "%.4f [%.2g]", r.mean_edge_length / 2, p ? p->h : NAN);
+    std::snprintf(verts, sizeof verts, "%d [%d]", r.vertices, p ? p->vertices : 0);
+    std::snprintf(half, sizeof half, "%.4f [%.2g]", r.mean_edge_length / 2,
+                  p ? p->edge_column : NAN);
     std::snprintf(l2, sizeof l2, "%.3e [%.2e]", r.rms_error, p ? p->l2 : NAN);
     std::snprintf(linf, sizeof linf, "%.3e [%.2e]", r.max_error, p ? p->linf : NAN);
     if (i > 0) {

@@ -16,6 +16,7 @@
 #include "core/build_info.h"
 #include "core/errors.h"
 #include "harness/metrics.h"
+#include "harness/paper_tables.h"
 #include "mesh/io.h"
 #include "mesh/rings.h"
 #include "meshgen/generate.h"
@@ -38,6 +39,20 @@ std::string fixed(double x, int digits = 2) {
   if (!std::isfinite(x)) return "n/a";
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.*f", digits, x);
+  return buf;
+}
+
+// A value of the paper's tables as it prints it: 3.60e-3 (3 significant digits, short exponent).
+std::string paper_sci(double x) {
+  const int ex = static_cast<int>(std::floor(std::log10(x)));
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2fe%d", x / std::pow(10.0, ex), ex);
+  return buf;
+}
+
+std::string paper_g(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", x);
   return buf;
 }
 
@@ -102,14 +117,13 @@ void write_table2_csv(const std::string& path) {
   spec.level = 2;
   const GeneratedMesh g = generate_mesh(spec);
   RingCollector rc(g.mesh);
-  const int paper[] = {7, 13, 19, 31, 37, 55};
   std::ostringstream out;
   out << provenance_comment() << "\n"
       << "degree,coefficients,ring,points_with_centre,paper_points\n";
   for (int d = 1; d <= 6; ++d) {
     rc.collect(0, default_ring(d));
     out << d << ',' << num_coefficients(d) << ',' << default_ring(d) << ','
-        << rc.neighbours().size() + 1 << ',' << paper[d - 1] << "\n";
+        << rc.neighbours().size() + 1 << ',' << paper::kTable2[d - 1].points_with_centre << "\n";
   }
   write_file_atomic(path, out.str());
 }
@@ -222,11 +236,6 @@ std::string write_report(const std::vector<Experiment>& experiments, const Repor
   // Table 4.
   const auto t4 = read_simple_csv(dir + "/table4.csv");
   if (t4.size() > 1) {
-    const char* paper_rows[][5] = {{"320", "0.11", "3.60e-3", "9.30e-3", ""},
-                                   {"1760", "0.048", "1.12e-3", "3.47e-3", ""},
-                                   {"7320", "0.023", "2.59e-4", "9.03e-4", ""},
-                                   {"31136", "0.011", "6.71e-5", "2.25e-4", ""},
-                                   {"122464", "0.0057", "1.65e-5", "5.70e-5", ""}};
     md << "## Table 4. Input position errors of torus meshes extracted by marching cubes\n\n"
        << "Signed distance function of the torus (R = 1, r = 0.3) sampled at n points per axis "
           "on [-1.5, 1.5]^3, one vertex per sign-changing grid edge (ALGORITHM_NOTES §10.1(a))."
@@ -244,11 +253,12 @@ std::string write_report(const std::vector<Experiment>& experiments, const Repor
         rate_l2 = fixed(std::log2(std::stod(p[4]) / rms));
         rate_inf = fixed(std::log2(std::stod(p[5]) / mx));
       }
-      const auto* paper = i - 1 < 5 ? paper_rows[i - 1] : nullptr;
-      md << "| " << r[0] << "^3 | " << r[1] << " / " << (paper ? paper[0] : "-") << " | "
-         << sci(rms) << " / " << (paper ? paper[2] : "-") << " | " << sci(mx) << " / "
-         << (paper ? paper[3] : "-") << " | " << rate_l2 << " | " << rate_inf << " | " << sci(h, 3)
-         << " | " << sci(0.5 * h, 2) << " / " << (paper ? paper[1] : "-") << " |\n";
+      const paper::Table4Row* p = i - 1 < paper::kTable4.size() ? &paper::kTable4[i - 1] : nullptr;
+      md << "| " << r[0] << "^3 | " << r[1] << " / " << (p ? std::to_string(p->vertices) : "-")
+         << " | " << sci(rms) << " / " << (p ? paper_sci(p->l2) : "-") << " | " << sci(mx) << " / "
+         << (p ? paper_sci(p->linf) : "-") << " | " << rate_l2 << " | " << rate_inf << " | "
+         << sci(h, 3) << " | " << sci(0.5 * h, 2) << " / " << (p ? paper_g(p->edge_column) : "-")
+         << " |\n";
     }
     md << "\n";
   }

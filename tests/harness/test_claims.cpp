@@ -1,7 +1,8 @@
 // Claims evaluator (harness/claims.h) on synthetic result CSVs: errors e = C h^p with chosen
 // rates, written with write_error_csv into a temporary folder, plus hand-written Table 2/4/5.
-// An "ideal" set is built to satisfy every band of PAPER_CLAIMS.md; the tests then break one
-// property at a time and check that the right claim flips.
+// An "ideal" set is built to satisfy every band of the registry (docs/claims.md; the bands are read
+// back with claim_band); the tests then break one property at a time and check that the right
+// claim flips. The paper's tables come from harness/paper_tables.h.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -15,6 +16,7 @@
 
 #include "core/errors.h"
 #include "harness/claims.h"
+#include "harness/paper_tables.h"
 #include "harness/results_table.h"
 
 namespace curvbench {
@@ -225,48 +227,45 @@ SyntheticSet ideal_set() {
 
 // Table 2 with the paper's numbers (pts[3] replaced if given).
 std::string table2_text(int points_d4 = 31) {
-  return "degree,coefficients,ring,points_with_centre,paper_points\n"
-         "1,3,1,7,7\n2,6,1.5,13,13\n3,10,2,19,19\n4,15,2.5," +
-         std::to_string(points_d4) + ",31\n5,21,3,37,37\n6,28,3.5,55,55\n";
+  std::string out = "degree,coefficients,ring,points_with_centre,paper_points\n";
+  for (const auto& r : paper::kTable2)
+    out += std::to_string(r.degree) + "," + std::to_string(r.coefficients) + "," +
+           format_double(0.5 * (r.degree + 1)) + "," +
+           std::to_string(r.degree == 4 ? points_d4 : r.points_with_centre) + "," +
+           std::to_string(r.points_with_centre) + "\n";
+  return out;
 }
 
 // Table 4 with the paper's numbers; mean edge length = edge_factor x the paper's column.
 std::string table4_text(double edge_factor = 2.0, const std::string& rms16 = "3.60e-3",
                         int verts16 = 320) {
-  const int n[5] = {16, 32, 64, 128, 256};
-  const int v[5] = {verts16, 1760, 7320, 31136, 122464};
-  const double col[5] = {0.11, 0.048, 0.023, 0.011, 0.0057};
-  const std::string rms[5] = {rms16, "1.12e-3", "2.59e-4", "6.71e-5", "1.65e-5"};
-  const std::string mx[5] = {"9.30e-3", "3.47e-3", "9.03e-4", "2.25e-4", "5.70e-5"};
   std::string out = "grid_points,vertices,mean_edge_length,paper_edge_length,rms_error,max_error\n";
-  for (int i = 0; i < 5; ++i)
-    out += std::to_string(n[i]) + "," + std::to_string(v[i]) + "," +
-           format_double(edge_factor * col[i]) + "," + format_double(0.5 * edge_factor * col[i]) +
-           "," + rms[i] + "," + mx[i] + "\n";
+  for (size_t i = 0; i < paper::kTable4.size(); ++i) {
+    const auto& r = paper::kTable4[i];
+    const double col = r.edge_column;
+    out += std::to_string(r.grid_points) + "," + std::to_string(i == 0 ? verts16 : r.vertices) +
+           "," + format_double(edge_factor * col) + "," + format_double(0.5 * edge_factor * col) +
+           "," + (i == 0 ? rms16 : format_double(r.l2)) + "," + format_double(r.linf) + "\n";
+  }
   return out;
 }
 
 // The paper's Table 5 with every time multiplied by `scale`, plus optional extra methods whose
 // time is a multiple of LHF-2's.
 std::string table5_text(double scale, const std::map<std::string, double>& extra = {}) {
-  const char* methods[8] = {"Xu-2",  "LOP-2",  "LHF-2",  "LHF-3",
-                            "LHF-4", "LSCM-2", "LSCM-3", "LSCM-4"};
-  const double t[4][8] = {{0.035, 0.011, 0.0061, 0.013, 0.028, 0.20, 0.36, 0.66},
-                          {0.12, 0.039, 0.023, 0.050, 0.11, 0.81, 1.43, 2.65},
-                          {0.51, 0.16, 0.096, 0.20, 0.44, 3.32, 5.74, 10.58},
-                          {2.06, 0.65, 0.38, 0.83, 1.81, 13.66, 23.21, 43.16}};
-  const int verts[4] = {1338, 5246, 21156, 85208};
   std::string out = "mesh,level,verts,tris,method,degree,threads,seconds,tris_per_second\n";
   auto row = [&](int l, const std::string& m, double sec) {
-    const int tris = 2 * verts[l];
-    out += "torus-structured," + std::to_string(l + 1) + "," + std::to_string(verts[l]) + "," +
+    const int verts = paper::kTable5[l].vertices, tris = paper::kTable5[l].triangles;
+    out += "torus-structured," + std::to_string(l + 1) + "," + std::to_string(verts) + "," +
            std::to_string(tris) + "," + m + "," +
            std::string(1, std::isdigit(static_cast<unsigned char>(m.back())) ? m.back() : '2') +
            ",1," + format_double(sec) + "," + format_double(tris / sec) + "\n";
   };
   for (int l = 0; l < 4; ++l) {
-    for (int m = 0; m < 8; ++m) row(l, methods[m], scale * t[l][m]);
-    for (const auto& [m, factor] : extra) row(l, m, factor * scale * t[l][2]);
+    for (size_t m = 0; m < paper::kTable5Methods.size(); ++m)
+      row(l, std::string(paper::kTable5Methods[m]), scale * paper::kTable5[l].seconds[m]);
+    for (const auto& [m, factor] : extra)
+      row(l, m, factor * scale * paper::table5_seconds("LHF-2", l + 1));
   }
   // Multi-threaded rows are ignored (they would make LSCM look fast).
   out += "torus-structured,1,1338,2676,LSCM-2,2,8,0.0001,2.676e7\n";
@@ -318,10 +317,43 @@ TEST(Claims, IdealSetReproducesEveryClaim) {
   EXPECT_NE(claim(results, "A5").evidence.find("aggregate"), std::string::npos);
 }
 
+// The synthetic rates of ideal_set() sit inside the registry's bands (read back from the same
+// entries the evaluator uses), so a change of a band shows up here first.
+TEST(Claims, IdealSetRatesAreInsideTheRegistryBands) {
+  EXPECT_TRUE(claim_band("B1", "rate").holds(2.0));
+  EXPECT_TRUE(claim_band("B2", "H_Linf_rate").holds(1.0));
+  EXPECT_TRUE(claim_band("B2", "H_L2_rate").holds(2.0));
+  EXPECT_TRUE(claim_band("B3", "rate").holds(1.8));
+  EXPECT_TRUE(claim_band("B3", "rate").holds(1.5));
+  EXPECT_TRUE(claim_band("B6", "ratio").holds(1.2));
+  EXPECT_TRUE(claim_band("C1", "ratio").holds(0.8));
+  EXPECT_TRUE(claim_band("C3", "normal_rate").holds(5.0));
+  EXPECT_TRUE(claim_band("C3", "curvature_rate").holds(4.0));
+  EXPECT_TRUE(claim_band("C4", "normal_rate").holds(3.0));
+  EXPECT_TRUE(claim_band("C4", "H_rate").holds(2.0));
+  EXPECT_TRUE(claim_band("C5", "quartic_rate_gap").holds(2.0));
+  EXPECT_TRUE(claim_band("E2", "L2_rate").holds(2.0));
+  EXPECT_TRUE(claim_band("E2", "Linf_rate").holds(1.5));
+  EXPECT_TRUE(claim_band("E3", "rate").holds(1.0));
+  EXPECT_TRUE(claim_band("E8", "rate").holds(1.5));
+  EXPECT_TRUE(claim_band("E9", "rate").holds(0.7));
+  EXPECT_TRUE(claim_band("F2", "time_ratio").holds(0.011 / 0.0061));
+  EXPECT_TRUE(claim_band("F7", "speedup").holds(4.5));
+  EXPECT_TRUE(claim_band("F9", "time_ratio").holds(20.0));
+  // Band texts as printed in CLAIMS.md.
+  EXPECT_EQ(claim_band("B1", "rate").text(), "in [1.6, 2.6]");
+  EXPECT_EQ(claim_band("C3", "normal_rate").text(), ">= 4.60");
+  EXPECT_EQ(claim_band("A5", "relative_difference").text(), "<= 1e-8");
+  EXPECT_EQ(claim_band("B6", "ratio").text(), "within a factor 1.5");
+  EXPECT_THROW(claim_band("B1", "no such band"), std::out_of_range);
+  EXPECT_THROW(claim_band("Z9", "rate"), std::out_of_range);
+}
+
 TEST(Claims, ChangedNormalRateFlipsB1) {
   TempDir dir;
   SyntheticSet s = ideal_set();
-  // LHF-2 normals converging at first order on the well-shaped torus.
+  // LHF-2 normals converging at first order (below the band) on the well-shaped torus.
+  ASSERT_FALSE(claim_band("B1", "rate").holds(1.0));
   s.set("fig03-05", "torus-jittered", "LHF-2", "normal", "L2", 1.0, 1.0);
   s.set("fig03-05", "torus-jittered", "LOP-2", "normal", "L2", 1.0, 1.0);
   write_ideal(dir, s);
@@ -343,7 +375,8 @@ TEST(Claims, ChangedNormalRateFlipsB1) {
 TEST(Claims, B2FlipsWhenMeanCurvatureIsNotSuperConvergent) {
   TempDir dir;
   SyntheticSet s = ideal_set();
-  s.set("fig03-05", "torus-iso-projected", "LSCM-2", "H", "L2", 1.0, 1.2);  // below [1.4, 2.4]
+  const double below = claim_band("B2", "H_L2_rate").lo - 0.2;
+  s.set("fig03-05", "torus-iso-projected", "LSCM-2", "H", "L2", 1.0, below);
   write_ideal(dir, s);
   const auto results = evaluate_claims(dir.str());
   EXPECT_EQ(verdict(results, "B1"), Verdict::reproduced);
