@@ -91,6 +91,14 @@ int write_generated_mesh(const MeshOptions& o) {
   return 0;
 }
 
+// "torus-structured 1..6, ..." from the generator's own table, so the help cannot go stale.
+std::string level_ranges() {
+  std::string s;
+  for (const auto& f : mesh_families())
+    s += (s.empty() ? "" : ", ") + f + " 1.." + std::to_string(max_mesh_level(f));
+  return s;
+}
+
 int print_table4(int max_grid) {
   const std::vector<Table4Row> rows = table4(max_grid);
   std::printf(
@@ -130,15 +138,14 @@ int print_table4(int max_grid) {
 Command add_mesh_command(CLI::App& app) {
   auto* sub = app.add_subcommand(
       "mesh",
-      "Generate a test mesh (ALGORITHM_NOTES 10) and write it with its exact per-vertex "
+      "Generate a test mesh (docs/mesh_families.md) and write it with its exact per-vertex "
       "quantities, or print the reproduction of the paper's Table 4");
   auto o = std::make_shared<MeshOptions>();
   std::string families;
   for (const auto& f : mesh_families()) families += (families.empty() ? "" : ", ") + f;
   auto* family = sub->add_option("--family", o->family, "Mesh family: " + families);
-  auto* level = sub->add_option(
-      "--level", o->level,
-      "Resolution level, 1 = coarsest (torus-structured 1..4, torus-iso* 1..5, bump-* 1..5)");
+  auto* level = sub->add_option("--level", o->level,
+                                "Resolution level, 1 = coarsest (" + level_ranges() + ")");
   auto* noise = sub->add_option("--noise-order", o->noise_order,
                                 "Add alpha h^k normal noise of order k (1..4; 0 = none), "
                                 "alpha = 0.1 N(0,1)");

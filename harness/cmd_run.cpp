@@ -9,6 +9,7 @@
 // experiments and are written only by a run that was not interrupted.
 #include <signal.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -24,6 +25,7 @@
 #include "harness/commands.h"
 #include "harness/report.h"
 #include "harness/runner.h"
+#include "harness/well_shaped_torus_table.h"
 
 namespace curvbench::cli {
 
@@ -177,6 +179,15 @@ Command add_run_command(CLI::App& app) {
       std::fprintf(stderr, "[run] Table 4 (isosurface torus, n = 16..%d)\n", args->table4_max);
       write_table4_csv(args->output + "/table4.csv", args->table4_max);
       if (stop_requested()) return interrupted(0, 0, 0);
+      if (std::any_of(selected.begin(), selected.end(), [](const Experiment& e) {
+            return std::any_of(e.meshes.begin(), e.meshes.end(), [](const ExperimentMesh& m) {
+              return m.family == "torus-unstructured";
+            });
+          })) {
+        std::fprintf(stderr, "[run] well-shaped torus meshes (torus-unstructured, levels 1-4)\n");
+        write_well_shaped_torus_csv(args->output + "/torus_unstructured.csv");
+        if (stop_requested()) return interrupted(0, 0, 0);
+      }
 
       std::fprintf(stderr, "[run] %zu experiments, %zu cases (method x mesh level)\n",
                    selected.size(), cases.size());
