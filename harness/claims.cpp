@@ -65,6 +65,74 @@ Band claim_band(const std::string& id, const std::string& name) {
   return it->second;
 }
 
+namespace {
+
+// Conjunction: not reproduced if any cited claim is not reproduced; reproduced if every cited
+// claim is; otherwise (some cited claims lack data) not applicable. `verdict_of` picks the
+// verdict (ours or the level-halving one) of a cited claim.
+void evaluate_all_of(const claims::ClaimEntry& def, const std::vector<ClaimResult>& earlier,
+                     Verdict ClaimResult::*verdict_of, Verdict& verdict, std::string& evidence) {
+  int rep = 0, na = 0;
+  std::vector<std::string> lines;
+  for (const auto& id : def.all_of) {
+    const auto it = std::find_if(earlier.begin(), earlier.end(),
+                                 [&](const ClaimResult& x) { return x.id == id; });
+    const Verdict v = it == earlier.end() ? Verdict::not_applicable : (*it).*verdict_of;
+    rep += v == Verdict::reproduced;
+    na += v == Verdict::not_applicable;
+    lines.push_back(std::string(v == Verdict::reproduced       ? "[ok] "
+                                : v == Verdict::not_applicable ? "[missing] "
+                                                               : "[FAIL] ") +
+                    id + ": " + to_string(v));
+  }
+  const int n = static_cast<int>(def.all_of.size());
+  const int failed = n - rep - na;
+  verdict = failed > 0 ? Verdict::not_reproduced
+            : rep == n ? Verdict::reproduced
+                       : Verdict::not_applicable;
+  if (failed == 0 && na > 0 && rep > 0)
+    lines.push_back("[info] partially evaluated: " + std::to_string(rep) + " of " +
+                    std::to_string(n) + " cited claims reproduced, the rest lack data");
+  evidence = claims::join(lines, "\n");
+}
+
+// The [ok]/[FAIL] lines of `b` whose outcome differs from the line at the same position among
+// the [ok]/[FAIL] lines of `a` (both evaluations run the same checks in the same order); every
+// [FAIL] line of `b` if the numbers of checks differ.
+std::string differing_checks(const std::string& a, const std::string& b) {
+  auto checks = [](const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);)
+      if (line.rfind("[ok]", 0) == 0 || line.rfind("[FAIL]", 0) == 0) out.push_back(line);
+    return out;
+  };
+  const auto ca = checks(a), cb = checks(b);
+  std::vector<std::string> out;
+  for (size_t i = 0; i < cb.size(); ++i) {
+    const bool fail_b = cb[i].rfind("[FAIL]", 0) == 0;
+    if (ca.size() != cb.size() ? fail_b : fail_b != (ca[i].rfind("[FAIL]", 0) == 0))
+      out.push_back(cb[i]);
+  }
+  return claims::join(out, "\n");
+}
+
+// Sets the rate formula for the lifetime of the object.
+class FormulaScope {
+ public:
+  explicit FormulaScope(claims::RateFormula f) : saved_(claims::rate_formula()) {
+    claims::rate_formula() = f;
+  }
+  ~FormulaScope() { claims::rate_formula() = saved_; }
+  FormulaScope(const FormulaScope&) = delete;
+  FormulaScope& operator=(const FormulaScope&) = delete;
+
+ private:
+  claims::RateFormula saved_;
+};
+
+}  // namespace
+
 std::vector<ClaimResult> evaluate_claims(const std::string& results_dir) {
   const claims::Data data(results_dir);
   std::vector<ClaimResult> out;
@@ -74,35 +142,25 @@ std::vector<ClaimResult> evaluate_claims(const std::string& results_dir) {
     r.statement = def.statement;
     r.band = def.band;
     if (def.check) {
+      {
+        const FormulaScope ours(claims::RateFormula::measured_h);
+        claims::Check c;
+        def.check(data, c);
+        r.verdict = c.verdict();
+        r.evidence = c.evidence();
+      }
+      const FormulaScope paper(claims::RateFormula::level_halving);
       claims::Check c;
       def.check(data, c);
-      r.verdict = c.verdict();
-      r.evidence = c.evidence();
+      r.halving_verdict = c.verdict();
+      if (r.halving_verdict != r.verdict)
+        r.halving_evidence = differing_checks(r.evidence, c.evidence());
     } else {
-      // Conjunction: not reproduced if any cited claim is not reproduced; reproduced if every
-      // cited claim is; otherwise (some cited claims lack data) not applicable.
-      int rep = 0, na = 0;
-      std::vector<std::string> lines;
-      for (const auto& id : def.all_of) {
-        const auto it =
-            std::find_if(out.begin(), out.end(), [&](const ClaimResult& x) { return x.id == id; });
-        const Verdict v = it == out.end() ? Verdict::not_applicable : it->verdict;
-        rep += v == Verdict::reproduced;
-        na += v == Verdict::not_applicable;
-        lines.push_back(std::string(v == Verdict::reproduced       ? "[ok] "
-                                    : v == Verdict::not_applicable ? "[missing] "
-                                                                   : "[FAIL] ") +
-                        id + ": " + to_string(v));
-      }
-      const int n = static_cast<int>(def.all_of.size());
-      const int failed = n - rep - na;
-      r.verdict = failed > 0 ? Verdict::not_reproduced
-                  : rep == n ? Verdict::reproduced
-                             : Verdict::not_applicable;
-      if (failed == 0 && na > 0 && rep > 0)
-        lines.push_back("[info] partially evaluated: " + std::to_string(rep) + " of " +
-                        std::to_string(n) + " cited claims reproduced, the rest lack data");
-      r.evidence = claims::join(lines, "\n");
+      evaluate_all_of(def, out, &ClaimResult::verdict, r.verdict, r.evidence);
+      std::string halving;
+      evaluate_all_of(def, out, &ClaimResult::halving_verdict, r.halving_verdict, halving);
+      if (r.halving_verdict != r.verdict)
+        r.halving_evidence = differing_checks(r.evidence, halving);
     }
     out.push_back(std::move(r));
   }
@@ -125,7 +183,9 @@ std::string claims_markdown(const std::vector<ClaimResult>& results,
         "advance. A claim outside its band is reported as *not reproduced*, and the methods are "
         "not tuned to fit it. A claim whose data is missing, or whose run used a different "
         "setup, is *not applicable*. Rates are log(e_first/e_last)/log(h_first/h_last) over the "
-        "levels present, with the measured mean edge length h; \"levels 1-4: a, b, c, d\" "
+        "levels present, with the measured mean edge length h; each rate line also gives the "
+        "paper's level-halving rate (1/(L-1)) log2(e_first/e_last), every claim is evaluated "
+        "with both, and a claim whose verdict differs is flagged. \"levels 1-4: a, b, c, d\" "
         "lists a value per mesh level. "
         "Evidence lines are tagged [ok], [FAIL], [missing] or [info].\n\n"
      << "**Summary:** " << rep << " reproduced, " << notrep << " not reproduced, " << na
@@ -133,8 +193,11 @@ std::string claims_markdown(const std::vector<ClaimResult>& results,
      << "| claim | verdict | subject |\n|---|---|---|\n";
   for (const auto& r : results) {
     const claims::ClaimEntry* def = find_entry(r.id);
-    md << "| " << r.id << " | " << to_string(r.verdict) << " | "
-       << escape_cell(def ? def->title : r.statement) << " |\n";
+    md << "| " << r.id << " | " << to_string(r.verdict)
+       << (r.halving_verdict != r.verdict
+               ? std::string(" (level-halving rate: ") + to_string(r.halving_verdict) + ")"
+               : std::string())
+       << " | " << escape_cell(def ? def->title : r.statement) << " |\n";
   }
   md << "\n";
   for (const auto& r : results) {
@@ -142,8 +205,17 @@ std::string claims_markdown(const std::vector<ClaimResult>& results,
     md << "## " << r.id << ". " << (def ? def->title : "") << "\n\n"
        << "**Verdict: " << to_string(r.verdict) << "**\n\n"
        << "- Paper: " << r.statement << "\n"
-       << "- Band: " << r.band << "\n\n"
-       << "Evidence:\n\n";
+       << "- Band: " << r.band << "\n\n";
+    if (r.halving_verdict != r.verdict) {
+      md << "**Rate formula: the verdict differs.** With the paper's level-halving rate "
+            "(1/(L-1)) log2(e_1/e_L) instead of ours over the measured mean edge length, this "
+            "claim is *"
+         << to_string(r.halving_verdict) << "*. The checks that change:\n\n";
+      std::istringstream lines(r.halving_evidence);
+      for (std::string line; std::getline(lines, line);) md << "- " << line << "\n";
+      md << "\n";
+    }
+    md << "Evidence:\n\n";
     std::istringstream lines(r.evidence);
     std::string line;
     bool any = false;

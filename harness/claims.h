@@ -14,7 +14,8 @@
 //                                  rms_error,max_error
 //   table5_timing.csv              mesh,level,verts,tris,method,degree,threads,seconds,
 //                                  tris_per_second (single-threaded rows, threads == 1, on the
-//                                  torus-structured meshes are used; the minimum over repeated
+//                                  torus-unstructured meshes, or torus-structured in a table
+//                                  from before that family, are used; the minimum over repeated
 //                                  rows). F7 compares a method label containing "SVD" with one
 //                                  containing "QR" (or LHF-2 if there is none), e.g. "LHF-2-SVD"
 //                                  vs "LHF-2-QR"; F9 compares "Jet-2" with "LHF-2".
@@ -64,6 +65,11 @@ struct ClaimResult {
   std::string band;       ///< the acceptance band
   Verdict verdict = Verdict::not_applicable;
   std::string evidence;  ///< one line per check, '\n'-separated, with the deciding numbers
+  /// The verdict when every rate is the paper's level-halving rate (1/(L-1)) log2(e_1/e_L)
+  /// instead of ours over the measured mean edge length; the checks of that evaluation whose
+  /// outcome differs from `evidence` are in halving_evidence (empty if the verdicts agree).
+  Verdict halving_verdict = Verdict::not_applicable;
+  std::string halving_evidence;
 };
 
 /// The band named `name` of claim `id` in the registry (e.g. ("B1", "rate")); throws

@@ -144,8 +144,19 @@ std::string Check::evidence() const {
 
 // ---- series -----------------------------------------------------------------------------------
 
+RateFormula& rate_formula() {
+  thread_local RateFormula formula = RateFormula::measured_h;
+  return formula;
+}
+
 double Series::rate() const {
+  return rate_formula() == RateFormula::measured_h ? rate_h() : rate_halving();
+}
+double Series::rate_h() const {
   return convergence_rate(first().e, last().e, first().h, last().h);
+}
+double Series::rate_halving() const {
+  return level_halving_rate(first().e, last().e, first().level, last().level);
 }
 const Point* Series::at(int level) const {
   for (const auto& p : points)
@@ -283,7 +294,8 @@ const TimingSeries* Data::timing(Check& chk, const std::string& method) const {
   }
   auto it = timing_.find(upper(method));
   if (it == timing_.end()) {
-    chk.missing("table5_timing.csv has no single-threaded torus-structured rows for " + method);
+    chk.missing("table5_timing.csv has no single-threaded " + timing_family_ + " rows for " +
+                method);
     return nullptr;
   }
   return &it->second;
@@ -327,8 +339,11 @@ void Data::build_timing() {
   const CsvTable& t = *table5;
   const size_t cm = t.col("mesh"), cl = t.col("level"), cv = t.col("verts"), ct = t.col("tris"),
                cme = t.col("method"), cth = t.col("threads"), cs = t.col("seconds");
+  timing_family_ = "torus-structured";
+  for (size_t i = 0; i < t.rows.size(); ++i)
+    if (t.text(i, cm) == "torus-unstructured") timing_family_ = "torus-unstructured";
   for (size_t i = 0; i < t.rows.size(); ++i) {
-    if (upper(t.text(i, cm)) != "TORUS-STRUCTURED" || t.number(i, cth) != 1.0) continue;
+    if (t.text(i, cm) != timing_family_ || t.number(i, cth) != 1.0) continue;
     auto& e = timing_[upper(t.text(i, cme))][static_cast<int>(t.number(i, cl))];
     const double s = t.number(i, cs);
     if (s < e.seconds) {
@@ -474,7 +489,11 @@ void require_finest(Check& c, const std::vector<LevelValue>& v, const Band& band
 }
 
 std::string rate_line(const Series& s, const std::string& cond) {
-  return s.label() + ": rate " + f2(s.rate()) + " " + cond + "; " + s.detail();
+  const bool h = rate_formula() == RateFormula::measured_h;
+  return s.label() + ": " + (h ? "rate " : "level-halving rate ") + f2(s.rate()) + " " + cond +
+         (h ? " (level-halving rate " + f2(s.rate_halving()) + ")"
+            : " (measured-h rate " + f2(s.rate_h()) + ")") +
+         "; " + s.detail();
 }
 
 void require_rate(Check& c, const Series& s, const Band& band, const std::string& prefix) {

@@ -54,6 +54,13 @@ class Check {
 
 // ---- error series -----------------------------------------------------------------------------
 
+/// The rate formula Series::rate() uses: ours (measured mean edge length) or the paper's
+/// level-halving rate (1/(L-1)) log2(e_1/e_L). evaluate_claims evaluates every claim with each and
+/// flags a claim whose verdict differs.
+enum class RateFormula { measured_h, level_halving };
+/// The formula in force in this thread (measured_h unless evaluate_claims switched it).
+RateFormula& rate_formula();
+
 struct Point {
   int level = 0;
   double h = 0.0;
@@ -67,8 +74,12 @@ struct Series {
 
   const Point& first() const { return points.front(); }
   const Point& last() const { return points.back(); }
-  /// Same definition as compute_rates: first and last level present, measured mean edge length.
+  /// The rate of rate_formula() over the first and last level present.
   double rate() const;
+  /// log(e_first/e_last)/log(h_first/h_last), measured mean edge length (as compute_rates).
+  double rate_h() const;
+  /// log2(e_first/e_last)/(level_last - level_first), the paper's formula.
+  double rate_halving() const;
   const Point* at(int level) const;
   std::string label() const { return family + " " + method + " " + quantity + " " + norm; }
   /// "errors at levels 1-4: a, b, c, d; level-to-level rates r12, r23, r34"
@@ -111,10 +122,14 @@ class Data {
   const std::vector<ErrorRow>& rows() const { return rows_; }
   /// The series matching q, or nullptr after recording why in chk.
   const Series* find(Check& chk, const Query& q) const;
-  /// Single-threaded timings of a method label on the timing mesh, or nullptr after recording.
+  /// Single-threaded timings of a method label on the timing family (timing_family()), or nullptr
+  /// after recording why.
   const TimingSeries* timing(Check& chk, const std::string& method) const;
   /// Method labels (upper case) of the timing table.
   std::vector<std::string> timing_methods() const;
+  /// The mesh family of the timings used: torus-unstructured (the paper's well-shaped meshes),
+  /// or torus-structured if the timing table has no torus-unstructured rows (an older make bench).
+  const std::string& timing_family() const { return timing_family_; }
 
   std::optional<CsvTable> table2, table4, table5;
 
@@ -125,6 +140,7 @@ class Data {
   std::vector<ErrorRow> rows_;
   std::vector<Series> series_;
   std::map<std::string, TimingSeries> timing_;
+  std::string timing_family_;
 };
 
 // ---- per-level values and the check kinds -----------------------------------------------------
@@ -146,7 +162,8 @@ std::vector<LevelValue> ratios_to_min(const Series& a, const std::vector<const S
 std::vector<LevelValue> spreads(const std::vector<const Series*>& ss);
 std::vector<std::string> methods_of(const std::vector<const Series*>& ss);
 
-/// "<label>: rate <r> <cond>; <detail>"
+/// "<label>: rate <r> <cond> (level-halving rate <r'>); <detail>", the judged rate first (that of
+/// rate_formula()) and the other formula's in brackets.
 std::string rate_line(const Series& s, const std::string& cond);
 
 /// The series' rate in the band: "[ok|FAIL] <prefix><label>: rate r <band>; errors ...".
@@ -196,11 +213,10 @@ std::vector<ClaimEntry> section6_claims();    // G1-G4  (claims_section6.cpp)
 
 // ---- mesh families of the claims --------------------------------------------------------------
 
-// The well-shaped torus (the paper's unstructured GAMBIT meshes): the structured staggered mesh
-// with seeded tangential jitter (docs/mesh_families.md). The unjittered structured mesh is too
-// symmetric to stand in for it (every vertex has the same stencil: its principal directions come
-// out exact to roundoff and its Linf errors converge like its L2 errors).
-inline const std::string kWell = "torus-jittered";
+// The well-shaped torus (the paper's unstructured GAMBIT meshes): the CGAL Delaunay-refined
+// unstructured torus with the paper's vertex counts (docs/mesh_families.md). The structured and
+// jittered tori are extra rows of the experiments, not used by the claims.
+inline const std::string kWell = "torus-unstructured";
 inline const std::string kPoor = "torus-iso-projected";
 inline const std::string kNoisyTorus = "torus-iso";
 inline const std::string kBumpIrr = "bump-irregular";
