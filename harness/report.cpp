@@ -157,8 +157,10 @@ bool render_plot(const std::string& base, const std::string& title,
   std::ostringstream gp;
   gp << "set logscale xy\nset format y '10^{%L}'\nset xlabel 'mean edge length h'\n"
         "set ylabel 'error'\nset key outside right top\nset grid\nset xrange [*:*] reverse\n"
+     // The bottom margin holds the x label and, below it, the provenance footer.
+     << "set bmargin 5\n"
      << "set label 1 \"" << build_info() << ", " << utc_timestamp()
-     << "\" at screen 0.01, screen 0.02 font ',8' noenhanced\n"
+     << "\" at screen 0.01, screen 0.015 font ',8' noenhanced\n"
      << "set title \"" << title << "\" noenhanced\n";
   for (size_t i = 0; i < series.size(); ++i) {
     gp << "$S" << i << " << EOD\n";
@@ -174,6 +176,23 @@ bool render_plot(const std::string& base, const std::string& title,
     plot << (i ? ", " : "") << "$S" << i << " using 1:2 with linespoints lw 2 pt " << (i % 7) + 4
          << " title \"" << series[i].method << " (rate " << fixed(rate) << ")\" noenhanced";
   }
+  // Dashed reference slopes O(h^p) for the orders the panel's rates round to (1-4), anchored at
+  // half the largest error at the coarsest h.
+  std::set<int> orders;
+  double h0 = 0.0, e0 = 0.0;
+  for (const auto& sr : series) {
+    const double rate = series_rate(sr);
+    if (std::isfinite(rate)) orders.insert(std::clamp(static_cast<int>(std::lround(rate)), 1, 4));
+    for (const auto& [level, r] : sr.by_level)
+      if (std::isfinite(r->error) && r->error > 0 && r->h >= h0) {
+        e0 = r->h > h0 ? r->error : std::max(e0, r->error);
+        h0 = r->h;
+      }
+  }
+  if (h0 > 0 && e0 > 0)
+    for (int p : orders)
+      plot << ", " << format_double(0.5 * e0) << "*(x/" << format_double(h0) << ")**" << p
+           << " with lines dt 2 lw 1 lc rgb '#808080' title 'O(h^" << p << ")'";
   plot << "\n";
   // Script and images under temporary names (swept by remove_stale_temp_files if killed).
   const std::string script_path = temp_path(base + ".gp");
