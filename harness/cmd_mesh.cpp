@@ -1,4 +1,4 @@
-// `curvbench mesh`: writes a generated test mesh (ALGORITHM_NOTES §10) with its exact per-vertex
+// `curvbench mesh`: writes a generated test mesh (docs/algorithms.md §10) with its exact per-vertex
 // quantities, or prints the reproduction of the paper's Table 4 (isosurface position errors).
 #include <algorithm>
 #include <cctype>
@@ -103,7 +103,7 @@ int print_table4(int max_grid) {
   const std::vector<Table4Row> rows = table4(max_grid);
   std::printf(
       "Table 4 reproduction: marching cubes of the torus SDF on [-1.5,1.5]^3 with n^3 samples,\n"
-      "vertex distances to the torus R=1, r=0.3 (ALGORITHM_NOTES 10.1a). 'mean edge' is the\n"
+      "vertex distances to the torus R=1, r=0.3 (docs/algorithms.md 10.1a). 'mean edge' is the\n"
       "true mean edge length; the paper's column equals mean/2 (its h = sum of edge lengths / "
       "3F).\n"
       "Rates: log2(err(n/2) / err(n)). Paper values in brackets.\n\n");

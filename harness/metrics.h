@@ -1,4 +1,4 @@
-// Error metrics and convergence rates of the paper §5 (ALGORITHM_NOTES §12).
+// Error metrics and convergence rates of the paper §5 (docs/algorithms.md §12).
 //
 //   normals      L2 = sqrt(mean_i |n~_i - n_i|^2),  Linf = max_i |n~_i - n_i|        (absolute)
 //   H, K, k1, k2 L2 = |k~ - k|_2 / |k|_2,          Linf = |k~ - k|_inf / |k|_inf    (relative)

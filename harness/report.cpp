@@ -119,7 +119,7 @@ double series_halving_rate(const Series& s) {
 }  // namespace
 
 void write_table2_csv(const std::string& path) {
-  // Every vertex of the structured torus has valence 6 (ALGORITHM_NOTES §10.1(b)); level 2 is
+  // Every vertex of the structured torus has valence 6 (docs/algorithms.md §10.1(b)); level 2 is
   // large enough (128 x 44) that a 3.5-ring does not wrap around the tube.
   MeshSpec spec;
   spec.family = "torus-structured";
@@ -267,7 +267,7 @@ std::string write_report(const std::vector<Experiment>& experiments, const Repor
   if (t4.size() > 1) {
     md << "## Table 4. Input position errors of torus meshes extracted by marching cubes\n\n"
        << "Signed distance function of the torus (R = 1, r = 0.3) sampled at n points per axis "
-          "on [-1.5, 1.5]^3, one vertex per sign-changing grid edge (ALGORITHM_NOTES §10.1(a))."
+          "on [-1.5, 1.5]^3, one vertex per sign-changing grid edge (docs/algorithms.md §10.1(a))."
           " The paper's \"average edge length\" column equals half the true mean edge length "
           "(see the last two columns).\n\n"
        << "| n | #verts (ours / paper) | L2 (ours / paper) | Linf (ours / paper) | rate L2 | "

@@ -22,7 +22,7 @@ namespace curvbench {
 enum class VertexStatus : std::uint8_t {
   ok = 0,              ///< fitted at the requested degree
   degree_reduced = 1,  ///< the safeguard lowered the degree (>= 1); values are finite
-  failed = 2,          ///< no fit possible (degree 0): normal = approximate normal, k = 0
+  failed = 2,          ///< no fit possible: degree 0, every value NaN (vertex_result.h)
   excluded = 3,        ///< not computed by design (e.g. Xu at a boundary vertex): values NaN
 };
 
@@ -44,7 +44,7 @@ struct VertexEstimate {
   VertexStatus status = VertexStatus::failed;
 };
 
-/// Options shared by all methods. Defaults follow the paper and ALGORITHM_NOTES.
+/// Options shared by all methods. Defaults follow the paper and docs/algorithms.md.
 struct EstimatorOptions {
   int degree = 2;                ///< requested fitting degree d (1..6; Xu: 2)
   double ring = 0.0;             ///< 0 = method default (Xu: 1; others (d+1)/2, +0.5 if noisy)
@@ -60,7 +60,7 @@ struct EstimatorOptions {
 /// Mesh data shared read-only by all threads during one estimation run.
 struct MeshContext {
   const Mesh& mesh;
-  const VertexMatrix& approx_normals;  ///< area-weighted vertex normals (ALGORITHM_NOTES §2)
+  const VertexMatrix& approx_normals;  ///< area-weighted vertex normals (docs/algorithms.md §2)
 };
 
 /// Per-thread scratch space; each method derives its own.
@@ -86,7 +86,7 @@ class Estimator {
   virtual double default_ring() const;
 
   /// The starting neighbourhood of vertex v, the same for every ring-based method (paper §4.1,
-  /// ALGORITHM_NOTES §1.2): ring r0 = options().ring or default_ring(); when options().adaptive,
+  /// docs/algorithms.md §1.2): ring r0 = options().ring or default_ring(); when options().adaptive,
   /// grown by half rings until min_neighbours(degree) neighbours or ring 2 r0. Returns r0.
   double collect_neighbourhood(RingCollector& rings, int v) const;
 

@@ -1,4 +1,4 @@
-// The shared per-vertex driver of the ring-based fitting methods (ALGORITHM_NOTES §5.5):
+// The shared per-vertex driver of the ring-based fitting methods (docs/algorithms.md §5.5):
 // LHF-d, LOP-d and (through the parameterization hook) LSCM-d.
 //
 // Per vertex v (approximate normal m0 = area-weighted normal, frame of §3):
@@ -17,7 +17,7 @@
 //   quantities (core/shape_operator.h): height route curvature_from_height(t1, t2, m0, f_u, ...),
 //   parametric route curvature_from_parametric(x_u, x_v, x_uu, x_uv, x_vv).
 // Status: ok (d_used = d), degree_reduced (1 <= d_used < d), failed (d_used = 0, the hook
-// failed, or non-finite quantities): normal = m0, k1 = k2 = H = K = 0, d1 = t1, d2 = t2.
+// failed, or non-finite quantities): degree 0 and every value NaN (set_failed, vertex_result.h).
 // estimate() never throws and leaves no NaN (a vertex without faces reports its zero m0).
 //
 // ---- Extension point (LSCM and any other ring parameterization) -------------------------------
@@ -51,7 +51,7 @@
 //       the parallel loop, may allocate and throw.
 //   bool use_normal_safeguard() const
 //       whether gamma_i = max(0, m_i . m0) of eq. (15) multiplies the weights; the default is
-//       options().normal_safeguard (LHF/LOP); ALGORITHM_NOTES §4 recommends gamma = 1 for LSCM.
+//       options().normal_safeguard (LHF/LOP); docs/algorithms.md §4 recommends gamma = 1 for LSCM.
 // Everything else (rings, rows, weights, solver, rank-failure rule, formulas, status) is shared.
 #pragma once
 
