@@ -117,6 +117,55 @@ std::string differing_checks(const std::string& a, const std::string& b) {
   return claims::join(out, "\n");
 }
 
+// Substitutes the well-shaped torus family for the lifetime of the object.
+class WellScope {
+ public:
+  explicit WellScope(const std::string& family) : saved_(claims::well()) {
+    claims::well() = family;
+  }
+  ~WellScope() { claims::well() = saved_; }
+  WellScope(const WellScope&) = delete;
+  WellScope& operator=(const WellScope&) = delete;
+
+ private:
+  std::string saved_;
+};
+
+// The "Why" line of a checked claim that is not reproduced: every diagnostic the registry can run
+// from the same CSVs (the other rate formula; the same check on the other well-shaped tori), plus
+// the entry's own measured cause.
+std::string why_line(const claims::ClaimEntry& def, const claims::Data& data,
+                     const ClaimResult& r) {
+  std::vector<std::string> causes, tried;
+  if (r.halving_verdict == Verdict::reproduced)
+    causes.push_back(
+        "the rate formula: with the paper's level-halving rate the claim is reproduced");
+  else
+    tried.push_back("the paper's level-halving rate (" + std::string(to_string(r.halving_verdict)) +
+                    ")");
+  if (r.evidence.find(claims::kWell) != std::string::npos) {
+    std::vector<std::string> shapes;
+    bool reproduced_elsewhere = false;
+    for (const std::string family : {"torus-jittered", "torus-structured"}) {
+      const WellScope scope(family);  // rates over the measured h (evaluate_claims' default)
+      claims::Check c;
+      def.check(data, c);
+      shapes.push_back(family + ": " + to_string(c.verdict()));
+      reproduced_elsewhere = reproduced_elsewhere || c.verdict() == Verdict::reproduced;
+    }
+    const std::string text =
+        "the same check with the well-shaped torus replaced by " + claims::join(shapes, ", ");
+    if (reproduced_elsewhere)
+      causes.push_back("the mesh shape: " + text);
+    else
+      tried.push_back(text);
+  }
+  if (def.why)
+    if (std::string cause = def.why(data); !cause.empty()) causes.push_back(cause);
+  if (!causes.empty()) return claims::join(causes, "; ") + ".";
+  return "no cause found; tried " + claims::join(tried, "; ") + ".";
+}
+
 // Sets the rate formula for the lifetime of the object.
 class FormulaScope {
  public:
@@ -162,6 +211,18 @@ std::vector<ClaimResult> evaluate_claims(const std::string& results_dir) {
       if (r.halving_verdict != r.verdict)
         r.halving_evidence = differing_checks(r.evidence, halving);
     }
+    if (r.verdict == Verdict::not_reproduced) {
+      if (def.check) {
+        r.why = why_line(def, data, r);
+      } else {
+        std::vector<std::string> misses;
+        for (const auto& id : def.all_of)
+          for (const auto& x : out)
+            if (x.id == id && x.verdict == Verdict::not_reproduced) misses.push_back(id);
+        r.why = "cites claims not reproduced: " + claims::join(misses, ", ") +
+                " (see their Why lines).";
+      }
+    }
     out.push_back(std::move(r));
   }
   return out;
@@ -203,8 +264,9 @@ std::string claims_markdown(const std::vector<ClaimResult>& results,
   for (const auto& r : results) {
     const claims::ClaimEntry* def = find_entry(r.id);
     md << "## " << r.id << ". " << (def ? def->title : "") << "\n\n"
-       << "**Verdict: " << to_string(r.verdict) << "**\n\n"
-       << "- Paper: " << r.statement << "\n"
+       << "**Verdict: " << to_string(r.verdict) << "**\n\n";
+    if (!r.why.empty()) md << "**Why:** " << r.why << "\n\n";
+    md << "- Paper: " << r.statement << "\n"
        << "- Band: " << r.band << "\n\n";
     if (r.halving_verdict != r.verdict) {
       md << "**Rate formula: the verdict differs.** With the paper's level-halving rate "

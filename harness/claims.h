@@ -22,7 +22,7 @@
 //
 // Rates are log(e_first/e_last)/log(h_first/h_last) over the levels present (as compute_rates),
 // "finest level" is the largest level present in both series compared, and "at >= 3 of 4 levels"
-// means at >= 3/4 of the common levels. The "failed to converge" criterion (PAPER_CLAIMS
+// means at >= 3/4 of the common levels. The "failed to converge" criterion (docs/claims.md
 // conventions): rate <= 0.5, or e_last >= 0.7 e_first, or non-monotone with no net decrease; a
 // non-finite last error also counts as a failure.
 #pragma once
@@ -61,7 +61,7 @@ const char* to_string(Verdict v);
 
 struct ClaimResult {
   std::string id;         ///< "A1" ... "G4"
-  std::string statement;  ///< the paper's wording (PAPER_CLAIMS)
+  std::string statement;  ///< the paper's wording (docs/claims.md)
   std::string band;       ///< the acceptance band
   Verdict verdict = Verdict::not_applicable;
   std::string evidence;  ///< one line per check, '\n'-separated, with the deciding numbers
@@ -70,6 +70,10 @@ struct ClaimResult {
   /// outcome differs from `evidence` are in halving_evidence (empty if the verdicts agree).
   Verdict halving_verdict = Verdict::not_applicable;
   std::string halving_evidence;
+  /// For a claim not reproduced: the cause where one is measured (the rate formula, the mesh
+  /// shape: the same check on the jittered and structured tori, or an experiment named by the
+  /// registry entry), else "no cause found" with what was tried. Empty otherwise.
+  std::string why;
 };
 
 /// The band named `name` of claim `id` in the registry (e.g. ("B1", "rate")); throws

@@ -149,6 +149,15 @@ RateFormula& rate_formula() {
   return formula;
 }
 
+std::string& well() {
+  thread_local std::string family = kWell;
+  return family;
+}
+
+std::vector<std::string> tori() {
+  return {well(), kPoor};
+}
+
 double Series::rate() const {
   return rate_formula() == RateFormula::measured_h ? rate_h() : rate_halving();
 }

@@ -201,6 +201,9 @@ struct ClaimEntry {
   std::map<std::string, Band> bands;
   std::function<void(const Data&, Check&)> check;
   std::vector<std::string> all_of;
+  /// A measured cause of a miss from a diagnostic experiment in the CSVs (e.g. another solver),
+  /// for the "Why" line when the claim is not reproduced; returns "" when there is none.
+  std::function<std::string(const Data&)> why = nullptr;
 };
 
 // One function per paper section, each returning its entries in order.
@@ -217,6 +220,11 @@ std::vector<ClaimEntry> section6_claims();    // G1-G4  (claims_section6.cpp)
 // unstructured torus with the paper's vertex counts (docs/mesh_families.md). The structured and
 // jittered tori are extra rows of the experiments, not used by the claims.
 inline const std::string kWell = "torus-unstructured";
+/// The well-shaped family the checks read: kWell, unless evaluate_claims substitutes another
+/// torus family for the mesh-shape diagnostic of a miss (the "Why" line of CLAIMS.md).
+std::string& well();
+/// {well(), kPoor}.
+std::vector<std::string> tori();
 inline const std::string kPoor = "torus-iso-projected";
 inline const std::string kNoisyTorus = "torus-iso";
 inline const std::string kBumpIrr = "bump-irregular";

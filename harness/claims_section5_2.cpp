@@ -75,7 +75,7 @@ std::vector<ClaimEntry> section5_2_claims() {
                    for (const auto& m : kDeg2Others)
                      for (const auto& fam : kBumps) {
                        const Series* b = bump(d, c, fam, m, "H", "L2");
-                       for (const auto& tor : kTori) {
+                       for (const auto& tor : tori()) {
                          const Series* t = torus2(d, c, tor, m, "H", "L2");
                          if (!b || !t) continue;
                          c.require(b->rate() <= t->rate() - d2_gap.lo,
