@@ -1,9 +1,9 @@
 // Google Benchmark suite for the paper's Table 5 (§5.4, §4.3.2): every estimator of Table 5
 // plus CGAL's Jet_fitting_3, the in-house LSCM and the discrete operators (Meyer, Taubin,
 // Rusinkiewicz, the libigl quadric, Goldfeather, the normal cycle) on the well-shaped
-// (torus-structured) torus, levels 1-4 (64x22 .. 512x176 vertices), one thread; LHF-2 also with 2
-// threads. Scaling: LHF-2 with 1 and 2 threads on levels 5 and 6 as well (1024x352 and 2048x704
-// = 1.44 million vertices), reported in the .md only (the CSV is Table 5's four levels).
+// (torus-unstructured) torus, levels 1-4, one thread; LHF-2 also with 2 threads. Scaling: LHF-2
+// with 1 and 2 threads on torus-structured levels 5 and 6 as well (1024x352 and 2048x704 = 1.44
+// million vertices), reported in the .md only (the CSV is Table 5's four levels).
 //
 // Timed: estimate_mesh() = the per-vertex stage for the whole mesh (area-weighted normals,
 // neighbourhoods, fits, formulas); the meshes are generated once before any benchmark runs and
@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "bench/table5.h"
+#include "harness/paper_tables.h"
 #include "meshgen/generate.h"
 #include "methods/estimator.h"
 
@@ -42,7 +43,13 @@ namespace {
 
 constexpr int kLevels = 4;         // Table 5
 constexpr int kScalingLevels = 6;  // linear-scaling check, 1.4 thousand to 1.44 million vertices
-const char* const kFamily = "torus-structured";
+// Table 5 on the paper's well-shaped family (levels 1-4); the scaling sweep's levels 5-6 on the
+// structured torus (torus-unstructured stops at the paper's finest level 4).
+const char* const kFamily = "torus-unstructured";
+const char* const kScalingFamily = "torus-structured";
+const char* family_of(int level) {
+  return level <= kLevels ? kFamily : kScalingFamily;
+}
 
 struct MethodSpec {
   std::string name;  ///< make_estimator name
@@ -67,7 +74,7 @@ SampleLog g_scaling;  // levels 5-6 of the scaling sweep
 // The torus of a level, generated on first use (levels 5-6 only if a scaling benchmark runs).
 const Mesh& torus(int level) {
   auto& slot = g_meshes[static_cast<size_t>(level)];
-  if (!slot) slot = generate_mesh({kFamily, level, 0, 1, false});
+  if (!slot) slot = generate_mesh({family_of(level), level, 0, 1, false});
   return slot->mesh;
 }
 
@@ -79,7 +86,7 @@ void BM_Estimate(benchmark::State& state, const MethodSpec spec) {
   o.threads = spec.threads;
   const std::unique_ptr<Estimator> est = make_estimator(spec.name, o);
   Sample& s = (spec.scaling ? g_scaling : g_log)
-                  .get({kFamily,
+                  .get({family_of(level),
                         level,
                         mesh.num_vertices(),
                         mesh.num_faces(),
@@ -146,19 +153,13 @@ void register_all() {
 const char* const kOperators[] = {"Meyer",   "Taubin",      "Rusinkiewicz",
                                   "Quadric", "Goldfeather", "Normal-cycle"};
 
-// The paper's Table 5 (seconds; 3 GHz Pentium 4, gcc 4.2.4): PAPER_CLAIMS.md §F.
-const std::vector<std::string> kPaperMethods = {"Xu-2",  "LOP-2",  "LHF-2",  "LHF-3",
-                                                "LHF-4", "LSCM-2", "LSCM-3", "LSCM-4"};
-const double kPaper[4][2 + 8] = {
-    {1338, 2676, 0.035, 0.011, 0.0061, 0.013, 0.028, 0.20, 0.36, 0.66},
-    {5246, 10492, 0.12, 0.039, 0.023, 0.050, 0.11, 0.81, 1.43, 2.65},
-    {21156, 42312, 0.51, 0.16, 0.096, 0.20, 0.44, 3.32, 5.74, 10.58},
-    {85208, 170416, 2.06, 0.65, 0.38, 0.83, 1.81, 13.66, 23.21, 43.16}};
+// The paper's Table 5 (seconds; 3 GHz Pentium 4, gcc 4.2.4): harness/paper_tables.h.
+std::vector<std::string> paper_methods() {
+  return {paper::kTable5Methods.begin(), paper::kTable5Methods.end()};
+}
 
 double paper_time(const std::string& method, int level) {
-  for (size_t j = 0; j < kPaperMethods.size(); ++j)
-    if (kPaperMethods[j] == method) return kPaper[level - 1][2 + j];
-  return 0.0;
+  return paper::table5_seconds(method, level);
 }
 
 std::string cpu_model() {
@@ -259,11 +260,12 @@ std::string make_markdown(const std::vector<Table5Row>& rows, const std::string&
       "`estimate_mesh()` over every timed whole-mesh pass (all iterations of 9 repetitions), i.e. "
       "the per-vertex stage for the whole mesh including neighbourhoods and the area-weighted "
       "normals, excluding I/O and mesh generation; one thread unless stated. Meshes: the "
-      "well-shaped torus (`torus-structured`, levels 1-4). Paper: 3 GHz Pentium 4, gcc 4.2.4 "
-      "(PAPER_CLAIMS.md §F).\n\n";
+      "well-shaped unstructured torus (`torus-unstructured`, levels 1-4; the scaling "
+      "sweep's levels 5-6 are `torus-structured`). Paper: 3 GHz Pentium 4, gcc 4.2.4 "
+      "(docs/claims.md, F).\n\n";
 
   // Our Table 5.
-  std::vector<std::string> ours = kPaperMethods;
+  std::vector<std::string> ours = paper_methods();
   for (const char* m : {"Jet-2", "Jet-3", "Jet-4", "LSCM-fast-2", "LSCM-fast-3", "LSCM-fast-4"})
     ours.push_back(m);
   for (const char* m : kOperators) ours.push_back(m);
@@ -275,8 +277,9 @@ std::string make_markdown(const std::vector<Table5Row>& rows, const std::string&
   for (int level = 1; level <= kLevels; ++level) {
     const Table5Row* any = t.get("LHF-2", level);
     md += "| " + std::to_string(level) + " | " + (any ? std::to_string(any->verts) : "-") + " (" +
-          fmt("%.0f", kPaper[level - 1][0]) + ") | " + (any ? std::to_string(any->tris) : "-") +
-          " (" + fmt("%.0f", kPaper[level - 1][1]) + ") |";
+          fmt("%.0f", double(paper::kTable5[level - 1].vertices)) + ") | " +
+          (any ? std::to_string(any->tris) : "-") + " (" +
+          fmt("%.0f", double(paper::kTable5[level - 1].triangles)) + ") |";
     for (const auto& m : ours) {
       const Table5Row* r = t.get(m, level);
       const double p = paper_time(m, level);

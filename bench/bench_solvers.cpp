@@ -44,7 +44,7 @@ namespace {
 constexpr int kLevels = 4;
 constexpr int kDegree = 2;
 constexpr int kSolveLevel = 3;
-const char* const kFamily = "torus-structured";
+const char* const kFamily = "torus-unstructured";
 
 /// The weighted LHF-2 systems of all vertices, rows stored contiguously.
 struct Systems {

@@ -1,4 +1,4 @@
-// `curvbench mesh`: writes a generated test mesh (ALGORITHM_NOTES §10) with its exact per-vertex
+// `curvbench mesh`: writes a generated test mesh (docs/algorithms.md §10) with its exact per-vertex
 // quantities, or prints the reproduction of the paper's Table 4 (isosurface position errors).
 #include <algorithm>
 #include <cctype>
@@ -12,6 +12,7 @@
 #include "cli/commands.h"
 #include "core/errors.h"
 #include "core/text.h"
+#include "harness/paper_tables.h"
 #include "mesh/io.h"
 #include "meshgen/generate.h"
 #include "meshgen/torus_isosurface.h"
@@ -97,24 +98,19 @@ int write_generated_mesh(const MeshOptions& o) {
   return 0;
 }
 
-// Paper Table 4, as printed (n, #verts, average edge length, L2, Linf, rates L2, Linf).
-struct PaperRow {
-  int n, verts;
-  double h, l2, linf, rate_l2, rate_linf;
-};
-constexpr PaperRow kPaperTable4[] = {
-    {16, 320, 0.11, 3.60e-3, 9.30e-3, NAN, NAN},
-    {32, 1760, 0.048, 1.12e-3, 3.47e-3, 1.69, 1.42},
-    {64, 7320, 0.023, 2.59e-4, 9.03e-4, 2.11, 1.94},
-    {128, 31136, 0.011, 6.71e-5, 2.25e-4, 1.95, 2.00},
-    {256, 122464, 0.0057, 1.65e-5, 5.70e-5, 2.03, 1.98},
-};
+// "torus-structured 1..6, ..." from the generator's own table, so the help cannot go stale.
+std::string level_ranges() {
+  std::string s;
+  for (const auto& f : mesh_families())
+    s += (s.empty() ? "" : ", ") + f + " 1.." + std::to_string(max_mesh_level(f));
+  return s;
+}
 
 int print_table4(int max_grid) {
   const std::vector<Table4Row> rows = table4(max_grid);
   std::printf(
       "Table 4 reproduction: marching cubes of the torus SDF on [-1.5,1.5]^3 with n^3 samples,\n"
-      "vertex distances to the torus R=1, r=0.3 (ALGORITHM_NOTES 10.1a). 'mean edge' is the\n"
+      "vertex distances to the torus R=1, r=0.3 (docs/algorithms.md 10.1a). 'mean edge' is the\n"
       "true mean edge length; the paper's column equals mean/2 (its h = sum of edge lengths / "
       "3F).\n"
       "Rates: log2(err(n/2) / err(n)). Paper values in brackets.\n\n");
@@ -122,12 +118,13 @@ int print_table4(int max_grid) {
               "mean/2 [paper]", "L2 (RMS) [paper]", "Linf (max) [paper]", "rate L2", "rate Linf");
   for (size_t i = 0; i < rows.size(); ++i) {
     const Table4Row& r = rows[i];
-    const PaperRow* p = nullptr;
-    for (const auto& pr : kPaperTable4)
-      if (pr.n == r.grid_points) p = &pr;
+    const paper::Table4Row* p = nullptr;
+    for (const auto& pr : paper::kTable4)
+      if (pr.grid_points == r.grid_points) p = &pr;
     char verts[32], half[32], l2[40], linf[40], rl2[32] = "-", rlinf[32] = "-";
-    std::snprintf(verts, sizeof verts, "%d [%d]", r.vertices, p ? p->verts : 0);
-    std::snprintf(half, sizeof half, "%.4f [%.2g]", r.mean_edge_length / 2, p ? p->h : NAN);
+    std::snprintf(verts, sizeof verts, "%d [%d]", r.vertices, p ? p->vertices : 0);
+    std::snprintf(half, sizeof half, "%.4f [%.2g]", r.mean_edge_length / 2,
+                  p ? p->edge_column : NAN);
     std::snprintf(l2, sizeof l2, "%.3e [%.2e]", r.rms_error, p ? p->l2 : NAN);
     std::snprintf(linf, sizeof linf, "%.3e [%.2e]", r.max_error, p ? p->linf : NAN);
     if (i > 0) {
@@ -148,15 +145,14 @@ int print_table4(int max_grid) {
 Command add_mesh_command(CLI::App& app) {
   auto* sub = app.add_subcommand(
       "mesh",
-      "Generate a test mesh (ALGORITHM_NOTES 10) and write it with its exact per-vertex "
+      "Generate a test mesh (docs/mesh_families.md) and write it with its exact per-vertex "
       "quantities, or print the reproduction of the paper's Table 4");
   auto o = std::make_shared<MeshOptions>();
   std::string families;
   for (const auto& f : mesh_families()) families += (families.empty() ? "" : ", ") + f;
   auto* family = sub->add_option("--family", o->family, "Mesh family: " + families);
-  auto* level = sub->add_option(
-      "--level", o->level,
-      "Resolution level, 1 = coarsest (torus-structured 1..4, torus-iso* 1..5, bump-* 1..5)");
+  auto* level = sub->add_option("--level", o->level,
+                                "Resolution level, 1 = coarsest (" + level_ranges() + ")");
   auto* noise = sub->add_option("--noise-order", o->noise_order,
                                 "Add alpha h^k normal noise of order k (1..4; 0 = none), "
                                 "alpha = 0.1 N(0,1)");

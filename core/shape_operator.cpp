@@ -79,7 +79,7 @@ Curvature curvature_from_parametric(const Vec3& xu, const Vec3& xv, const Vec3& 
   const double b11 = n.dot(xuu);
   const double b12 = n.dot(xuv);
   const double b22 = n.dot(xvv);
-  // Gram-Schmidt QR of J = [xu xv] (ALGORITHM_NOTES §6.2 step 3).
+  // Gram-Schmidt QR of J = [xu xv] (docs/algorithms.md §6.2 step 3).
   const double r11 = xu.norm();
   const Vec3 q1 = xu / r11;
   const double r12 = q1.dot(xv);
@@ -123,7 +123,7 @@ Curvature curvature_from_height(const Vec3& t1, const Vec3& t2, const Vec3& m, d
   const double gHg = fu * fu * fuu + 2.0 * fu * fv * fuv + fv * fv * fvv;
   c.H = (fuu + fvv) / (2.0 * ell) - gHg / (2.0 * ell2 * ell);
   c.K = (fuu * fvv - fuv * fuv) / (ell2 * ell2);
-  // Orthonormal tangent basis (ALGORITHM_NOTES §6.1); q1 x q2 = normal.
+  // Orthonormal tangent basis (docs/algorithms.md §6.1); q1 x q2 = normal.
   double cs = 1.0;
   double sn = 0.0;
   if (g > 0.0) {

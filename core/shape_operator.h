@@ -1,7 +1,7 @@
 // The one shared implementation of the curvature formulas of paper §2 (eqs. 1-8, Table 1;
-// ALGORITHM_NOTES §6). Every estimator and every analytic height field goes through these.
+// docs/algorithms.md §6). Every estimator and every analytic height field goes through these.
 //
-// Sign convention (ALGORITHM_NOTES §0): B = n . x_uu with n = x_u x x_v / |x_u x x_v|, so a
+// Sign convention (docs/algorithms.md §0): B = n . x_uu with n = x_u x x_v / |x_u x x_v|, so a
 // sphere of radius a parameterized with outward x_u x x_v has k1 = k2 = H = -1/a. k1 >= k2
 // algebraically (eq. 7); d1 goes with k1, and (d1, d2, normal) is right-handed.
 //
@@ -27,7 +27,7 @@ struct Curvature {
   Vec3 d2 = Vec3::Constant(kNaN);      ///< unit principal direction of k2, d1 x d2 = normal
 };
 
-/// Relative tolerance of the umbilic test |k1 - k2| <= tol * max(|k1|, |k2|) (ALGORITHM_NOTES
+/// Relative tolerance of the umbilic test |k1 - k2| <= tol * max(|k1|, |k2|) (docs/algorithms.md
 /// §11.2: such points are excluded from principal-direction errors).
 inline constexpr double kUmbilicTolerance = 1e-8;
 
@@ -45,7 +45,7 @@ bool is_umbilic(double k1, double k2);
 void principal_from_symmetric(double w11, double w12, double w22, const Vec3& q1, const Vec3& q2,
                               double& k1, double& k2, Vec3& d1, Vec3& d2);
 
-/// Parametric surface x(u,v) (ALGORITHM_NOTES §6.2): eq. (1) normal n = x_u x x_v / |x_u x x_v|,
+/// Parametric surface x(u,v) (docs/algorithms.md §6.2): eq. (1) normal n = x_u x x_v / |x_u x x_v|,
 /// eq. (2) B = [n.x_uu n.x_uv; n.x_uv n.x_vv], Gram-Schmidt QR J = [x_u x_v] = [q1 q2] R, eq. (5)
 /// W~ = R^-T B R^-1, eqs. (7)-(8) for the principal pair; H = (k1 + k2)/2, K = k1 k2.
 /// |x_u x x_v| == 0 or non-finite input: every field NaN.
@@ -54,7 +54,7 @@ Curvature curvature_from_parametric(const Vec3& xu, const Vec3& xv, const Vec3& 
 
 /// Local height function w = f(u,v) in the right-handed orthonormal frame (t1, t2, m), given in
 /// global coordinates (U = [t1 t2 m]); paper §2.2, Table 1 height-function column,
-/// ALGORITHM_NOTES §6.1. With grad = (fu, fv), Hess = [fuu fuv; fuv fvv], l = sqrt(1 + |grad|^2):
+/// docs/algorithms.md §6.1. With grad = (fu, fv), Hess = [fuu fuv; fuv fvv], l = sqrt(1 + |grad|^2):
 ///   normal = U (-fu, -fv, 1) / l,
 ///   H = tr(Hess)/(2 l) - grad^T Hess grad / (2 l^3),   K = det(Hess) / l^4   (Table 1),
 ///   principal pair from eqs. (7)-(8) in the basis q1 = U (c/l, s/l, |grad|/l), q2 = U (-s, c, 0)

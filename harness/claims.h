@@ -1,5 +1,9 @@
-// The paper's checkable claims (shared/reference/PAPER_CLAIMS.md, A1-G4) evaluated against the
-// result CSVs, and results/CLAIMS.md.
+// The paper's checkable claims (docs/claims.md, A1-G4) evaluated against the result CSVs, and
+// results/CLAIMS.md. The claims form one registry: each claim is one entry (wording, named bands,
+// check) in the file of its paper section, harness/claims_exact.cpp (A: tables and identities),
+// claims_section5_1.cpp (B, C), claims_section5_2.cpp (D), claims_section5_3.cpp (E),
+// claims_section5_4.cpp (F) and claims_section6.cpp (G: conjunctions); harness/claims_kit.h has
+// the check kinds they share.
 //
 // Inputs (all in results_dir, all optional; a claim whose data is missing is "not applicable"):
 //   *.csv with the errors header   errors rows (results_table.h ErrorRow), any experiment name;
@@ -10,14 +14,15 @@
 //                                  rms_error,max_error
 //   table5_timing.csv              mesh,level,verts,tris,method,degree,threads,seconds,
 //                                  tris_per_second (single-threaded rows, threads == 1, on the
-//                                  torus-structured meshes are used; the minimum over repeated
+//                                  torus-unstructured meshes, or torus-structured in a table
+//                                  from before that family, are used; the minimum over repeated
 //                                  rows). F7 compares a method label containing "SVD" with one
 //                                  containing "QR" (or LHF-2 if there is none), e.g. "LHF-2-SVD"
 //                                  vs "LHF-2-QR"; F9 compares "Jet-2" with "LHF-2".
 //
 // Rates are log(e_first/e_last)/log(h_first/h_last) over the levels present (as compute_rates),
 // "finest level" is the largest level present in both series compared, and "at >= 3 of 4 levels"
-// means at >= 3/4 of the common levels. The "failed to converge" criterion (PAPER_CLAIMS
+// means at >= 3/4 of the common levels. The "failed to converge" criterion (docs/claims.md
 // conventions): rate <= 0.5, or e_last >= 0.7 e_first, or non-monotone with no net decrease; a
 // non-finite last error also counts as a failure.
 #pragma once
@@ -29,18 +34,53 @@ namespace curvbench {
 
 enum class Verdict { reproduced, not_reproduced, not_applicable };
 
+/// An acceptance band of a claim: a condition on one number (a rate, a ratio, a rate gap) that
+/// prints its own text ("in [1.6, 2.6]", ">= 2", "within a factor 1.5"). The registry entry
+/// holds each band once; its band prose, its check and the tests read the same value.
+struct Band {
+  enum class Kind { in, at_least, above, at_most, below, within_factor };
+  Kind kind = Kind::in;
+  double lo = 0.0, hi = 0.0;  ///< bounds (at_least/above: lo; at_most/below/within_factor: hi)
+  int decimals = -1;          ///< digits after the point in text(); -1 = shortest (%g)
+
+  static Band in(double lo, double hi, int decimals = -1) { return {Kind::in, lo, hi, decimals}; }
+  static Band at_least(double x, int decimals = -1) { return {Kind::at_least, x, 0, decimals}; }
+  static Band above(double x, int decimals = -1) { return {Kind::above, x, 0, decimals}; }
+  static Band at_most(double x, int decimals = -1) { return {Kind::at_most, 0, x, decimals}; }
+  static Band below(double x, int decimals = -1) { return {Kind::below, 0, x, decimals}; }
+  /// x in [1/f, f].
+  static Band within_factor(double f) { return {Kind::within_factor, 1.0 / f, f, -1}; }
+
+  bool holds(double x) const;
+  std::string text() const { return text(decimals); }
+  std::string text(int digits_after_point) const;
+};
+
 /// "reproduced", "not reproduced", "not applicable".
 const char* to_string(Verdict v);
 
 struct ClaimResult {
   std::string id;         ///< "A1" ... "G4"
-  std::string statement;  ///< the paper's wording (PAPER_CLAIMS)
+  std::string statement;  ///< the paper's wording (docs/claims.md)
   std::string band;       ///< the acceptance band
   Verdict verdict = Verdict::not_applicable;
   std::string evidence;  ///< one line per check, '\n'-separated, with the deciding numbers
+  /// The verdict when every rate is the paper's level-halving rate (1/(L-1)) log2(e_1/e_L)
+  /// instead of ours over the measured mean edge length; the checks of that evaluation whose
+  /// outcome differs from `evidence` are in halving_evidence (empty if the verdicts agree).
+  Verdict halving_verdict = Verdict::not_applicable;
+  std::string halving_evidence;
+  /// For a claim not reproduced: the cause where one is measured (the rate formula, the mesh
+  /// shape: the same check on the jittered and structured tori, or an experiment named by the
+  /// registry entry), else "no cause found" with what was tried. Empty otherwise.
+  std::string why;
 };
 
-/// Evaluates claims A1-G4 of PAPER_CLAIMS.md from the CSVs in results_dir (see above), in order.
+/// The band named `name` of claim `id` in the registry (e.g. ("B1", "rate")); throws
+/// std::out_of_range if there is none. The tests build their synthetic data from these values.
+Band claim_band(const std::string& id, const std::string& name);
+
+/// Evaluates claims A1-G4 of docs/claims.md from the CSVs in results_dir (see above), in order.
 /// Throws InputError if a CSV it reads is malformed.
 std::vector<ClaimResult> evaluate_claims(const std::string& results_dir);
 

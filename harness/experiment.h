@@ -6,7 +6,7 @@
 //   title       "Noise-free torus, degree 2"    one line
 //   section     5.1                             paper section
 //   mesh        torus-structured levels=1,2,3,4 one line per mesh family (meshgen families)
-//   noise       order=3 seed=11                 optional controlled noise (ALGORITHM_NOTES §10.3)
+//   noise       order=3 seed=11                 optional controlled noise (docs/algorithms.md §10.3)
 //   noisy       yes                             input is noisy: default rings +0.5 (paper §5.3)
 //   vertex-set  all                             all | interior | boundary-ring (default all)
 //   method      lhf-2 [ring=2.5] [vertex-set=interior]   one line per method and degree

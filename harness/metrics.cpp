@@ -235,6 +235,13 @@ double convergence_rate(double e_first, double e_last, double h_first, double h_
   return std::log(e_first / e_last) / std::log(h_first / h_last);
 }
 
+double level_halving_rate(double e_first, double e_last, int level_first, int level_last) {
+  if (!(e_first > 0.0) || !(e_last > 0.0) || !std::isfinite(e_first) || !std::isfinite(e_last) ||
+      level_last == level_first)
+    return kNaN;
+  return std::log2(e_first / e_last) / (level_last - level_first);
+}
+
 std::vector<double> pairwise_rates(std::span<const double> errors, std::span<const double> h) {
   std::vector<double> out;
   for (size_t i = 1; i < errors.size() && i < h.size(); ++i)

@@ -1,4 +1,4 @@
-// Error metrics and convergence rates of the paper §5 (ALGORITHM_NOTES §12).
+// Error metrics and convergence rates of the paper §5 (docs/algorithms.md §12).
 //
 //   normals      L2 = sqrt(mean_i |n~_i - n_i|^2),  Linf = max_i |n~_i - n_i|        (absolute)
 //   H, K, k1, k2 L2 = |k~ - k|_2 / |k|_2,          Linf = |k~ - k|_inf / |k|_inf    (relative)
@@ -59,6 +59,11 @@ ErrorValue compute_error(Quantity q, Norm norm, std::span<const VertexEstimate> 
 /// Average convergence rate log(e_first/e_last) / log(h_first/h_last) (paper §5 with measured
 /// h). NaN when an error is zero, non-finite, or the sizes do not differ.
 double convergence_rate(double e_first, double e_last, double h_first, double h_last);
+
+/// The paper's rate: (1/(L-1)) log2(e_1/e_L) over levels 1..L, i.e. each level assumed to halve
+/// h; here log2(e_first/e_last) / (level_last - level_first). NaN when an error is zero or
+/// non-finite, or the levels are equal.
+double level_halving_rate(double e_first, double e_last, int level_first, int level_last);
 
 /// Rates between consecutive levels (size N-1 for N levels).
 std::vector<double> pairwise_rates(std::span<const double> errors, std::span<const double> h);

@@ -17,6 +17,8 @@
 #include "core/errors.h"
 #include "harness/metrics.h"
 #include "harness/report_field.h"
+#include "harness/paper_tables.h"
+#include "harness/well_shaped_torus_table.h"
 #include "mesh/io.h"
 #include "mesh/rings.h"
 #include "meshgen/generate.h"
@@ -39,6 +41,20 @@ std::string fixed(double x, int digits = 2) {
   if (!std::isfinite(x)) return "n/a";
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.*f", digits, x);
+  return buf;
+}
+
+// A value of the paper's tables as it prints it: 3.60e-3 (3 significant digits, short exponent).
+std::string paper_sci(double x) {
+  const int ex = static_cast<int>(std::floor(std::log10(x)));
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2fe%d", x / std::pow(10.0, ex), ex);
+  return buf;
+}
+
+std::string paper_g(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", x);
   return buf;
 }
 
@@ -93,24 +109,31 @@ double series_rate(const Series& s) {
   return convergence_rate(a->error, b->error, a->h, b->h);
 }
 
+// The paper's rate, assuming each level halves h (harness/metrics.h).
+double series_halving_rate(const Series& s) {
+  if (s.by_level.size() < 2) return std::nan("");
+  const auto& [la, a] = *s.by_level.begin();
+  const auto& [lb, b] = *s.by_level.rbegin();
+  return level_halving_rate(a->error, b->error, la, lb);
+}
+
 }  // namespace
 
 void write_table2_csv(const std::string& path) {
-  // Every vertex of the structured torus has valence 6 (ALGORITHM_NOTES §10.1(b)); level 2 is
+  // Every vertex of the structured torus has valence 6 (docs/algorithms.md §10.1(b)); level 2 is
   // large enough (128 x 44) that a 3.5-ring does not wrap around the tube.
   MeshSpec spec;
   spec.family = "torus-structured";
   spec.level = 2;
   const GeneratedMesh g = generate_mesh(spec);
   RingCollector rc(g.mesh);
-  const int paper[] = {7, 13, 19, 31, 37, 55};
   std::ostringstream out;
   out << provenance_comment() << "\n"
       << "degree,coefficients,ring,points_with_centre,paper_points\n";
   for (int d = 1; d <= 6; ++d) {
     rc.collect(0, default_ring(d));
     out << d << ',' << num_coefficients(d) << ',' << default_ring(d) << ','
-        << rc.neighbours().size() + 1 << ',' << paper[d - 1] << "\n";
+        << rc.neighbours().size() + 1 << ',' << paper::kTable2[d - 1].points_with_centre << "\n";
   }
   write_file_atomic(path, out.str());
 }
@@ -135,8 +158,11 @@ bool render_plot(const std::string& base, const std::string& title,
   std::ostringstream gp;
   gp << "set logscale xy\nset format y '10^{%L}'\nset xlabel '" << x_axis.label << "'\n"
      << "set ylabel 'error'\nset key outside right top\nset grid\n"
-     << (x_axis.reversed ? "set xrange [*:*] reverse\n" : "") << "set label 1 \"" << build_info()
-     << ", " << utc_timestamp() << "\" at screen 0.01, screen 0.02 font ',8' noenhanced\n"
+     << (x_axis.reversed ? "set xrange [*:*] reverse\n" : "")
+     // The bottom margin holds the x label and, below it, the provenance footer.
+     << "set bmargin 5\n"
+     << "set label 1 \"" << build_info() << ", " << utc_timestamp()
+     << "\" at screen 0.01, screen 0.015 font ',8' noenhanced\n"
      << "set title \"" << title << "\" noenhanced\n";
   for (size_t i = 0; i < series.size(); ++i) {
     gp << "$S" << i << " << EOD\n";
@@ -153,6 +179,23 @@ bool render_plot(const std::string& base, const std::string& title,
          << " title \"" << series[i].method
          << (x_axis.rate_in_legend ? " (rate " + fixed(rate) + ")" : "") << "\" noenhanced";
   }
+  // Dashed reference slopes O(h^p) for the orders the panel's rates round to (1-4), anchored at
+  // half the largest error at the coarsest h.
+  std::set<int> orders;
+  double h0 = 0.0, e0 = 0.0;
+  for (const auto& sr : series) {
+    const double rate = series_rate(sr);
+    if (std::isfinite(rate)) orders.insert(std::clamp(static_cast<int>(std::lround(rate)), 1, 4));
+    for (const auto& [level, r] : sr.by_level)
+      if (std::isfinite(r->error) && r->error > 0 && r->h >= h0) {
+        e0 = r->h > h0 ? r->error : std::max(e0, r->error);
+        h0 = r->h;
+      }
+  }
+  if (x_axis.reference_slopes && h0 > 0 && e0 > 0)
+    for (int p : orders)
+      plot << ", " << format_double(0.5 * e0) << "*(x/" << format_double(h0) << ")**" << p
+           << " with lines dt 2 lw 1 lc rgb '#808080' title 'O(h^" << p << ")'";
   plot << "\n";
   // Script and images under temporary names (swept by remove_stale_temp_files if killed).
   const std::string script_path = temp_path(base + ".gp");
@@ -196,8 +239,9 @@ std::string write_report(const std::vector<Experiment>& experiments, const Repor
         "[CLAIMS.md](CLAIMS.md).\n\n"
      << "Errors (paper §5): normals are absolute (RMS = L2, max = Linf of |n~ - n|); "
         "curvatures are relative norm ratios |e|/|k|. Each table lists the error per mesh level "
-        "and, at the end of the row, the average convergence rate log(e1/eN)/log(h1/hN) with "
-        "the measured mean edge length h. Xu-2 on open surfaces is scored over interior "
+        "and, at the end of the row, two average convergence rates: ours, log(e1/eN)/log(h1/hN) "
+        "with the measured mean edge length h, and the paper's, (1/(N-1)) log2(e1/eN), which "
+        "assumes that each level halves h. Xu-2 on open surfaces is scored over interior "
         "vertices only (paper §5.2).\n\n";
 
   // Table 2.
@@ -224,14 +268,9 @@ std::string write_report(const std::vector<Experiment>& experiments, const Repor
   // Table 4.
   const auto t4 = read_simple_csv(dir + "/table4.csv");
   if (t4.size() > 1) {
-    const char* paper_rows[][5] = {{"320", "0.11", "3.60e-3", "9.30e-3", ""},
-                                   {"1760", "0.048", "1.12e-3", "3.47e-3", ""},
-                                   {"7320", "0.023", "2.59e-4", "9.03e-4", ""},
-                                   {"31136", "0.011", "6.71e-5", "2.25e-4", ""},
-                                   {"122464", "0.0057", "1.65e-5", "5.70e-5", ""}};
     md << "## Table 4. Input position errors of torus meshes extracted by marching cubes\n\n"
        << "Signed distance function of the torus (R = 1, r = 0.3) sampled at n points per axis "
-          "on [-1.5, 1.5]^3, one vertex per sign-changing grid edge (ALGORITHM_NOTES §10.1(a))."
+          "on [-1.5, 1.5]^3, one vertex per sign-changing grid edge (docs/algorithms.md §10.1(a))."
           " The paper's \"average edge length\" column equals half the true mean edge length "
           "(see the last two columns).\n\n"
        << "| n | #verts (ours / paper) | L2 (ours / paper) | Linf (ours / paper) | rate L2 | "
@@ -246,14 +285,17 @@ std::string write_report(const std::vector<Experiment>& experiments, const Repor
         rate_l2 = fixed(std::log2(std::stod(p[4]) / rms));
         rate_inf = fixed(std::log2(std::stod(p[5]) / mx));
       }
-      const auto* paper = i - 1 < 5 ? paper_rows[i - 1] : nullptr;
-      md << "| " << r[0] << "^3 | " << r[1] << " / " << (paper ? paper[0] : "-") << " | "
-         << sci(rms) << " / " << (paper ? paper[2] : "-") << " | " << sci(mx) << " / "
-         << (paper ? paper[3] : "-") << " | " << rate_l2 << " | " << rate_inf << " | " << sci(h, 3)
-         << " | " << sci(0.5 * h, 2) << " / " << (paper ? paper[1] : "-") << " |\n";
+      const paper::Table4Row* p = i - 1 < paper::kTable4.size() ? &paper::kTable4[i - 1] : nullptr;
+      md << "| " << r[0] << "^3 | " << r[1] << " / " << (p ? std::to_string(p->vertices) : "-")
+         << " | " << sci(rms) << " / " << (p ? paper_sci(p->l2) : "-") << " | " << sci(mx) << " / "
+         << (p ? paper_sci(p->linf) : "-") << " | " << rate_l2 << " | " << rate_inf << " | "
+         << sci(h, 3) << " | " << sci(0.5 * h, 2) << " / " << (p ? paper_g(p->edge_column) : "-")
+         << " |\n";
     }
     md << "\n";
   }
+
+  md << well_shaped_torus_markdown(dir + "/torus_unstructured.csv");
 
   // Table 5 (performance issue), if present.
   const std::string t5 = read_text(dir + "/table5_timing.md");
@@ -299,18 +341,19 @@ std::string write_report(const std::vector<Experiment>& experiments, const Repor
            << sel.front()->vertex_set << (sel.front()->noise != "none" ? ", noise " : "")
            << (sel.front()->noise != "none" ? sel.front()->noise : "") << ")\n\n| method |";
         for (int l : levels) md << " level " << l << " |";
-        md << " rate |\n|---|";
-        for (size_t i = 0; i <= levels.size(); ++i) md << "---|";
+        md << " rate (h) | rate (halving) |\n|---|";
+        for (size_t i = 0; i <= levels.size() + 1; ++i) md << "---|";
         md << "\n| *h (#verts)* |";
         for (int l : levels) md << " " << sci(any_at[l]->h) << " (" << any_at[l]->vertices << ") |";
-        md << " |\n";
+        md << " | |\n";
         for (const auto& s : series) {
           md << "| " << s.method << " |";
           for (int l : levels) {
             auto it = s.by_level.find(l);
             md << " " << (it == s.by_level.end() ? "-" : sci(it->second->error)) << " |";
           }
-          md << " **" << fixed(series_rate(s)) << "** |\n";
+          md << " **" << fixed(series_rate(s)) << "** | " << fixed(series_halving_rate(s))
+             << " |\n";
         }
         const std::string base = panel.id + "_" + m.family;
         md << "\n";

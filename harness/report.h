@@ -40,6 +40,7 @@ struct PlotAxis {
   std::string label = "mean edge length h";
   bool reversed = true;
   bool rate_in_legend = true;
+  bool reference_slopes = true;  ///< dashed O(h^p) lines (x must be h)
 };
 
 /// Renders one panel's log-log plot (error vs h, one line per method, rate in the legend) to

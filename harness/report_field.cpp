@@ -220,6 +220,7 @@ bool append_field_estimators_section(std::ostringstream& md,
         axis.label = "time per vertex (microseconds)";
         axis.reversed = false;
         axis.rate_in_legend = false;
+        axis.reference_slopes = false;
         if (render_plot(dir + "/plots/" + base,
                         "Accuracy versus cost: L2 error in H against time per vertex [" +
                             mesh.family + (any->noise != "none" ? ", noise " + any->noise : "") +

@@ -1,4 +1,5 @@
 #include "harness/run_pipeline.h"
+#include "harness/well_shaped_torus_table.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -122,6 +123,17 @@ PipelineResult run_pipeline(const PipelineOptions& o) {
     say(format("[run] Table 4 (isosurface torus, n = 16..%d)", o.table4_max));
     write_table4_csv(o.output + "/table4.csv", o.table4_max);
     if (stop()) return stopped(0);
+    const auto uses_family = [](const Experiment& e, const std::string& family) {
+      return std::any_of(e.meshes.begin(), e.meshes.end(),
+                         [&](const ExperimentMesh& m) { return m.family == family; });
+    };
+    if (std::any_of(o.experiments.begin(), o.experiments.end(), [&](const Experiment& e) {
+          return uses_family(e, "torus-unstructured");
+        })) {
+      say("[run] well-shaped torus meshes (torus-unstructured, levels 1-4)");
+      write_well_shaped_torus_csv(o.output + "/torus_unstructured.csv");
+      if (stop()) return stopped(0);
+    }
   }
   if (!o.report_only) {
     RunOptions ro;

@@ -68,7 +68,7 @@ class Mesh {
   /// Signed volume enclosed (divergence theorem); > 0 for a closed outward-oriented surface.
   double signed_volume() const;
 
-  /// Area-weighted vertex normals (ALGORITHM_NOTES §2): normalised sum of the un-normalised face
+  /// Area-weighted vertex normals (docs/algorithms.md §2): normalised sum of the un-normalised face
   /// cross products (x2-x1)x(x3-x1). n x 3. A vertex without faces or with zero total area gets
   /// the zero vector.
   VertexMatrix area_weighted_normals() const;

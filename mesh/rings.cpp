@@ -60,7 +60,7 @@ bool RingCollector::integer_step() {
 }
 
 // Adds every face sharing an edge with a face of F_k. Only faces added by the last integer step
-// can have such neighbours outside F_k (ALGORITHM_NOTES §1.1). Edges are matched through the
+// can have such neighbours outside F_k (docs/algorithms.md §1.1). Edges are matched through the
 // vertex-face lists, so non-manifold edges contribute all their faces.
 bool RingCollector::half_step() {
   const size_t before = faces_.size();

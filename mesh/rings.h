@@ -1,4 +1,4 @@
-// k-ring and half-ring neighbourhoods (paper §4.1; ALGORITHM_NOTES §1.1-1.2).
+// k-ring and half-ring neighbourhoods (paper §4.1; docs/algorithms.md §1.1-1.2).
 //
 //   F_1     = faces incident on v;                V_r = vertices of F_r
 //   F_k     = union of F(w) over w in V_{k-1}     (k >= 2 integer)
@@ -28,7 +28,7 @@ constexpr double default_ring(int degree) {
 }
 
 /// Minimum number of neighbours (centre excluded) before the ring stops growing:
-/// round(1.5 * n(d)) = 5, 9, 15, 23, 32, 42 for d = 1..6 (ALGORITHM_NOTES §1.2, [C2]).
+/// round(1.5 * n(d)) = 5, 9, 15, 23, 32, 42 for d = 1..6 (docs/algorithms.md §1.2, [C2]).
 constexpr int min_neighbours(int degree) {
   return (3 * num_coefficients(degree) + 1) / 2;
 }

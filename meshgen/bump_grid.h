@@ -1,4 +1,4 @@
-// Gaussian-bump meshes on [0,1]^2: the 4-8 ("union-jack") mesh (ALGORITHM_NOTES §10.2; paper
+// Gaussian-bump meshes on [0,1]^2: the 4-8 ("union-jack") mesh (docs/algorithms.md §10.2; paper
 // §5.2), and the lifting shared with bump_irregular.h.
 //
 // Bump z = f(x,y) = exp(-81/16 ((x-1/2)^2 + (y-1/2)^2)); vertices lie exactly on it, (x, y,

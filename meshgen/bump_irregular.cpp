@@ -23,7 +23,7 @@ using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;
 using Tds = CGAL::Triangulation_data_structure_2<VertexBase>;
 using Delaunay = CGAL::Delaunay_triangulation_2<Kernel, Tds>;
 
-constexpr double kJitter = 0.25;  // in units of h (ALGORITHM_NOTES §10.2 [CH])
+constexpr double kJitter = 0.25;  // in units of h (docs/algorithms.md §10.2 [CH])
 
 }  // namespace
 
@@ -94,7 +94,7 @@ GeneratedMesh bump_irregular(int level, std::uint64_t seed) {
       "bump-irregular level " + std::to_string(level) +
           ": Gaussian bump a=81/16 on [0,1]^2, N=" + std::to_string(N) +
           " grid, interior points jittered U(-h/4,h/4) in x and y, boundary points along their "
-          "edge, corners fixed, CGAL Delaunay (ALGORITHM_NOTES 10.2), seed=" +
+          "edge, corners fixed, CGAL Delaunay (docs/algorithms.md 10.2), seed=" +
           std::to_string(seed));
 }
 

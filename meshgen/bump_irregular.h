@@ -1,5 +1,5 @@
 // "Irregular" Gaussian-bump meshes: a seeded jittered point set on [0,1]^2, triangulated by
-// CGAL's 2-D Delaunay triangulation and lifted onto the bump (ALGORITHM_NOTES §10.2 [CH]; paper
+// CGAL's 2-D Delaunay triangulation and lifted onto the bump (docs/algorithms.md §10.2 [CH]; paper
 // §5.2 gives only a figure: "well-shaped" with varying valences).
 //
 // Level L: N = 16*2^(L-1), h = 1/N. Point (i, j), 0 <= i, j <= N, index j*(N+1) + i, starts at

@@ -13,6 +13,7 @@
 #include "meshgen/noise.h"
 #include "meshgen/torus_isosurface.h"
 #include "meshgen/torus_structured.h"
+#include "meshgen/torus_unstructured.h"
 
 namespace curvbench {
 
@@ -26,6 +27,7 @@ struct FamilyInfo {
 constexpr FamilyInfo kFamilies[] = {
     {"torus-structured", 6},    {"torus-jittered", 6},         {"torus-iso", 5},
     {"torus-iso-projected", 5}, {"bump-48", max_bump_level()}, {"bump-irregular", max_bump_level()},
+    {"torus-unstructured", 4},
 };
 constexpr int kMaxNoiseOrder = 4;
 
@@ -70,6 +72,8 @@ GeneratedMesh generate_mesh(const MeshSpec& spec) {
     gm = torus_isosurface(isosurface_grid_points(spec.level), spec.family == "torus-iso-projected");
     gm.family = spec.family;
     gm.level = spec.level;
+  } else if (spec.family == "torus-unstructured") {
+    gm = torus_unstructured(spec.level, spec.seed);
   } else if (spec.family == "bump-48") {
     gm = bump_48(spec.level);
   } else {  // bump-irregular (the family was validated above)

@@ -1,4 +1,4 @@
-// Dispatcher over the test-mesh generators (ALGORITHM_NOTES §10), used by `curvbench mesh` and
+// Dispatcher over the test-mesh generators (docs/algorithms.md §10), used by `curvbench mesh` and
 // the experiments, plus simple mesh-quality statistics.
 //
 // Families and levels:

@@ -1,4 +1,4 @@
-// Marching cubes on a rectilinear grid (ALGORITHM_NOTES §10.1(a); paper §5.1, "isosurface
+// Marching cubes on a rectilinear grid (docs/algorithms.md §10.1(a); paper §5.1, "isosurface
 // function of MATLAB").
 //
 // Input: axis coordinates x (nx), y (ny), z (nz), each strictly increasing with >= 2 entries, and

@@ -1,5 +1,5 @@
 // Case tables of marching cubes with face-consistent resolution of ambiguous faces
-// (ALGORITHM_NOTES §10.1(a); used by meshgen/marching_cubes.h).
+// (docs/algorithms.md §10.1(a); used by meshgen/marching_cubes.h).
 //
 // Cube numbering (Bourke / Lorensen-Cline):
 //   corner c = 0..7 at offset kCornerOffset[c] = (dx, dy, dz):

@@ -1,11 +1,11 @@
-// Controlled normal noise (ALGORITHM_NOTES §10.3; paper §5.3):
+// Controlled normal noise (docs/algorithms.md §10.3; paper §5.3):
 //   x_i <- x_i + alpha_i h^k n(x*_i),   alpha_i = alpha_scale * xi_i,  xi_i ~ N(0, 1),
 // with h the mean edge length of the input mesh, k the noise order (2 or 3 in the paper), n the
 // exact unit normal at the vertex's exact point x*_i (GeneratedMesh::exact_points), and xi_i
 // drawn by Box-Muller (meshgen/random.h) from Rng(derive_seed(seed, 1000*level + k)), one value per
 // vertex in index order. Every vertex is moved, boundary included.
 // The paper's "alpha random between 0 and 0.1 with Gaussian distribution" is ambiguous; the
-// model alpha = 0.1 * N(0,1) is the ALGORITHM_NOTES default [CH].
+// model alpha = 0.1 * N(0,1) is the docs/algorithms.md default [CH].
 //
 // Input/output: GeneratedMesh; the output has the same faces, exact_points (the unperturbed
 // points, where exact quantities are evaluated), surface, family and level; the vertices

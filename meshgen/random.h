@@ -1,4 +1,4 @@
-// Seeded, deterministic random numbers for the mesh generators (ALGORITHM_NOTES §10.1(b) jitter,
+// Seeded, deterministic random numbers for the mesh generators (docs/algorithms.md §10.1(b) jitter,
 // §10.2 irregular point set, §10.3 controlled noise).
 //
 // The engine is std::mt19937_64, whose output sequence is fixed by the C++ standard. The

@@ -1,5 +1,5 @@
 // "Poor-shaped" torus meshes: marching cubes on the signed distance function of the torus
-// (paper §5.1, §5.3, Table 4; ALGORITHM_NOTES §10.1(a); PAPER_CLAIMS A2-A4).
+// (paper §5.1, §5.3, Table 4; docs/algorithms.md §10.1(a); docs/claims.md A2-A4).
 //
 // MATLAB original:  [X,Y,Z] = meshgrid(linspace(-1.5,1.5,n));
 //                   V = sqrt((sqrt(X.^2+Y.^2)-1).^2+Z.^2)-0.3;  isosurface(X,Y,Z,V,0)
@@ -38,7 +38,7 @@ double torus_signed_distance(double x, double y, double z);
 GeneratedMesh torus_isosurface(int grid_points, bool project);
 
 /// One row of Table 4. mean_edge_length is the true mean over unique edges (the paper's column
-/// is half of it, PAPER_CLAIMS A4); errors are the RMS and max of |f| at the raw vertices.
+/// is half of it, docs/claims.md A4); errors are the RMS and max of |f| at the raw vertices.
 struct Table4Row {
   int grid_points;
   int vertices;

@@ -11,8 +11,8 @@
 namespace curvbench {
 
 namespace {
-constexpr double kJitterCells = 0.15;  // ALGORITHM_NOTES §10.1(b) [CH]
-// Levels 1-4 (V = 1408 .. 90112) are those of ALGORITHM_NOTES §10.1(b); 5 and 6 (360448 and
+constexpr double kJitterCells = 0.15;  // docs/algorithms.md §10.1(b) [CH]
+// Levels 1-4 (V = 1408 .. 90112) are those of docs/algorithms.md §10.1(b); 5 and 6 (360448 and
 // 1441792 vertices) are beyond the paper, for the linear-scaling benchmark (issue 6).
 constexpr int kMaxLevel = 6;
 }  // namespace
@@ -73,7 +73,7 @@ GeneratedMesh torus_structured(int level, bool jitter, std::uint64_t seed) {
   char buf[256];
   std::snprintf(buf, sizeof buf,
                 "torus-structured level %d: torus R=1 r=0.3, staggered structured mesh "
-                "(ALGORITHM_NOTES 10.1b), n_u=%d n_v=%d, jitter=%s",
+                "(docs/algorithms.md 10.1b), n_u=%d n_v=%d, jitter=%s",
                 level, nu, nv, jitter ? "U(-0.15,0.15) cells" : "off");
   out.description = buf;
   if (jitter) out.description += " seed=" + std::to_string(seed);

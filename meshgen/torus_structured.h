@@ -1,5 +1,5 @@
 // "Well-shaped" torus meshes: the staggered structured substitute for the paper's GAMBIT meshes
-// (ALGORITHM_NOTES §10.1(b); paper §5.1, Table 5: V = 1338, 5246, 21156, 85208, F = 2V).
+// (docs/algorithms.md §10.1(b); paper §5.1, Table 5: V = 1338, 5246, 21156, 85208, F = 2V).
 //
 // Torus R = 1, r = 0.3, x(u,v) = ((R + r cos v) cos u, (R + r cos v) sin u, r sin v).
 // Level L: n_v = 22*2^(L-1) rows around the tube, n_u = 64*2^(L-1) points per row,

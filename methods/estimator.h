@@ -66,7 +66,7 @@ struct VertexEstimate {
 /// goldfeather; methods/vertex_normals.h): method_default = what the method's authors' code uses.
 enum class VertexNormals : std::uint8_t { method_default, area, angle, max };
 
-/// Options shared by all methods. Defaults follow the paper and ALGORITHM_NOTES.
+/// Options shared by all methods. Defaults follow the paper and docs/algorithms.md.
 struct EstimatorOptions {
   int degree = 0;                ///< fitting degree d (1..6; Xu: 2); 0 = the method's default
                                  ///< (2 for a fit; a degree-free method accepts only 0)
@@ -96,7 +96,7 @@ class MeshData {
 /// Mesh data shared read-only by all threads during one estimation run.
 struct MeshContext {
   const Mesh& mesh;
-  const VertexMatrix& approx_normals;  ///< area-weighted vertex normals (ALGORITHM_NOTES §2)
+  const VertexMatrix& approx_normals;  ///< area-weighted vertex normals (docs/algorithms.md §2)
   const MeshData* data = nullptr;      ///< what Estimator::prepare() returned (may be null)
 };
 
@@ -132,7 +132,7 @@ class Estimator {
   virtual double default_ring() const;
 
   /// The starting neighbourhood of vertex v, the same for every ring-based method (paper §4.1,
-  /// ALGORITHM_NOTES §1.2): ring r0 = options().ring or default_ring(); when options().adaptive,
+  /// docs/algorithms.md §1.2): ring r0 = options().ring or default_ring(); when options().adaptive,
   /// grown by half rings until min_neighbours(degree) neighbours or ring 2 r0. Returns r0.
   double collect_neighbourhood(RingCollector& rings, int v) const;
 

@@ -49,7 +49,7 @@ int truncated_svd_solve(const FitMatrix& A, const RhsMatrix& B, SvdAlgorithm alg
                         double threshold, bool relative, CoeffMatrix& X,
                         LeastSquaresScratch& scratch);
 
-/// Xu's solver (paper §4.3.1, ALGORITHM_NOTES §7): eigendecomposition A^T A = U diag(s) U^T,
+/// Xu's solver (paper §4.3.1, docs/algorithms.md §7): eigendecomposition A^T A = U diag(s) U^T,
 /// X = sum over s_i >= threshold of u_i u_i^T A^T B / s_i (absolute threshold on the eigenvalues,
 /// 1e-8 in Xu 2007): the minimum-norm solution in the scaled variables. Returns the number of
 /// eigenvalues kept.

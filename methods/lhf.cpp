@@ -1,4 +1,4 @@
-// LHF-d: local height function fitting (paper §2.2, §4.2.2; ALGORITHM_NOTES §3, §5.5, §6.1).
+// LHF-d: local height function fitting (paper §2.2, §4.2.2; docs/algorithms.md §3, §5.5, §6.1).
 // The ring is projected orthogonally onto the plane of the approximate normal m0 (frame of §3),
 // the heights f_i = (p_i - p0) . m0 are fitted by a degree-d weighted polynomial (eq. 15 weights
 // with the normal safeguard, safeguarded QR), and the normal and curvatures come from the height

@@ -1,4 +1,4 @@
-// Local frame of ALGORITHM_NOTES §3; see local_frame.h.
+// Local frame of docs/algorithms.md §3; see local_frame.h.
 #include "methods/local_frame.h"
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Local orthonormal frame at a vertex (ALGORITHM_NOTES §3 [C1, C2, C3]; paper §2.2).
+// Local orthonormal frame at a vertex (docs/algorithms.md §3 [C1, C2, C3]; paper §2.2).
 //
 //   e  = (|m.x| > |m.y| && |m.x| > |m.z|) ? (0,1,0) : (1,0,0)
 //   t1 = normalize(e - (e.m) m),   t2 = m x t1,   U = [t1 t2 m]  (right-handed)
@@ -17,7 +17,7 @@ struct LocalFrame {
   Vec3 m = Vec3::UnitZ();   ///< w axis (the approximate normal)
 };
 
-/// Frame of ALGORITHM_NOTES §3 for a unit normal m. A zero or non-finite m (an isolated vertex)
+/// Frame of docs/algorithms.md §3 for a unit normal m. A zero or non-finite m (an isolated vertex)
 /// gives the global frame (x, y, z).
 LocalFrame make_local_frame(const Vec3& m);
 

@@ -1,7 +1,7 @@
-// LOP-d: local orthogonal projection parameterization (paper §4.2.2; ALGORITHM_NOTES §3, §6.2).
+// LOP-d: local orthogonal projection parameterization (paper §4.2.2; docs/algorithms.md §3, §6.2).
 // The same projection, neighbourhood, weights and safeguard as LHF-d, but the three global
 // coordinates x - p0 are fitted (3 right-hand sides, one QR) and the quantities come from the
-// parametric formulas, eqs. (1)-(8). Mathematically identical to LHF-d (ALGORITHM_NOTES §3 [D]);
+// parametric formulas, eqs. (1)-(8). Mathematically identical to LHF-d (docs/algorithms.md §3 [D]);
 // only the cost differs.
 #include <memory>
 

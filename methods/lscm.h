@@ -1,4 +1,4 @@
-// LSCM-d: ring fitting on a local least-squares conformal map (paper §4.2.3; ALGORITHM_NOTES §8).
+// LSCM-d: ring fitting on a local least-squares conformal map (paper §4.2.3; docs/algorithms.md §8).
 //
 // Per vertex the shared driver (ring_fit_estimator.h) collects the ring of the degree (default
 // (d+1)/2, adaptive half-ring growth), and this estimator maps the ring faces F_r to the plane
@@ -11,10 +11,11 @@
 //
 //   "lscm"       CgalLscmMap: CGAL's LSCM_parameterizer_3 + Two_vertices_parameterizer_3, as in
 //                the paper (Eigen SimplicialLDLT on the normal equations by default).
-//   "lscm-fast"  LscmMap: the in-house dense LSCM (Levy's area-normalised energy, pins the two
-//                vertices farthest apart by default).
+//   "lscm-fast"  LscmMap: the in-house dense LSCM with CGAL's choices by default (the two pins are
+//                the extremes along the longest bounding-box axis, the energy is not divided by
+//                triangle area), so it matches "lscm" up to a similarity (lscm_fast.cpp).
 //
-// gamma of eq. (15) is 1 by default (ALGORITHM_NOTES §4 [CH]: the paper applies the normal-angle
+// gamma of eq. (15) is 1 by default (docs/algorithms.md §4 [CH]: the paper applies the normal-angle
 // safeguard to LOP only); LscmSettings::normal_safeguard = true applies gamma = max(0, m_i . m0).
 #pragma once
 

@@ -1,5 +1,5 @@
 // Least-squares conformal maps (Levy et al. 2002) of a ring patch: the parameterization of
-// LSCM-d (paper §4.2.3; ALGORITHM_NOTES §8).
+// LSCM-d (paper §4.2.3; docs/algorithms.md §8).
 //
 // Input: the mesh, the centre vertex p0, its ring neighbours V_r \ {p0} and the ring faces F_r
 // (RingCollector::neighbours() and faces()). Patch vertex i is p0 for i = 0 and neighbours[i-1]
@@ -7,7 +7,7 @@
 // must be in a face, and the patch must be a topological disk (connected, consistently oriented,
 // edge- and vertex-manifold, one boundary loop, V - E + F = 1).
 //
-// Output: uv (N rows), uv[i] = (u, v) of patch vertex i, normalised (ALGORITHM_NOTES §6.2, §8):
+// Output: uv (N rows), uv[i] = (u, v) of patch vertex i, normalised (docs/algorithms.md §6.2, §8):
 // translated so that uv[0] = (0, 0), and v -> -v if the mapped patch is clockwise (total signed
 // area of the mapped faces < 0). Normals and curvatures of a fit are invariant under similarities
 // of (u, v), so no scaling or rotation is applied.
@@ -21,7 +21,7 @@
 //     invariant). The normal equations are solved with Eigen's SimplicialLDLT (CGAL's default
 //     when Eigen is available) or OpenNL's Jacobi-preconditioned conjugate gradients (the default
 //     without Eigen; relative tolerance 1e-6).
-//   LscmMap: in-house, dense. Default (ALGORITHM_NOTES §8 [CH]): Levy's s_T = 1 / A_T, pins the
+//   LscmMap: in-house, dense. Default (docs/algorithms.md §8 [CH]): Levy's s_T = 1 / A_T, pins the
 //     two patch vertices farthest apart at U = 0 and U = 1, then solves the Hermitian normal
 //     equations of the complex least-squares problem (N - 2 complex unknowns, the same problem as
 //     the real 2N-unknown form) by an in-place Cholesky factorisation. Buffers are reused, so a
@@ -89,13 +89,13 @@ double mapped_signed_area(const RingPatch& patch, std::span<const Vec2> uv);
 bool normalise_patch_map(const RingPatch& patch, std::span<Vec2> uv);
 
 enum class LscmPins {
-  farthest_pair,  ///< the two patch vertices farthest apart in 3-D (ALGORITHM_NOTES §8)
+  farthest_pair,  ///< the two patch vertices farthest apart in 3-D (docs/algorithms.md §8)
   bounding_box,   ///< CGAL Two_vertices_parameterizer_3: extremes along the longest bbox axis
 };
 
 struct LscmMapOptions {
   LscmPins pins = LscmPins::farthest_pair;
-  /// true: Levy's energy, each triangle weighted by 1/A_T (ALGORITHM_NOTES §8); false: CGAL's
+  /// true: Levy's energy, each triangle weighted by 1/A_T (docs/algorithms.md §8); false: CGAL's
   /// unnormalised energy. A_T is floored at 1e-6 times the mean patch face area so that
   /// degenerate (marching-cubes) triangles do not make the system singular.
   bool area_normalised = true;

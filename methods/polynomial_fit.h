@@ -1,4 +1,4 @@
-// Weighted least-squares polynomial fitting (paper §3.1, eqs. 10-14; ALGORITHM_NOTES §5):
+// Weighted least-squares polynomial fitting (paper §3.1, eqs. 10-14; docs/algorithms.md §5):
 // the one routine every fitting estimator (LHF, LOP, LSCM, Xu) calls.
 //
 // Input, m rows (m <= kMaxRows) and k right-hand sides (k <= kMaxRhs):

@@ -1,4 +1,4 @@
-// Shared per-vertex driver of LHF, LOP and LSCM (ALGORITHM_NOTES §5.5); see
+// Shared per-vertex driver of LHF, LOP and LSCM (docs/algorithms.md §5.5); see
 // ring_fit_estimator.h.
 #include "methods/ring_fit_estimator.h"
 
@@ -70,7 +70,7 @@ std::unique_ptr<ParamScratch> RingFitEstimator::make_param_scratch(const Mesh&) 
 
 bool RingFitEstimator::parameterize(const RingView& ring, std::vector<Vec2>& uv,
                                     ParamScratch*) const {
-  // LOP (paper §4.2.2, ALGORITHM_NOTES §3): u = (p - p0) . t1, v = (p - p0) . t2.
+  // LOP (paper §4.2.2, docs/algorithms.md §3): u = (p - p0) . t1, v = (p - p0) . t2.
   const Vec3 p0 = ring.mesh.position(ring.centre);
   uv.resize(1 + ring.neighbours.size());
   uv[0] = Vec2::Zero();
@@ -170,7 +170,7 @@ void RingFitEstimator::estimate(const MeshContext& ctx, int v, Workspace& base,
       have_fit = true;
       fit_ring = ring;
     }
-    // Rank-failure rule (ALGORITHM_NOTES §1.2, [C2]): grow by half a ring up to 2 r0.
+    // Rank-failure rule (docs/algorithms.md §1.2, [C2]): grow by half a ring up to 2 r0.
     const bool reduced = !have_fit || fit.degree < d;
     if (!options_.adaptive || !reduced || ring >= max_ring - 1e-9) break;
     const size_t before_v = ws.rings.neighbours().size();

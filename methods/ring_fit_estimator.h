@@ -1,4 +1,4 @@
-// The shared per-vertex driver of the ring-based fitting methods (ALGORITHM_NOTES §5.5):
+// The shared per-vertex driver of the ring-based fitting methods (docs/algorithms.md §5.5):
 // LHF-d, LOP-d and (through the parameterization hook) LSCM-d.
 //
 // Per vertex v (approximate normal m0 = area-weighted normal, frame of §3):
@@ -51,7 +51,7 @@
 //       the parallel loop, may allocate and throw.
 //   bool use_normal_safeguard() const
 //       whether gamma_i = max(0, m_i . m0) of eq. (15) multiplies the weights; the default is
-//       options().normal_safeguard (LHF/LOP); ALGORITHM_NOTES §4 recommends gamma = 1 for LSCM.
+//       options().normal_safeguard (LHF/LOP); docs/algorithms.md §4 recommends gamma = 1 for LSCM.
 // Everything else (rings, rows, weights, solver, rank-failure rule, formulas, status) is shared.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Safeguarded Householder QR (ALGORITHM_NOTES §5.4); see safeguarded_qr.h.
+// Safeguarded Householder QR (docs/algorithms.md §5.4); see safeguarded_qr.h.
 //
 // Speed (issue 6). The systems are small (LHF-2: 13 x 6 on a valence-6 mesh), so the cost is
 // the latency of the dot-product chains, not the flops. A reflector is therefore applied to many

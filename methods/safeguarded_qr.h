@@ -1,4 +1,4 @@
-// Householder QR with the degree safeguard of Jiao and Zha (paper §4.3.2; ALGORITHM_NOTES
+// Householder QR with the degree safeguard of Jiao and Zha (paper §4.3.2; docs/algorithms.md
 // §5.2-5.4, following [C1] FronTier `safeqr`).
 //
 //   1. pre-reduce:  while d > 1 and m < ncols(d): d--            (m rows after dropping)

@@ -1,5 +1,5 @@
 // Bivariate monomial (generalized Vandermonde) matrices for local polynomial fitting
-// (paper eqs. 10-11; ALGORITHM_NOTES §0).
+// (paper eqs. 10-11; docs/algorithms.md §0).
 //
 // Column order: by total degree, then by decreasing power of u:
 //   1 | u v | u^2 uv v^2 | u^3 u^2v uv^2 v^3 | ...      n(d) = (d+1)(d+2)/2 columns
@@ -7,7 +7,7 @@
 // constant factors irrelevant. The Taylor derivative is c_jk = j! k! (monomial coefficient).
 // Without the constant column (a fit through the centre) every index shifts down by one.
 //
-// Fixed-capacity types: at most kMaxRows points (ALGORITHM_NOTES §1.2 caps a stencil at 128),
+// Fixed-capacity types: at most kMaxRows points (docs/algorithms.md §1.2 caps a stencil at 128),
 // kMaxCols = n(6) = 28 columns, kMaxRhs = 3 right-hand sides. Resizing within the capacity
 // never allocates, so a per-thread scratch of these types makes the per-vertex loop
 // allocation-free.

@@ -1,4 +1,4 @@
-// Row weights of the weighted least-squares fit: paper eq. (15), ALGORITHM_NOTES §4.
+// Row weights of the weighted least-squares fit: paper eq. (15), docs/algorithms.md §4.
 //
 //   w_i = gamma_i / (sqrt(|u_i|^2 + eps))^(d/2) = gamma_i (|u_i|^2 + eps)^(-p),  p = d/4,
 //   eps = 0.01 * mean_i |u_i|^2   over the rows being fitted (the centre's 0 included when the

@@ -1,5 +1,5 @@
 // Xu-2: Xu's 1-ring parameterization with a quadratic fit through the vertex (paper §4.2.1,
-// §4.3.1; ALGORITHM_NOTES §7).
+// §4.3.1; docs/algorithms.md §7).
 //
 //   neighbours p_1..p_n of the interior vertex p0, counter-clockwise about the outward normal
 //   (taken from the face order); alpha_j = angle(p_j - p0, p_{j+1} - p0) by atan2(|a x b|, a.b);

@@ -1,4 +1,4 @@
-// The open test surface of paper §5.2 (ALGORITHM_NOTES §10.2, §11.2): the Gaussian bump
+// The open test surface of paper §5.2 (docs/algorithms.md §10.2, §11.2): the Gaussian bump
 //   z = g(r) = exp(-a r^2),  r^2 = (x - 1/2)^2 + (y - 1/2)^2,  a = 81/16,  on [0, 1]^2,
 // a HeightField named "bump" with the analytic derivatives of §11.2 (dx = x - 1/2, dy = y - 1/2):
 //   f_x = -2a dx g, f_y = -2a dy g, f_xx = (4a^2 dx^2 - 2a) g, f_yy = (4a^2 dy^2 - 2a) g,

@@ -1,5 +1,5 @@
 // Generic height field z = f(x, y) over a rectangle, with f and its derivatives up to second
-// order given analytically (paper §2.2; ALGORITHM_NOTES §6.1).
+// order given analytically (paper §2.2; docs/algorithms.md §6.1).
 //
 //   position(x, y) = (x, y, f(x, y)), normal upward (+z), parameters (u, v) = (x, y).
 //   evaluate(): project(), then curvature_from_height with the global frame t1 = (1, 0, 0),

@@ -1,4 +1,4 @@
-// Sphere of radius a centred at the origin (the sign-convention test of ALGORITHM_NOTES §0).
+// Sphere of radius a centred at the origin (the sign-convention test of docs/algorithms.md §0).
 //
 //   position(u, v) = a (cos v cos u, cos v sin u, sin v),  u = longitude, v = latitude in
 //   [-pi/2, pi/2]; x_u x x_v = a^2 cos v * n points outward (the torus form with R = 0).

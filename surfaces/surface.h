@@ -1,6 +1,6 @@
 // Analytic surfaces with exact differential quantities, used to score the estimators.
 //
-// Sign convention (paper eq. 2, ALGORITHM_NOTES §0): B = n . x_uu with n the outward normal of a
+// Sign convention (paper eq. 2, docs/algorithms.md §0): B = n . x_uu with n the outward normal of a
 // closed surface or the upward (+z) normal of a height field. A sphere of radius a therefore has
 // k1 = k2 = H = -1/a and K = 1/a^2. k1 >= k2 algebraically; d1 is the direction of k1.
 #pragma once

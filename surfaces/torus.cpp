@@ -1,4 +1,4 @@
-// Ring torus; closed forms of ALGORITHM_NOTES §11.1. See torus.h.
+// Ring torus; closed forms of docs/algorithms.md §11.1. See torus.h.
 #include "surfaces/torus.h"
 
 #include <cmath>

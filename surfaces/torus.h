@@ -1,4 +1,4 @@
-// Ring torus about the z axis (paper §5.1; ALGORITHM_NOTES §10.1, §11.1).
+// Ring torus about the z axis (paper §5.1; docs/algorithms.md §10.1, §11.1).
 //
 //   position(u, v) = ((R + r cos v) cos u, (R + r cos v) sin u, r sin v),  u, v angles;
 //   x_u x x_v points outward.

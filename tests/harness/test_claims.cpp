@@ -1,7 +1,8 @@
 // Claims evaluator (harness/claims.h) on synthetic result CSVs: errors e = C h^p with chosen
 // rates, written with write_error_csv into a temporary folder, plus hand-written Table 2/4/5.
-// An "ideal" set is built to satisfy every band of PAPER_CLAIMS.md; the tests then break one
-// property at a time and check that the right claim flips.
+// An "ideal" set is built to satisfy every band of the registry (docs/claims.md; the bands are read
+// back with claim_band); the tests then break one property at a time and check that the right
+// claim flips. The paper's tables come from harness/paper_tables.h.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -15,6 +16,7 @@
 
 #include "core/errors.h"
 #include "harness/claims.h"
+#include "harness/paper_tables.h"
 #include "harness/results_table.h"
 
 namespace curvbench {
@@ -135,13 +137,13 @@ void add_lhf_lop_lscm(SyntheticSet& s, const std::string& exp, const std::string
   s.add(exp, fam, levels, "LSCM-2", ring, noise, "all", q, norm, 1.2, p);
 }
 
-// Every experiment of experiments/*.exp, with rates chosen inside every band of PAPER_CLAIMS.
+// Every experiment of experiments/*.exp, with rates chosen inside every band of docs/claims.md.
 SyntheticSet ideal_set() {
   SyntheticSet s;
   // fig03-05: noise-free torus, degree 2 (Xu-2 on 1-rings, others on 1.5-rings).
-  for (const std::string fam : {"torus-jittered", "torus-iso-projected"}) {
-    const auto& lv = fam == "torus-jittered" ? kL14 : kL25;
-    const bool well = fam == "torus-jittered";
+  for (const std::string fam : {"torus-unstructured", "torus-iso-projected"}) {
+    const auto& lv = fam == "torus-unstructured" ? kL14 : kL25;
+    const bool well = fam == "torus-unstructured";
     const std::string e = "fig03-05";
     add_lhf_lop_lscm(s, e, fam, lv, "1.5", "none", "normal", "L2", 2.0);
     s.add(e, fam, lv, "LHF-2", "1.5", "none", "all", "normal", "Linf", 3.0, 2.0);
@@ -162,9 +164,9 @@ SyntheticSet ideal_set() {
     s.add(e, fam, lv, "Xu-2", "1", "none", "all", "K", "L2", 0.8, well ? 2.0 : 0.2);
   }
   // fig06-07: degrees 3 and 4 (2- and 2.5-rings).
-  for (const std::string fam : {"torus-jittered", "torus-iso-projected"}) {
-    const auto& lv = fam == "torus-jittered" ? kL14 : kL25;
-    const bool well = fam == "torus-jittered";
+  for (const std::string fam : {"torus-unstructured", "torus-iso-projected"}) {
+    const auto& lv = fam == "torus-unstructured" ? kL14 : kL25;
+    const bool well = fam == "torus-unstructured";
     for (const std::string q : {"normal", "H", "K", "d1"}) {
       const bool n = q == "normal";
       s.add("fig06-07", fam, lv, "LHF-3", "2", "none", "all", q, "L2", 1.0, n ? 3.0 : 2.0);
@@ -225,51 +227,48 @@ SyntheticSet ideal_set() {
 
 // Table 2 with the paper's numbers (pts[3] replaced if given).
 std::string table2_text(int points_d4 = 31) {
-  return "degree,coefficients,ring,points_with_centre,paper_points\n"
-         "1,3,1,7,7\n2,6,1.5,13,13\n3,10,2,19,19\n4,15,2.5," +
-         std::to_string(points_d4) + ",31\n5,21,3,37,37\n6,28,3.5,55,55\n";
+  std::string out = "degree,coefficients,ring,points_with_centre,paper_points\n";
+  for (const auto& r : paper::kTable2)
+    out += std::to_string(r.degree) + "," + std::to_string(r.coefficients) + "," +
+           format_double(0.5 * (r.degree + 1)) + "," +
+           std::to_string(r.degree == 4 ? points_d4 : r.points_with_centre) + "," +
+           std::to_string(r.points_with_centre) + "\n";
+  return out;
 }
 
 // Table 4 with the paper's numbers; mean edge length = edge_factor x the paper's column.
 std::string table4_text(double edge_factor = 2.0, const std::string& rms16 = "3.60e-3",
                         int verts16 = 320) {
-  const int n[5] = {16, 32, 64, 128, 256};
-  const int v[5] = {verts16, 1760, 7320, 31136, 122464};
-  const double col[5] = {0.11, 0.048, 0.023, 0.011, 0.0057};
-  const std::string rms[5] = {rms16, "1.12e-3", "2.59e-4", "6.71e-5", "1.65e-5"};
-  const std::string mx[5] = {"9.30e-3", "3.47e-3", "9.03e-4", "2.25e-4", "5.70e-5"};
   std::string out = "grid_points,vertices,mean_edge_length,paper_edge_length,rms_error,max_error\n";
-  for (int i = 0; i < 5; ++i)
-    out += std::to_string(n[i]) + "," + std::to_string(v[i]) + "," +
-           format_double(edge_factor * col[i]) + "," + format_double(0.5 * edge_factor * col[i]) +
-           "," + rms[i] + "," + mx[i] + "\n";
+  for (size_t i = 0; i < paper::kTable4.size(); ++i) {
+    const auto& r = paper::kTable4[i];
+    const double col = r.edge_column;
+    out += std::to_string(r.grid_points) + "," + std::to_string(i == 0 ? verts16 : r.vertices) +
+           "," + format_double(edge_factor * col) + "," + format_double(0.5 * edge_factor * col) +
+           "," + (i == 0 ? rms16 : format_double(r.l2)) + "," + format_double(r.linf) + "\n";
+  }
   return out;
 }
 
 // The paper's Table 5 with every time multiplied by `scale`, plus optional extra methods whose
 // time is a multiple of LHF-2's.
 std::string table5_text(double scale, const std::map<std::string, double>& extra = {}) {
-  const char* methods[8] = {"Xu-2",  "LOP-2",  "LHF-2",  "LHF-3",
-                            "LHF-4", "LSCM-2", "LSCM-3", "LSCM-4"};
-  const double t[4][8] = {{0.035, 0.011, 0.0061, 0.013, 0.028, 0.20, 0.36, 0.66},
-                          {0.12, 0.039, 0.023, 0.050, 0.11, 0.81, 1.43, 2.65},
-                          {0.51, 0.16, 0.096, 0.20, 0.44, 3.32, 5.74, 10.58},
-                          {2.06, 0.65, 0.38, 0.83, 1.81, 13.66, 23.21, 43.16}};
-  const int verts[4] = {1338, 5246, 21156, 85208};
   std::string out = "mesh,level,verts,tris,method,degree,threads,seconds,tris_per_second\n";
   auto row = [&](int l, const std::string& m, double sec) {
-    const int tris = 2 * verts[l];
-    out += "torus-structured," + std::to_string(l + 1) + "," + std::to_string(verts[l]) + "," +
+    const int verts = paper::kTable5[l].vertices, tris = paper::kTable5[l].triangles;
+    out += "torus-unstructured," + std::to_string(l + 1) + "," + std::to_string(verts) + "," +
            std::to_string(tris) + "," + m + "," +
            std::string(1, std::isdigit(static_cast<unsigned char>(m.back())) ? m.back() : '2') +
            ",1," + format_double(sec) + "," + format_double(tris / sec) + "\n";
   };
   for (int l = 0; l < 4; ++l) {
-    for (int m = 0; m < 8; ++m) row(l, methods[m], scale * t[l][m]);
-    for (const auto& [m, factor] : extra) row(l, m, factor * scale * t[l][2]);
+    for (size_t m = 0; m < paper::kTable5Methods.size(); ++m)
+      row(l, std::string(paper::kTable5Methods[m]), scale * paper::kTable5[l].seconds[m]);
+    for (const auto& [m, factor] : extra)
+      row(l, m, factor * scale * paper::table5_seconds("LHF-2", l + 1));
   }
   // Multi-threaded rows are ignored (they would make LSCM look fast).
-  out += "torus-structured,1,1338,2676,LSCM-2,2,8,0.0001,2.676e7\n";
+  out += "torus-unstructured,1,1338,2676,LSCM-2,2,8,0.0001,2.676e7\n";
   return out;
 }
 
@@ -308,7 +307,7 @@ TEST(Claims, IdealSetReproducesEveryClaim) {
   }
   // The deciding numbers are in the evidence: rate to 2 decimals, errors in %.2e, ratios.
   const auto& b1 = claim(results, "B1");
-  EXPECT_NE(b1.evidence.find("torus-jittered LHF-2 normal L2: rate 2.00 in [1.6, 2.6]"),
+  EXPECT_NE(b1.evidence.find("torus-unstructured LHF-2 normal L2: rate 2.00 in [1.6, 2.6]"),
             std::string::npos)
       << b1.evidence;
   EXPECT_NE(b1.evidence.find("6.25e-02"), std::string::npos) << b1.evidence;  // 0.25^2
@@ -318,17 +317,51 @@ TEST(Claims, IdealSetReproducesEveryClaim) {
   EXPECT_NE(claim(results, "A5").evidence.find("aggregate"), std::string::npos);
 }
 
+// The synthetic rates of ideal_set() sit inside the registry's bands (read back from the same
+// entries the evaluator uses), so a change of a band shows up here first.
+TEST(Claims, IdealSetRatesAreInsideTheRegistryBands) {
+  EXPECT_TRUE(claim_band("B1", "rate").holds(2.0));
+  EXPECT_TRUE(claim_band("B2", "H_Linf_rate").holds(1.0));
+  EXPECT_TRUE(claim_band("B2", "H_L2_rate").holds(2.0));
+  EXPECT_TRUE(claim_band("B3", "rate").holds(1.8));
+  EXPECT_TRUE(claim_band("B3", "rate").holds(1.5));
+  EXPECT_TRUE(claim_band("B6", "ratio").holds(1.2));
+  EXPECT_TRUE(claim_band("C1", "ratio").holds(0.8));
+  EXPECT_TRUE(claim_band("C3", "normal_rate").holds(5.0));
+  EXPECT_TRUE(claim_band("C3", "curvature_rate").holds(4.0));
+  EXPECT_TRUE(claim_band("C4", "normal_rate").holds(3.0));
+  EXPECT_TRUE(claim_band("C4", "H_rate").holds(2.0));
+  EXPECT_TRUE(claim_band("C5", "quartic_rate_gap").holds(2.0));
+  EXPECT_TRUE(claim_band("E2", "L2_rate").holds(2.0));
+  EXPECT_TRUE(claim_band("E2", "Linf_rate").holds(1.5));
+  EXPECT_TRUE(claim_band("E3", "rate").holds(1.0));
+  EXPECT_TRUE(claim_band("E8", "rate").holds(1.5));
+  EXPECT_TRUE(claim_band("E9", "rate").holds(0.7));
+  EXPECT_TRUE(claim_band("F2", "time_ratio").holds(0.011 / 0.0061));
+  EXPECT_TRUE(claim_band("F7", "speedup").holds(4.5));
+  EXPECT_TRUE(claim_band("F9", "time_ratio").holds(20.0));
+  // Band texts as printed in CLAIMS.md.
+  EXPECT_EQ(claim_band("B1", "rate").text(), "in [1.6, 2.6]");
+  EXPECT_EQ(claim_band("C3", "normal_rate").text(), ">= 4.60");
+  EXPECT_EQ(claim_band("A5", "relative_difference").text(), "<= 1e-8");
+  EXPECT_EQ(claim_band("B6", "ratio").text(), "within a factor 1.5");
+  EXPECT_THROW(claim_band("B1", "no such band"), std::out_of_range);
+  EXPECT_THROW(claim_band("Z9", "rate"), std::out_of_range);
+}
+
 TEST(Claims, ChangedNormalRateFlipsB1) {
   TempDir dir;
   SyntheticSet s = ideal_set();
-  // LHF-2 normals converging at first order on the well-shaped torus.
-  s.set("fig03-05", "torus-jittered", "LHF-2", "normal", "L2", 1.0, 1.0);
-  s.set("fig03-05", "torus-jittered", "LOP-2", "normal", "L2", 1.0, 1.0);
+  // LHF-2 normals converging at first order (below the band) on the well-shaped torus.
+  ASSERT_FALSE(claim_band("B1", "rate").holds(1.0));
+  s.set("fig03-05", "torus-unstructured", "LHF-2", "normal", "L2", 1.0, 1.0);
+  s.set("fig03-05", "torus-unstructured", "LOP-2", "normal", "L2", 1.0, 1.0);
   write_ideal(dir, s);
   const auto results = evaluate_claims(dir.str());
   EXPECT_EQ(verdict(results, "B1"), Verdict::not_reproduced);
-  EXPECT_NE(claim(results, "B1").evidence.find("[FAIL] torus-jittered LHF-2 normal L2: rate 1.00"),
-            std::string::npos)
+  EXPECT_NE(
+      claim(results, "B1").evidence.find("[FAIL] torus-unstructured LHF-2 normal L2: rate 1.00"),
+      std::string::npos)
       << claim(results, "B1").evidence;
   EXPECT_EQ(verdict(results, "B2"), Verdict::reproduced);
   EXPECT_EQ(verdict(results, "A5"), Verdict::reproduced);
@@ -343,7 +376,8 @@ TEST(Claims, ChangedNormalRateFlipsB1) {
 TEST(Claims, B2FlipsWhenMeanCurvatureIsNotSuperConvergent) {
   TempDir dir;
   SyntheticSet s = ideal_set();
-  s.set("fig03-05", "torus-iso-projected", "LSCM-2", "H", "L2", 1.0, 1.2);  // below [1.4, 2.4]
+  const double below = claim_band("B2", "H_L2_rate").lo - 0.2;
+  s.set("fig03-05", "torus-iso-projected", "LSCM-2", "H", "L2", 1.0, below);
   write_ideal(dir, s);
   const auto results = evaluate_claims(dir.str());
   EXPECT_EQ(verdict(results, "B1"), Verdict::reproduced);
@@ -569,7 +603,7 @@ TEST(Claims, ConjunctionLogic) {
 TEST(Claims, MarkdownListsEveryClaimOnce) {
   TempDir dir;
   SyntheticSet s = ideal_set();
-  s.set("fig03-05", "torus-jittered", "LHF-2", "normal", "L2", 1.0, 1.0);
+  s.set("fig03-05", "torus-unstructured", "LHF-2", "normal", "L2", 1.0, 1.0);
   s.write(dir);
   const auto results = evaluate_claims(dir.str());
   const std::string md = claims_markdown(results, "Generated by test on today.");
@@ -594,7 +628,7 @@ TEST(Claims, MarkdownListsEveryClaimOnce) {
     EXPECT_EQ(md.find(heading, first + 1), std::string::npos) << id << " twice";
   }
   EXPECT_NE(md.find("**Verdict: not reproduced**"), std::string::npos);
-  EXPECT_NE(md.find("- [FAIL] torus-jittered LHF-2 normal L2: rate 1.00"), std::string::npos);
+  EXPECT_NE(md.find("- [FAIL] torus-unstructured LHF-2 normal L2: rate 1.00"), std::string::npos);
   EXPECT_STREQ(to_string(Verdict::reproduced), "reproduced");
   EXPECT_STREQ(to_string(Verdict::not_reproduced), "not reproduced");
   EXPECT_STREQ(to_string(Verdict::not_applicable), "not applicable");
@@ -604,6 +638,73 @@ TEST(Claims, MalformedCsvIsAnInputError) {
   TempDir dir;
   write_text(dir.file("table4.csv"), "grid_points,vertices\n16\n");
   EXPECT_THROW(evaluate_claims(dir.str()), InputError);
+}
+
+}  // namespace
+}  // namespace curvbench
+
+namespace curvbench {
+namespace {
+
+// Every claim is evaluated with both rate formulas. Meshes whose levels shrink h by 1.6 instead of
+// 2: normals with e ~ 2^(-2 level) converge at rate 2 per level (the paper's level-halving rate,
+// inside B1's band) but at 2 log 2 / log 1.6 = 2.95 over the measured h (outside it).
+TEST(Claims, RateFormulaDisagreementIsFlagged) {
+  TempDir dir;
+  SyntheticSet s = ideal_set();
+  for (auto& r : s.rows)
+    if (r.experiment == "fig03-05" && r.family == "torus-unstructured")
+      r.h = 0.25 / std::pow(1.6, r.level - 1);
+  write_ideal(dir, s);
+  const auto results = evaluate_claims(dir.str());
+  const ClaimResult& b1 = claim(results, "B1");
+  EXPECT_EQ(b1.verdict, Verdict::not_reproduced) << b1.evidence;
+  EXPECT_EQ(b1.halving_verdict, Verdict::reproduced);
+  EXPECT_NE(b1.evidence.find("torus-unstructured LHF-2 normal L2: rate 2.95 in [1.6, 2.6] "
+                             "(level-halving rate 2.00)"),
+            std::string::npos)
+      << b1.evidence;
+  EXPECT_NE(b1.halving_evidence.find("[ok] torus-unstructured LHF-2 normal L2: level-halving rate "
+                                     "2.00 in [1.6, 2.6] (measured-h rate 2.95)"),
+            std::string::npos)
+      << b1.halving_evidence;
+  // Claims that agree carry no halving evidence; the markdown flags B1 only where they differ.
+  EXPECT_EQ(claim(results, "A1").halving_verdict, claim(results, "A1").verdict);
+  EXPECT_TRUE(claim(results, "A1").halving_evidence.empty());
+  const std::string md = claims_markdown(results, "test");
+  EXPECT_NE(md.find("| B1 | not reproduced (level-halving rate: reproduced) |"), std::string::npos);
+  EXPECT_NE(md.find("**Rate formula: the verdict differs.**"), std::string::npos);
+  // With exact halving (the ideal set) both formulas agree everywhere.
+  TempDir dir2;
+  write_ideal(dir2, ideal_set());
+  for (const auto& r : evaluate_claims(dir2.str())) EXPECT_EQ(r.halving_verdict, r.verdict) << r.id;
+}
+
+}  // namespace
+}  // namespace curvbench
+
+namespace curvbench {
+namespace {
+
+// Every claim not reproduced gets a Why line from its registry entry: here B1 (first-order
+// normals) has no cause in the data, so the line lists what was tried; the conjunctions citing it
+// name it; reproduced claims have none.
+TEST(Claims, EveryMissHasAWhyLine) {
+  TempDir dir;
+  SyntheticSet s = ideal_set();
+  s.set("fig03-05", "torus-unstructured", "LHF-2", "normal", "L2", 1.0, 1.0);
+  s.set("fig03-05", "torus-unstructured", "LOP-2", "normal", "L2", 1.0, 1.0);
+  write_ideal(dir, s);
+  const auto results = evaluate_claims(dir.str());
+  for (const auto& r : results)
+    EXPECT_EQ(r.why.empty(), r.verdict != Verdict::not_reproduced) << r.id << ": " << r.why;
+  const std::string& why = claim(results, "B1").why;
+  EXPECT_NE(why.find("no cause found; tried the paper's level-halving rate (not reproduced)"),
+            std::string::npos)
+      << why;
+  EXPECT_NE(why.find("torus-jittered: not applicable"), std::string::npos) << why;
+  EXPECT_EQ(claim(results, "G4").why, "cites claims not reproduced: B1 (see their Why lines).");
+  EXPECT_NE(claims_markdown(results, "test").find("**Why:** no cause found"), std::string::npos);
 }
 
 }  // namespace

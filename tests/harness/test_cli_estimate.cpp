@@ -57,7 +57,7 @@ TEST_F(CliEstimate, CsvContract) {
                                            "H",      "K",   "d1x",    "d1y",    "d1z",   "d2x",
                                            "d2y",    "d2z", "degree", "points", "status"};
   EXPECT_EQ(rows[0], header);
-  // Torus R=1, r=0.3: k2 = -1/r everywhere and H in [-2.051, -0.952] (ALGORITHM_NOTES §11.1).
+  // Torus R=1, r=0.3: k2 = -1/r everywhere and H in [-2.051, -0.952] (docs/algorithms.md §11.1).
   // At level 2 the Linf error of LHF-2 in H is about 0.04 (results/fig03-05.csv: 2.0e-2 relative
   // to max|H| = 2.05) and in k2 about 0.07 (0.26 at level 1, quadratic convergence), so 0.1 and
   // 0.15 are safe bounds for this contract check.

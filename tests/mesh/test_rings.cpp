@@ -1,4 +1,4 @@
-// k-ring and half-ring neighbourhoods against the paper's Table 2 and ALGORITHM_NOTES §1.1.
+// k-ring and half-ring neighbourhoods against the paper's Table 2 and docs/algorithms.md §1.1.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -29,7 +29,7 @@ Mesh regular_lattice(int n) {
 }
 
 // 4-8 ("union jack") mesh on an N x N grid: square (i,j) split along (i,j)-(i+1,j+1) when i+j
-// is even, else along (i+1,j)-(i,j+1) (ALGORITHM_NOTES §10.2).
+// is even, else along (i+1,j)-(i,j+1) (docs/algorithms.md §10.2).
 Mesh four_eight(int n) {
   VertexMatrix V((n + 1) * (n + 1), 3);
   for (int j = 0; j <= n; ++j)

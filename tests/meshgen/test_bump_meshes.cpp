@@ -1,4 +1,4 @@
-// Gaussian-bump meshes: the 4-8 mesh and the seeded irregular Delaunay mesh (ALGORITHM_NOTES
+// Gaussian-bump meshes: the 4-8 mesh and the seeded irregular Delaunay mesh (docs/algorithms.md
 // §10.2, paper §5.2).
 #include <gtest/gtest.h>
 

@@ -26,9 +26,9 @@ std::string usage_error(const MeshSpec& spec) {
 }
 
 TEST(Generate, Families) {
-  const std::vector<std::string> expected = {"torus-structured", "torus-jittered",
-                                             "torus-iso",        "torus-iso-projected",
-                                             "bump-48",          "bump-irregular"};
+  const std::vector<std::string> expected = {
+      "torus-structured", "torus-jittered", "torus-iso",         "torus-iso-projected",
+      "bump-48",          "bump-irregular", "torus-unstructured"};
   EXPECT_EQ(mesh_families(), expected);
   EXPECT_EQ(max_mesh_level("torus-structured"), 6);  // 5-6: beyond the paper, for scaling
   EXPECT_EQ(max_mesh_level("torus-jittered"), 6);
@@ -36,6 +36,7 @@ TEST(Generate, Families) {
   EXPECT_EQ(max_mesh_level("torus-iso-projected"), 5);
   EXPECT_EQ(max_mesh_level("bump-48"), 5);
   EXPECT_EQ(max_mesh_level("bump-irregular"), 5);
+  EXPECT_EQ(max_mesh_level("torus-unstructured"), 4);  // the paper's four well-shaped meshes
   for (const std::string& family : expected) {
     MeshSpec spec;
     spec.family = family;

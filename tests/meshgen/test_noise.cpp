@@ -1,4 +1,4 @@
-// Seeded random numbers (meshgen/random.h) and controlled normal noise (ALGORITHM_NOTES §10.3).
+// Seeded random numbers (meshgen/random.h) and controlled normal noise (docs/algorithms.md §10.3).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // Torus isosurface meshes (meshgen/torus_isosurface.h): paper Table 4 reproduced exactly
-// (PAPER_CLAIMS A2-A4), topology, orientation, projection, determinism, errors.
+// (docs/claims.md A2-A4), topology, orientation, projection, determinism, errors.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Structured "well-shaped" torus meshes (ALGORITHM_NOTES §10.1(b), paper Table 5).
+// Structured "well-shaped" torus meshes (docs/algorithms.md §10.1(b), paper Table 5).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -78,7 +78,7 @@ TEST(TorusStructured, MeanEdgeLengthHalves) {
   for (int level = 1; level <= 4; ++level) {
     const double h = torus_structured(level).mesh.mean_edge_length();
     if (level == 1) {
-      EXPECT_NEAR(h, 0.10, 0.01);  // ALGORITHM_NOTES §10.1(b): ~0.10 at level 1
+      EXPECT_NEAR(h, 0.10, 0.01);  // docs/algorithms.md §10.1(b): ~0.10 at level 1
     } else {
       EXPECT_NEAR(h_prev / h, 2.0, 0.2);
     }

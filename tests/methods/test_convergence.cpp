@@ -17,7 +17,7 @@ struct Rates {
   double normal = 0, H = 0;
 };
 
-// Normal L2 = sqrt(mean |n~ - n|^2), H L2 = ||H~ - H||_2 / ||H||_2 (ALGORITHM_NOTES §12).
+// Normal L2 = sqrt(mean |n~ - n|^2), H L2 = ||H~ - H||_2 / ||H||_2 (docs/algorithms.md §12).
 Rates convergence_rates(const std::string& family, int first, int last, const std::string& method) {
   double n0 = 0, h0 = 0, hh0 = 0, n1 = 0, h1 = 0, hh1 = 0;
   for (int level = first; level <= last; level += last - first) {

@@ -183,7 +183,7 @@ SphereErrors sphere_errors(const std::string& method, int degree, int level) {
 }
 
 TEST(Sphere, EveryMethodGivesMinusHalfAndConverges) {
-  // Radius 2, outward normals: k1 = k2 = H = -0.5, K = 0.25 (ALGORITHM_NOTES §0).
+  // Radius 2, outward normals: k1 = k2 = H = -0.5, K = 0.25 (docs/algorithms.md §0).
   std::vector<std::pair<std::string, int>> runs;
   for (const std::string& name : estimator_names())
     if (make_estimator(name, {})->takes_degree()) runs.emplace_back(name, 2);  // the fits
@@ -216,7 +216,7 @@ TEST(Sphere, EveryMethodGivesMinusHalfAndConverges) {
   }
 }
 
-// ---- LOP-d = LHF-d (ALGORITHM_NOTES §3 [D]) ---------------------------------------------------
+// ---- LOP-d = LHF-d (docs/algorithms.md §3 [D]) ---------------------------------------------------
 
 void expect_same_results(const Mesh& mesh, int degree, const std::string& what) {
   EstimatorOptions o;

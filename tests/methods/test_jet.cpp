@@ -28,7 +28,7 @@ EstimatorOptions with_degree(int d) {
   return o;
 }
 
-// Sign convention (ALGORITHM_NOTES §0): a sphere of radius 2 with outward faces has
+// Sign convention (docs/algorithms.md §0): a sphere of radius 2 with outward faces has
 // k1 = k2 = H = -0.5, K = 0.25 and outward normals; the error shrinks under refinement.
 TEST(Jet, SphereOfRadiusTwo) {
   for (int d : {2, 3, 4}) {

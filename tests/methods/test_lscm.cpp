@@ -1,5 +1,5 @@
 // LSCM ring maps (methods/lscm_parameterization.h) and the LSCM-d estimators "lscm" (CGAL map)
-// and "lscm-fast" (in-house map), ALGORITHM_NOTES §8.
+// and "lscm-fast" (in-house map), docs/algorithms.md §8.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -390,7 +390,7 @@ TEST(LscmEstimator, RegisteredFastReproducesCgal) {
   EXPECT_LT(dn, 1e-10);
 }
 
-// ALGORITHM_NOTES §8's variant (farthest pins, Levy's energy) is a different map on curved
+// docs/algorithms.md §8's variant (farthest pins, Levy's energy) is a different map on curved
 // patches, but differs from lscm by far less than either differs from the exact values.
 TEST(LscmEstimator, NotesVariantIsCloseToCgal) {
   const GeneratedMesh torus = torus_structured(2, true, 3);

@@ -1,5 +1,5 @@
 // surfaces/height_field and surfaces/gaussian_bump: exact quantities against finite
-// differences, the bump's closed forms and umbilic (ALGORITHM_NOTES §11.2), projection.
+// differences, the bump's closed forms and umbilic (docs/algorithms.md §11.2), projection.
 #include "surfaces/height_field.h"
 
 #include <gtest/gtest.h>

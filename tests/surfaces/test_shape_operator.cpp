@@ -185,7 +185,7 @@ TEST(CurvatureFromParametric, MatchesClassicalWeingarten) {
   EXPECT_GT(compared, 1000);
 }
 
-// The height route (Table 1 + basis of ALGORITHM_NOTES §6.1) against the parametric route on
+// The height route (Table 1 + basis of docs/algorithms.md §6.1) against the parametric route on
 // x(u, v) = origin + u t1 + v t2 + f(u, v) m.
 TEST(CurvatureFromHeight, AgreesWithParametricRoute) {
   std::mt19937_64 rng(42);

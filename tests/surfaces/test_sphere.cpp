@@ -1,4 +1,4 @@
-// surfaces/sphere: the sign convention of ALGORITHM_NOTES §0 and finite differences.
+// surfaces/sphere: the sign convention of docs/algorithms.md §0 and finite differences.
 #include "surfaces/sphere.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// surfaces/torus: closed forms of ALGORITHM_NOTES §11.1 against finite differences of
+// surfaces/torus: closed forms of docs/algorithms.md §11.1 against finite differences of
 // position(u, v), conventions, and the closest-point projection.
 #include "surfaces/torus.h"
 

@@ -1,0 +1,195 @@
+// Claims D1-D6: the noise-free open surface (the bump; paper §5.2, Figs. 9-14), one registry
+// entry each (harness/claims_kit.h; docs/claims.md). Experiments fig09-10 (degree 2), fig11-12
+// (degrees 3, 4) and fig13-14 (boundary vertices).
+#include <cmath>
+
+#include "harness/claims_kit.h"
+
+namespace curvbench::claims {
+namespace {
+
+const Series* bump(const Data& d, Check& c, const std::string& family, const std::string& m,
+                   const std::string& q, const std::string& norm) {
+  return d.find(c, query(degree_of(m) == 2 ? "fig09-10" : "fig11-12", family, m, q, norm));
+}
+
+const Series* torus2(const Data& d, Check& c, const std::string& family, const std::string& m,
+                     const std::string& q, const std::string& norm) {
+  return d.find(c, query("fig03-05", family, m, q, norm, "none", torus_ring(m)));
+}
+
+// Offsets of a band relative to the degree d: "[d - 0.5, d + 0.7]".
+std::string degree_band_text(const Band& offset) {
+  auto term = [](double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "d %c %g", x < 0 ? '-' : '+', std::abs(x));
+    return std::string(buf);
+  };
+  std::string out = "[";
+  out += term(offset.lo);
+  out += ", ";
+  out += term(offset.hi);
+  out += "]";
+  return out;
+}
+
+}  // namespace
+
+std::vector<ClaimEntry> section5_2_claims() {
+  std::vector<ClaimEntry> out;
+
+  const Band d1 = Band::at_most(1.5);
+  out.push_back({"D1",
+                 "Degree 2 on the bump: LHF-2, LOP-2, LSCM-2 very similar",
+                 "Degree 2: LHF-2, LOP-2 and LSCM-2 deliver very similar results.",
+                 "within a factor " + num(d1.hi) +
+                     " of each other at every level (normal L2 and Linf, H L2, K L2; "
+                     "bump-irregular and bump-48)",
+                 {{"max_over_min", d1}},
+                 [=](const Data& d, Check& c) {
+                   const std::pair<const char*, const char*> measures[] = {
+                       {"normal", "L2"}, {"normal", "Linf"}, {"H", "L2"}, {"K", "L2"}};
+                   for (const auto& fam : kBumps)
+                     for (const auto& [q, norm] : measures) {
+                       std::vector<const Series*> ss;
+                       for (const auto& m : kDeg2Others)
+                         if (const Series* s = bump(d, c, fam, m, q, norm)) ss.push_back(s);
+                       if (ss.size() != kDeg2Others.size()) continue;
+                       require_every_level(c, spreads(ss), d1,
+                                           fam + " " + q + " " + norm + " max/min of " +
+                                               join(methods_of(ss), ", "));
+                     }
+                 },
+                 {}});
+
+  const Band d2_gap = Band::at_least(0.2);
+  out.push_back({"D2",
+                 "Bump H L2 rates lower than on the torus",
+                 "Degree 2: the L2 convergence rates of mean curvature are lower than on the torus "
+                 "(loss of cancellation at the boundary).",
+                 "bump H L2 rate <= torus H L2 rate - " + num(d2_gap.lo) +
+                     " for the same method (LHF-2, LOP-2, "
+                     "LSCM-2; each bump mesh against each torus mesh type); expect about 1.0-1.6",
+                 {{"torus_minus_bump_rate", d2_gap}},
+                 [=](const Data& d, Check& c) {
+                   for (const auto& m : kDeg2Others)
+                     for (const auto& fam : kBumps) {
+                       const Series* b = bump(d, c, fam, m, "H", "L2");
+                       for (const auto& tor : tori()) {
+                         const Series* t = torus2(d, c, tor, m, "H", "L2");
+                         if (!b || !t) continue;
+                         c.require(b->rate() <= t->rate() - d2_gap.lo,
+                                   m + " H L2: rate on " + fam + " " + f2(b->rate()) +
+                                       " <= rate on " + tor + " " + f2(t->rate()) + " - " +
+                                       num(d2_gap.lo) + "; bump " + b->detail());
+                       }
+                     }
+                 },
+                 {}});
+
+  out.push_back({"D3",
+                 "Xu-2 curvatures fail to converge on the bump",
+                 "Xu-2 curvatures (H and K) fail to converge on both mesh types, because the "
+                 "stencils have too few points.",
+                 "the failure criterion for H and K in L2 (interior vertices), bump-irregular and "
+                 "bump-48",
+                 {},
+                 [](const Data& d, Check& c) {
+                   for (const auto& fam : kBumps)
+                     for (const char* q : {"H", "K"})
+                       if (const Series* s = bump(d, c, fam, "Xu-2", q, "L2"))
+                         require_failure(c, *s);
+                 },
+                 {}});
+
+  const Band d4 = Band::below(1.0);
+  out.push_back({"D4",
+                 "LHF more accurate than LSCM at degrees 3 and 4 on the bump",
+                 "Degrees 3 and 4: LHF is consistently more accurate than LSCM for both d = 3 and "
+                 "d = 4.",
+                 "err(LHF-d) < err(LSCM-d) at >= 3 of 4 levels, for normals (L2 and Linf), H and K "
+                 "(L2), d = 3, 4, on both bump meshes",
+                 {{"ratio", d4}},
+                 [=](const Data& d, Check& c) {
+                   const std::pair<const char*, const char*> measures[] = {
+                       {"normal", "L2"}, {"normal", "Linf"}, {"H", "L2"}, {"K", "L2"}};
+                   for (const auto& fam : kBumps)
+                     for (int deg : {3, 4})
+                       for (const auto& [q, norm] : measures) {
+                         const std::string dd = std::to_string(deg);
+                         const Series* lhf = bump(d, c, fam, "LHF-" + dd, q, norm);
+                         const Series* lscm = bump(d, c, fam, "LSCM-" + dd, q, norm);
+                         if (!lhf || !lscm) continue;
+                         require_most_levels(
+                             c, error_ratios(*lhf, *lscm), d4,
+                             fam + " " + q + " " + norm + " " + lhf->method + " / " + lscm->method);
+                       }
+                 },
+                 {}});
+
+  const Band d5 = Band::at_least(1.0, 1);
+  out.push_back({"D5",
+                 "LSCM-4 converges substantially slower than LHF-4 on the bump",
+                 "LSCM-4 converges substantially slower than LHF-4.",
+                 "rate(LHF-4) - rate(LSCM-4) " + d5.text() +
+                     " for normals or H (L2), on each bump "
+                     "mesh",
+                 {{"rate_gap", d5}},
+                 [=](const Data& d, Check& c) {
+                   for (const auto& fam : kBumps) {
+                     std::vector<std::string> parts;
+                     bool any = false, complete = true;
+                     for (const char* q : {"normal", "H"}) {
+                       const Series* lhf = bump(d, c, fam, "LHF-4", q, "L2");
+                       const Series* lscm = bump(d, c, fam, "LSCM-4", q, "L2");
+                       if (!lhf || !lscm) {
+                         complete = false;
+                         continue;
+                       }
+                       const double gap = lhf->rate() - lscm->rate();
+                       any = any || d5.holds(gap);
+                       parts.push_back(std::string(q) + " L2 " + f2(lhf->rate()) + " - " +
+                                       f2(lscm->rate()) + " = " + f2(gap));
+                     }
+                     if (complete)
+                       c.require(any, fam + ": rate(LHF-4) - rate(LSCM-4): " + join(parts, "; ") +
+                                          " (" + d5.text() + " for normals or H)");
+                   }
+                 },
+                 {}});
+
+  // Relative to the degree d.
+  const Band d6_normal = Band::in(-0.5, 0.7, 2), d6_curvature = Band::in(-1.5, -0.3, 2);
+  const double d6_margin = 0.2;
+  out.push_back(
+      {"D6",
+       "Boundary vertices: rates close to theory",
+       "Boundary vertices plus their 1-ring neighbours (LHF, LSCM): rates are somewhat lower than "
+       "for interior vertices but \"very close to the theoretical analysis\".",
+       "LHF-d (d = 2, 3, 4), boundary-ring L2 rates: normals in " + degree_band_text(d6_normal) +
+           "; H and K in " + degree_band_text(d6_curvature) +
+           "; each <= the corresponding all-vertex rate + " + num(d6_margin) + "; both bump meshes",
+       {{"normal_rate_minus_degree", d6_normal}, {"curvature_rate_minus_degree", d6_curvature}},
+       [=](const Data& d, Check& c) {
+         for (const auto& fam : kBumps)
+           for (int deg : {2, 3, 4}) {
+             const std::string m = "LHF-" + std::to_string(deg);
+             for (const char* q : {"normal", "H", "K"}) {
+               const Series* s =
+                   d.find(c, query("fig13-14", fam, m, q, "L2", "none", 0.0, "boundary-ring"));
+               const Series* all = bump(d, c, fam, m, q, "L2");
+               if (!s) continue;
+               const Band& off = std::string(q) == "normal" ? d6_normal : d6_curvature;
+               require_rate(c, *s, Band::in(deg + off.lo, deg + off.hi, 2), "boundary-ring ");
+               if (all)
+                 c.require(s->rate() <= all->rate() + d6_margin,
+                           fam + " " + m + " " + q + " L2: boundary-ring rate " + f2(s->rate()) +
+                               " <= all-vertex rate " + f2(all->rate()) + " + " + num(d6_margin));
+             }
+           }
+       },
+       {}});
+  return out;
+}
+
+}  // namespace curvbench::claims

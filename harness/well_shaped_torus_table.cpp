@@ -1,0 +1,85 @@
+#include "harness/well_shaped_torus_table.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <sstream>
+#include <vector>
+
+#include "core/build_info.h"
+#include "harness/paper_tables.h"
+#include "harness/results_table.h"
+#include "meshgen/generate.h"
+
+namespace curvbench {
+
+void write_well_shaped_torus_csv(const std::string& path) {
+  std::ostringstream out;
+  out << provenance_comment() << "\n"
+      << "level,vertices,paper_vertices,faces,mean_edge_length,min_angle_deg,max_angle_deg,"
+         "valence_histogram\n";
+  for (int level = 1; level <= max_mesh_level("torus-unstructured"); ++level) {
+    MeshSpec spec;
+    spec.family = "torus-unstructured";
+    spec.level = level;
+    const GeneratedMesh g = generate_mesh(spec);
+    const Mesh& m = g.mesh;
+    std::vector<std::vector<int>> nbrs(m.num_vertices());
+    double edge_sum = 0.0;
+    for (int f = 0; f < m.num_faces(); ++f)
+      for (int k = 0; k < 3; ++k) {
+        const int a = m.face_vertex(f, k), b = m.face_vertex(f, (k + 1) % 3);
+        nbrs[a].push_back(b);
+        edge_sum += (m.position(a) - m.position(b)).norm();  // each edge twice (closed mesh)
+      }
+    std::map<int, int> histogram;
+    for (auto& n : nbrs) {
+      std::sort(n.begin(), n.end());
+      ++histogram[static_cast<int>(std::unique(n.begin(), n.end()) - n.begin())];
+    }
+    std::string hist;
+    for (const auto& [valence, count] : histogram) {
+      if (!hist.empty()) hist += ' ';
+      hist += std::to_string(valence);
+      hist += ':';
+      hist += std::to_string(count);
+    }
+    const MeshQuality q = mesh_quality(m);
+    out << level << ',' << m.num_vertices() << ',' << paper::kTable5[level - 1].vertices << ','
+        << m.num_faces() << ',' << format_double(edge_sum / (3.0 * m.num_faces())) << ','
+        << format_double(q.min_angle_deg) << ',' << format_double(q.max_angle_deg) << ',' << hist
+        << "\n";
+  }
+  write_file_atomic(path, out.str());
+}
+
+std::string well_shaped_torus_markdown(const std::string& csv_path) {
+  if (!std::filesystem::exists(csv_path)) return "";
+  const CsvTable t = read_csv_table(csv_path);
+  std::ostringstream md;
+  md << "## Well-shaped torus meshes (the paper's Table 5 meshes)\n\n"
+     << "`torus-unstructured`: CGAL Delaunay refinement of the implicit torus (R = 1, r = 0.3), "
+        "every vertex projected onto the torus (docs/mesh_families.md); the stand-in for the "
+        "paper's unstructured GAMBIT meshes, used for Figs. 3-7, Table 5 and the claims on the "
+        "well-shaped torus. `torus-jittered` and `torus-structured` remain as extra rows.\n\n"
+     << "| level | #verts (ours / paper) | #faces | mean edge length | angles (deg) | "
+        "valence: count |\n|---|---|---|---|---|---|\n";
+  const size_t cl = t.col("level"), cv = t.col("vertices"), cp = t.col("paper_vertices"),
+               cf = t.col("faces"), ch = t.col("mean_edge_length"), cmin = t.col("min_angle_deg"),
+               cmax = t.col("max_angle_deg"), chist = t.col("valence_histogram");
+  for (size_t i = 0; i < t.rows.size(); ++i) {
+    char angles[64], h[32];
+    std::snprintf(angles, sizeof angles, "%.1f - %.1f", t.number(i, cmin), t.number(i, cmax));
+    std::snprintf(h, sizeof h, "%.4f", t.number(i, ch));
+    const double dv = (t.number(i, cv) - t.number(i, cp)) / t.number(i, cp) * 100.0;
+    char rel[32];
+    std::snprintf(rel, sizeof rel, " (%+.1f%%)", dv);
+    md << "| " << t.text(i, cl) << " | " << t.text(i, cv) << " / " << t.text(i, cp) << rel << " | "
+       << t.text(i, cf) << " | " << h << " | " << angles << " | " << t.text(i, chist) << " |\n";
+  }
+  md << "\n";
+  return md.str();
+}
+
+}  // namespace curvbench
