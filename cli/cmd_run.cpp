@@ -220,13 +220,13 @@ Command add_run_command(CLI::App& app) {
       const char* method = (c.method->is_external() ? c.method->label : c.method->spec).c_str();
       if (p.reused)
         std::fprintf(stderr, "[%3d/%3d] %-9s %-20s L%d %-7s %7d verts  reused\n", p.done, p.total,
-                     c.experiment->name.c_str(), c.mesh->family.c_str(), c.level,
-                     method, p.vertices);
+                     c.experiment->name.c_str(), c.mesh->family.c_str(), c.level, method,
+                     p.vertices);
       else
         std::fprintf(stderr, "[%3d/%3d] %-9s %-20s L%d %-7s %7d verts %6.2fs  elapsed %s  ETA %s\n",
                      p.done, p.total, c.experiment->name.c_str(), c.mesh->family.c_str(), c.level,
-                     method, p.vertices, p.case_seconds,
-                     duration(p.elapsed_seconds).c_str(), duration(p.eta_seconds).c_str());
+                     method, p.vertices, p.case_seconds, duration(p.elapsed_seconds).c_str(),
+                     duration(p.eta_seconds).c_str());
     };
     po.stop = stop_requested;
     install_stop_handlers();

@@ -251,8 +251,7 @@ const Series* Data::find(Check& chk, const Query& q) const {
   const std::string vset =
       !q.vertex_set.empty()
           ? q.vertex_set
-          : (scores_interior_only(q.method) && q.family.rfind("bump", 0) == 0 ? "interior"
-                                                                              : "all");
+          : (scores_interior_only(q.method) && q.family.rfind("bump", 0) == 0 ? "interior" : "all");
   const std::string what = q.method + " " + q.quantity + " " + q.norm + " on " + q.family +
                            " (noise " + q.noise + ", vertex set " + vset + ")";
   std::vector<const Series*> cand;

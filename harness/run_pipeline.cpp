@@ -127,9 +127,8 @@ PipelineResult run_pipeline(const PipelineOptions& o) {
       return std::any_of(e.meshes.begin(), e.meshes.end(),
                          [&](const ExperimentMesh& m) { return m.family == family; });
     };
-    if (std::any_of(o.experiments.begin(), o.experiments.end(), [&](const Experiment& e) {
-          return uses_family(e, "torus-unstructured");
-        })) {
+    if (std::any_of(o.experiments.begin(), o.experiments.end(),
+                    [&](const Experiment& e) { return uses_family(e, "torus-unstructured"); })) {
       say("[run] well-shaped torus meshes (torus-unstructured, levels 1-4)");
       write_well_shaped_torus_csv(o.output + "/torus_unstructured.csv");
       if (stop()) return stopped(0);

@@ -32,7 +32,18 @@ double case_work(const RunCase& c) {
 // table5_timing.md, rounded): per method at degree 2, and the factor of each degree.
 double method_cost(const std::string& name, int degree) {
   static const std::map<std::string, double> base = {
-      {"lhf", 1.0}, {"lop", 1.15}, {"xu", 2.4}, {"lscm", 22.0}, {"lscm-fast", 2.9}, {"jet", 11.4}};
+      {"lhf", 1.0},
+      {"lop", 1.15},
+      {"xu", 2.4},
+      {"lscm", 22.0},
+      {"lscm-fast", 2.9},
+      {"jet", 11.4},
+      {"meyer", 1.1},
+      {"taubin", 0.5},
+      {"rusinkiewicz", 1.5},
+      {"quadric", 7.0},
+      {"goldfeather", 1.9},
+      {"normal-cycle", 1.5}};  // degree-free methods: times per_degree[0] = 0.5
   static const double per_degree[] = {0.5, 0.6, 1.0, 1.8, 3.7, 7.0, 12.0};
   const auto it = base.find(name);
   const double b = it == base.end() ? 1.0 : it->second;
