@@ -4,8 +4,8 @@
 // CSV: a header, then one row per vertex
 //   vertex,nx,ny,nz,k1,k2,H,K,d1x,d1y,d1z,d2x,d2y,d2z,degree,points,status
 // with the shortest text that reads back to each exact double (std::to_chars), "nan" for NaN and
-// the status as a word (ok, degree_reduced, failed, excluded). PLY: the mesh with the same
-// per-vertex properties (status as its integer code 0..3, plus the ring used). The file is written
+// the status as a word (to_string(VertexStatus)). PLY: the mesh with the same
+// per-vertex properties (status as its integer code, plus the ring used). The file is written
 // to a temporary name and renamed, so a failed run never leaves a truncated OUT. A one-line summary
 // goes to stderr, after a one-line warning for each kind of element the reader dropped (faces with
 // fewer than 3 vertices or a repeated index; with --skip-invalid, vertices with NaN/Inf coordinates
@@ -144,7 +144,7 @@ int run_estimate(const EstimateOptions& o, bool degree_given) {
   const auto t0 = Clock::now();
   const std::vector<VertexEstimate> res = estimate_mesh(mesh, *est);
   const double seconds = since(t0);
-  int counts[4] = {0, 0, 0, 0};
+  int counts[5] = {0, 0, 0, 0, 0};  // by VertexStatus code
   for (const VertexEstimate& e : res) ++counts[static_cast<int>(e.status)];
 
   const auto t_write = Clock::now();
@@ -182,9 +182,9 @@ int run_estimate(const EstimateOptions& o, bool degree_given) {
   const int n = mesh.num_vertices();
   std::fprintf(stderr,
                "curvbench estimate: %s on %s: %d vertices (ok %d, degree_reduced %d, failed %d, "
-               "excluded %d) in %.3f s (%.2f us/vertex) -> %s\n",
+               "excluded %d, disk_cut %d) in %.3f s (%.2f us/vertex) -> %s\n",
                est->label().c_str(), o.mesh.c_str(), n, counts[0], counts[1], counts[2], counts[3],
-               seconds, n > 0 ? 1e6 * seconds / n : 0.0, o.output.c_str());
+               counts[4], seconds, n > 0 ? 1e6 * seconds / n : 0.0, o.output.c_str());
   if (o.timing) {
     // Per-stage wall times; neighbourhoods and fits are interleaved per vertex, so they are one
     // stage (estimate_mesh, including the area-weighted normals).

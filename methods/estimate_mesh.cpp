@@ -19,6 +19,8 @@ const char* to_string(VertexStatus status) {
       return "failed";
     case VertexStatus::excluded:
       return "excluded";
+    case VertexStatus::disk_cut:
+      return "disk_cut";
   }
   return "unknown";
 }

@@ -24,6 +24,8 @@ enum class VertexStatus : std::uint8_t {
   degree_reduced = 1,  ///< the safeguard lowered the degree (>= 1); values are finite
   failed = 2,          ///< no fit possible (degree 0): normal = approximate normal, k = 0
   excluded = 3,        ///< not computed by design (e.g. Xu at a boundary vertex): values NaN
+  disk_cut = 4,        ///< fitted at the requested degree on part of the ring's points: the
+                       ///< ring is not a topological disk, cut to one around the vertex (LSCM)
 };
 
 const char* to_string(VertexStatus status);
