@@ -33,7 +33,9 @@
 #include "harness/commands.h"
 #include "harness/results_table.h"
 #include "mesh/io.h"
+#include "mesh/orientation.h"
 #include "methods/estimator.h"
+#include "methods/vertex_result.h"
 
 namespace curvbench::cli {
 
@@ -139,12 +141,17 @@ int run_estimate(const EstimateOptions& o, bool degree_given) {
   };
   const auto t_read = Clock::now();
   MeshReadReport report;
-  const Mesh mesh = read_input_mesh(o.mesh, o.skip_invalid, report);
+  // Consistent orientation, closed parts outward (mesh/orientation.h), before estimating.
+  const OrientationResult oriented = orient_mesh(read_input_mesh(o.mesh, o.skip_invalid, report));
+  for (const std::string& w : orientation_warnings(oriented))
+    std::fprintf(stderr, "curvbench: warning: %s: %s\n", o.mesh.c_str(), w.c_str());
+  const Mesh& mesh = oriented.mesh;
   const double read_seconds = since(t_read);
   const auto t0 = Clock::now();
-  const std::vector<VertexEstimate> res = estimate_mesh(mesh, *est);
+  std::vector<VertexEstimate> res = estimate_mesh(mesh, *est);
   const double seconds = since(t0);
-  int counts[5] = {0, 0, 0, 0, 0};  // by VertexStatus code
+  mark_sign_undetermined(oriented.sign_undetermined, res);
+  int counts[6] = {0, 0, 0, 0, 0, 0};  // by VertexStatus code
   for (const VertexEstimate& e : res) ++counts[static_cast<int>(e.status)];
 
   const auto t_write = Clock::now();
@@ -182,9 +189,9 @@ int run_estimate(const EstimateOptions& o, bool degree_given) {
   const int n = mesh.num_vertices();
   std::fprintf(stderr,
                "curvbench estimate: %s on %s: %d vertices (ok %d, degree_reduced %d, failed %d, "
-               "excluded %d, disk_cut %d) in %.3f s (%.2f us/vertex) -> %s\n",
+               "excluded %d, disk_cut %d, sign_undetermined %d) in %.3f s (%.2f us/vertex) -> %s\n",
                est->label().c_str(), o.mesh.c_str(), n, counts[0], counts[1], counts[2], counts[3],
-               counts[4], seconds, n > 0 ? 1e6 * seconds / n : 0.0, o.output.c_str());
+               counts[4], counts[5], seconds, n > 0 ? 1e6 * seconds / n : 0.0, o.output.c_str());
   if (o.timing) {
     // Per-stage wall times; neighbourhoods and fits are interleaved per vertex, so they are one
     // stage (estimate_mesh, including the area-weighted normals).

@@ -21,6 +21,8 @@ const char* to_string(VertexStatus status) {
       return "excluded";
     case VertexStatus::disk_cut:
       return "disk_cut";
+    case VertexStatus::sign_undetermined:
+      return "sign_undetermined";
   }
   return "unknown";
 }

@@ -46,4 +46,13 @@ bool set_quantities(const Curvature& c, int degree, int requested, int points, d
   return true;
 }
 
+void mark_sign_undetermined(const std::vector<unsigned char>& undetermined,
+                            std::vector<VertexEstimate>& estimates) {
+  for (size_t v = 0; v < estimates.size() && v < undetermined.size(); ++v) {
+    VertexStatus& s = estimates[v].status;
+    if (undetermined[v] && s != VertexStatus::failed && s != VertexStatus::excluded)
+      s = VertexStatus::sign_undetermined;
+  }
+}
+
 }  // namespace curvbench

@@ -2,6 +2,8 @@
 // Shared by every estimator so that the status conventions live in one place.
 #pragma once
 
+#include <vector>
+
 #include "core/shape_operator.h"
 #include "methods/estimator.h"
 #include "methods/local_frame.h"
@@ -24,5 +26,10 @@ void set_excluded(double ring, int points, VertexEstimate& out);
 /// finite.
 bool set_quantities(const Curvature& c, int degree, int requested, int points, double ring,
                     VertexEstimate& out);
+
+/// Marks every vertex v with undetermined[v] != 0 and finite values (ok, degree_reduced,
+/// disk_cut) as sign_undetermined (mesh/orientation.h); failed and excluded rows stay as they are.
+void mark_sign_undetermined(const std::vector<unsigned char>& undetermined,
+                            std::vector<VertexEstimate>& estimates);
 
 }  // namespace curvbench
