@@ -21,7 +21,7 @@ FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 60
 FUZZ_CXX ?= clang++
 
-.PHONY: all deps configure build test experiments bench clean format test-sanitize fuzz
+.PHONY: all deps configure build test experiments bench clean format test-sanitize fuzz realmeshes
 
 all: build
 
@@ -42,6 +42,11 @@ experiments: build
 
 bench: build
 	@bash tools/bench.sh $(BUILD)
+
+# Every method on the sample meshes of Debian's libcgal-demo (fetched at run time with apt-get
+# download into $(BUILD)/realmeshes/) -> results/REAL_MESHES.md.
+realmeshes: build
+	@bash tools/realmeshes.sh $(BUILD)
 
 test-sanitize: deps
 	@cmake -S . -B $(SANITIZE_BUILD) -DCURVBENCH_SANITIZE=ON -DCURVBENCH_BUILD_BENCH=OFF \
