@@ -32,6 +32,7 @@
 #include "core/text.h"
 #include "harness/commands.h"
 #include "harness/results_table.h"
+#include "mesh/colormap.h"
 #include "mesh/io.h"
 #include "mesh/orientation.h"
 #include "methods/estimator.h"
@@ -50,6 +51,7 @@ struct EstimateOptions {
   bool noisy = false;
   bool timing = false;
   bool skip_invalid = false;
+  std::string color;  // "", H, K, k1 or k2: PLY per-vertex RGB (mesh/colormap.h)
   std::string output;
 };
 
@@ -120,10 +122,31 @@ std::vector<VertexProperty> ply_properties(const std::vector<VertexEstimate>& es
   return props;
 }
 
+// --color: red, green, blue properties from a diverging map of one quantity (mesh/colormap.h).
+void add_color_properties(const std::string& quantity, const std::vector<VertexEstimate>& est,
+                          std::vector<VertexProperty>& props, std::vector<std::string>& comments) {
+  std::vector<double> x(est.size());
+  for (size_t v = 0; v < est.size(); ++v)
+    x[v] = quantity == "H"    ? est[v].H
+           : quantity == "K"  ? est[v].K
+           : quantity == "k1" ? est[v].k1
+                              : est[v].k2;
+  const VertexColors c = diverging_colors(x);
+  const char* names[3] = {"red", "green", "blue"};
+  for (int j = 0; j < 3; ++j) {
+    VertexProperty p{names[j], std::vector<double>(est.size()), true};
+    for (size_t v = 0; v < est.size(); ++v) p.values[v] = c.rgb[v][static_cast<size_t>(j)];
+    props.push_back(std::move(p));
+  }
+  comments.push_back("color: " + quantity + ", blue -L .. white 0 .. red +L, L = " +
+                     format_g(c.limit) + " (98th percentile of |" + quantity + "|)");
+}
+
 int run_estimate(const EstimateOptions& o, bool degree_given) {
   const std::string ext = lower_extension(o.output);
   if (ext != "csv" && ext != "ply")
     throw UsageError("--output " + o.output + ": extension must be .csv or .ply");
+  if (!o.color.empty() && ext != "ply") throw UsageError("--color needs a .ply --output");
   EstimatorOptions eo;
   eo.degree = o.degree;
   eo.ring = o.rings;
@@ -182,6 +205,7 @@ int run_estimate(const EstimateOptions& o, bool degree_given) {
                          std::to_string(report.faces_skipped) +
                          " faces dropped; source_vertex = index in the input file");
     }
+    if (!o.color.empty()) add_color_properties(o.color, res, props, comments);
     write_mesh(o.output, mesh, props, comments);  // atomic itself (mesh/io.h)
   }
   const double write_seconds = since(t_write);
@@ -225,6 +249,10 @@ Command add_estimate_command(CLI::App& app) {
                 "Drop vertices with a NaN/Inf coordinate and the faces using them instead of "
                 "failing; the output then has only the remaining vertices (CSV 'vertex' = index "
                 "in the input file; PLY: property 'source_vertex' and a header comment)");
+  sub->add_option("--color", o->color,
+                  "PLY only: per-vertex red/green/blue of H, K, k1 or k2 (diverging map, symmetric "
+                  "range: 98th percentile of |value|)")
+      ->check(CLI::IsMember({"H", "K", "k1", "k2"}));
   sub->add_option("--output", o->output, "Output file (.csv or .ply)")->required();
   return [o, degree]() { return run_estimate(*o, degree->count() > 0); };
 }
