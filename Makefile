@@ -25,7 +25,7 @@ FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 60
 FUZZ_CXX ?= clang++
 
-.PHONY: all deps configure build test experiments bench clean format test-sanitize fuzz install
+.PHONY: all deps configure build test experiments bench clean format test-sanitize fuzz install realmeshes
 
 all: build
 
@@ -49,6 +49,11 @@ experiments: build
 
 bench: build
 	@bash tools/bench.sh $(BUILD)
+
+# Every method on the sample meshes of Debian's libcgal-demo (fetched at run time with apt-get
+# download into $(BUILD)/realmeshes/) -> results/REAL_MESHES.md.
+realmeshes: build
+	@bash tools/realmeshes.sh $(BUILD)
 
 test-sanitize: deps
 	@cmake -S . -B $(SANITIZE_BUILD) -DCURVBENCH_SANITIZE=ON -DCURVBENCH_BUILD_BENCH=OFF \

@@ -5,6 +5,7 @@
 #include "curvbench/version.h"
 #include "mesh/io.h"
 #include "mesh/mesh.h"
+#include "methods/estimate_oriented.h"
 #include "methods/estimator.h"
 
 namespace curvbench {
@@ -23,7 +24,7 @@ EstimateResult estimate(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
                      std::to_string(F.cols()));
   const std::unique_ptr<Estimator> est = make_api_estimator(options);
   const Mesh mesh(VertexMatrix(V), FaceMatrix(F), "mesh");
-  const std::vector<VertexEstimate> res = estimate_mesh(mesh, *est);
+  const std::vector<VertexEstimate> res = estimate_oriented(mesh, *est).estimates;
   const Eigen::Index n = static_cast<Eigen::Index>(res.size());
   EstimateResult out;
   out.method = est->label();

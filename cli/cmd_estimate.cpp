@@ -26,7 +26,9 @@
 #include "core/errors.h"
 #include "core/text.h"
 #include "harness/estimate_columns.h"
+#include "mesh/colormap.h"
 #include "mesh/io.h"
+#include "methods/estimate_oriented.h"
 #include "methods/estimator.h"
 
 namespace curvbench::cli {
@@ -42,13 +44,35 @@ struct EstimateOptions {
   bool noisy = false;
   bool timing = false;
   bool skip_invalid = false;
+  std::string color;  // "", H, K, k1 or k2: PLY per-vertex RGB (mesh/colormap.h)
   std::string output;
 };
+
+// --color: red, green, blue properties from a diverging map of one quantity (mesh/colormap.h).
+void add_color_properties(const std::string& quantity, const std::vector<VertexEstimate>& est,
+                          std::vector<VertexProperty>& props, std::vector<std::string>& comments) {
+  std::vector<double> x(est.size());
+  for (size_t v = 0; v < est.size(); ++v)
+    x[v] = quantity == "H"    ? est[v].H
+           : quantity == "K"  ? est[v].K
+           : quantity == "k1" ? est[v].k1
+                              : est[v].k2;
+  const VertexColors c = diverging_colors(x);
+  const char* names[3] = {"red", "green", "blue"};
+  for (int j = 0; j < 3; ++j) {
+    VertexProperty p{names[j], std::vector<double>(est.size()), true};
+    for (size_t v = 0; v < est.size(); ++v) p.values[v] = c.rgb[v][static_cast<size_t>(j)];
+    props.push_back(std::move(p));
+  }
+  comments.push_back("color: " + quantity + ", blue -L .. white 0 .. red +L, L = " +
+                     format_g(c.limit) + " (98th percentile of |" + quantity + "|)");
+}
 
 int run_estimate(const EstimateOptions& o, bool degree_given) {
   const std::string ext = lower_extension(o.output);
   if (ext != "csv" && ext != "ply")
     throw UsageError("--output " + o.output + ": extension must be .csv or .ply");
+  if (!o.color.empty() && ext != "ply") throw UsageError("--color needs a .ply --output");
   EstimatorOptions eo;
   eo.degree = degree_given ? o.degree : 0;  // 0: the method's default (none if degree-free)
   eo.ring = o.rings;
@@ -66,12 +90,17 @@ int run_estimate(const EstimateOptions& o, bool degree_given) {
   };
   const auto t_read = Clock::now();
   MeshReadReport report;
-  const Mesh mesh = read_input_mesh(o.mesh, o.skip_invalid, report);
+  const Mesh input = read_input_mesh(o.mesh, o.skip_invalid, report);
   const double read_seconds = since(t_read);
   const auto t0 = Clock::now();
-  const std::vector<VertexEstimate> res = estimate_mesh(mesh, *est);
+  // Consistent orientation, closed parts outward, then the estimates (methods/estimate_oriented.h).
+  OrientedEstimate oriented = estimate_oriented(input, *est);
   const double seconds = since(t0);
-  int counts[4] = {0, 0, 0, 0};
+  for (const std::string& w : orientation_warnings(oriented.orientation))
+    std::fprintf(stderr, "curvbench: warning: %s: %s\n", o.mesh.c_str(), w.c_str());
+  const Mesh& mesh = oriented.orientation.mesh;
+  std::vector<VertexEstimate>& res = oriented.estimates;
+  int counts[6] = {0, 0, 0, 0, 0, 0};  // by VertexStatus code
   for (const VertexEstimate& e : res) ++counts[static_cast<int>(e.status)];
 
   const auto t_write = Clock::now();
@@ -91,6 +120,7 @@ int run_estimate(const EstimateOptions& o, bool degree_given) {
                          std::to_string(report.faces_skipped) +
                          " faces dropped; source_vertex = index in the input file");
     }
+    if (!o.color.empty()) add_color_properties(o.color, res, props, comments);
     write_mesh(o.output, mesh, props, comments);  // atomic itself (mesh/io.h)
   }
   const double write_seconds = since(t_write);
@@ -98,9 +128,9 @@ int run_estimate(const EstimateOptions& o, bool degree_given) {
   const int n = mesh.num_vertices();
   std::fprintf(stderr,
                "curvbench estimate: %s on %s: %d vertices (ok %d, degree_reduced %d, failed %d, "
-               "excluded %d) in %.3f s (%.2f us/vertex) -> %s\n",
+               "excluded %d, disk_cut %d, sign_undetermined %d) in %.3f s (%.2f us/vertex) -> %s\n",
                est->label().c_str(), o.mesh.c_str(), n, counts[0], counts[1], counts[2], counts[3],
-               seconds, n > 0 ? 1e6 * seconds / n : 0.0, o.output.c_str());
+               counts[4], counts[5], seconds, n > 0 ? 1e6 * seconds / n : 0.0, o.output.c_str());
   if (o.timing) {
     // Per-stage wall times; neighbourhoods and fits are interleaved per vertex, so they are one
     // stage (estimate_mesh, including the area-weighted normals).
@@ -136,6 +166,10 @@ Command add_estimate_command(CLI::App& app) {
                 "Drop vertices with a NaN/Inf coordinate and the faces using them instead of "
                 "failing; the output then has only the remaining vertices (CSV 'vertex' = index "
                 "in the input file; PLY: property 'source_vertex' and a header comment)");
+  sub->add_option("--color", o->color,
+                  "PLY only: per-vertex red/green/blue of H, K, k1 or k2 (diverging map, symmetric "
+                  "range: 98th percentile of |value|)")
+      ->check(CLI::IsMember({"H", "K", "k1", "k2"}));
   sub->add_option("--output", o->output, "Output file (.csv or .ply)")->required();
   return [o, degree]() { return run_estimate(*o, degree->count() > 0); };
 }

@@ -20,6 +20,10 @@ const char* to_string(VertexStatus status) {
       return "failed";
     case VertexStatus::excluded:
       return "excluded";
+    case VertexStatus::disk_cut:
+      return "disk_cut";
+    case VertexStatus::sign_undetermined:
+      return "sign_undetermined";
   }
   return "unknown";
 }

@@ -27,11 +27,16 @@ namespace curvbench {
 /// Per-vertex outcome. New values go at the end (the numbers are stored in PLY output); add
 /// the word to to_string() in estimate_mesh.cpp.
 enum class VertexStatus : std::uint8_t {
-  ok = 0,              ///< estimated (at the requested degree, for a fit); the quantities the
-                       ///< method computes (Estimator::computes()) are finite, the others NaN
-  degree_reduced = 1,  ///< the safeguard lowered the degree (>= 1); values are finite
-  failed = 2,          ///< no estimate possible (or estimate() threw): values NaN
-  excluded = 3,        ///< not computed by design (e.g. Xu at a boundary vertex): values NaN
+  ok = 0,                 ///< estimated (at the requested degree, for a fit); the quantities the
+                          ///< method computes (Estimator::computes()) are finite, the others NaN
+  degree_reduced = 1,     ///< the safeguard lowered the degree (>= 1); values are finite
+  failed = 2,             ///< no estimate possible (or estimate() threw): values NaN
+  excluded = 3,           ///< not computed by design (e.g. Xu at a boundary vertex): values NaN
+  disk_cut = 4,           ///< fitted at the requested degree on part of the ring's points: the
+                          ///< ring is not a topological disk, cut to one around the vertex (LSCM)
+  sign_undetermined = 5,  ///< finite values, but the surface around the vertex cannot be oriented
+                          ///< (non-orientable or non-manifold, mesh/orientation.h): the signs of
+                          ///< the normal and the curvatures are arbitrary
 };
 
 const char* to_string(VertexStatus status);

@@ -6,8 +6,13 @@
 // with the distance part of the eq. (15) weights and the safeguarded QR, and evaluates the
 // parametric formulas (§6.2). The map is normalised (centre at the origin, counter-clockwise),
 // so x_u x x_v points to the side the faces are counter-clockwise from (outward / upward).
-// A ring that is not a topological disk (or any map failure) makes that fit attempt fail: the
-// vertex is reported as failed unless an earlier (smaller) ring of the adaptive loop fitted.
+// A ring that is not a topological disk is cut to a disk around the vertex
+// (lscm_parameterization.h) and the fit uses the vertices of that disk: status disk_cut if the
+// cut left ring vertices out (degree_reduced if the degree still drops after the adaptive growth;
+// ok if it dropped faces only, e.g. where two faces of a half ring pinch at one outer vertex, as
+// the fit then has every point of the ring). A map failure makes that
+// fit attempt fail: the vertex is reported as failed unless an earlier ring of the adaptive loop
+// fitted.
 //
 //   "lscm"       CgalLscmMap: CGAL's LSCM_parameterizer_3 + Two_vertices_parameterizer_3, as in
 //                the paper (Eigen SimplicialLDLT on the normal equations by default).

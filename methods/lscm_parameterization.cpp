@@ -34,6 +34,8 @@ bool RingPatch::build(int centre, std::span<const int> neighbours, std::span<con
   face_globals_.clear();
   positions_.clear();
   faces_.clear();
+  cut_ = false;
+  ring_size_ = 1 + static_cast<int>(neighbours.size());
   const int nv = mesh_->num_vertices();
   const auto add = [&](int g) {
     if (g < 0 || g >= nv || local_[static_cast<size_t>(g)] >= 0) return false;  // duplicate
@@ -57,7 +59,116 @@ bool RingPatch::build(int centre, std::span<const int> neighbours, std::span<con
     }
   }
   if (num_vertices() < 3 || faces_.empty()) return false;
-  return is_disk();
+  if (is_disk()) return true;
+  return cut_to_disk() && num_vertices() >= 3 && is_disk();
+}
+
+// Greedy disk growth (see the header): the patch stays a disk after each accepted face, because
+// a triangle glued to a disk along one boundary edge with a new third vertex, or along two
+// consecutive boundary edges (in a disk the two boundary edges at a vertex are consecutive on
+// its one boundary loop), leaves a disk. The patch is then renumbered to its own vertices, the
+// centre first and the others in ring order.
+bool RingPatch::cut_to_disk() {
+  const int n = num_vertices();
+  const int nf = num_faces();
+  const size_t un = static_cast<size_t>(n);
+  directed_.assign(un * un, 0);
+  in_patch_.assign(un, 0);
+  accepted_.clear();
+  pending_.clear();
+  const auto directed = [&](int a, int b) -> unsigned char& {
+    return directed_[static_cast<size_t>(a) * un + static_cast<size_t>(b)];
+  };
+  enum Verdict { accept, later, never };
+  const auto judge = [&](int f) {
+    const int v[3] = {face_vertex(f, 0), face_vertex(f, 1), face_vertex(f, 2)};
+    if (accepted_.empty()) return v[0] == 0 || v[1] == 0 || v[2] == 0 ? accept : later;
+    int shared = 0, opposite = -1;
+    for (int k = 0; k < 3; ++k) {
+      const int a = v[k], b = v[(k + 1) % 3];
+      // a -> b already in the patch: an edge used twice the same way (inconsistent orientation)
+      // or an interior edge (its third face): never a disk.
+      if (directed(a, b)) return never;
+      if (directed(b, a)) {
+        ++shared;
+        opposite = v[(k + 2) % 3];
+      }
+    }
+    if (shared == 1) return in_patch_[static_cast<size_t>(opposite)] ? later : accept;
+    if (shared == 2) return accept;
+    return shared == 0 ? later : never;  // 3: the face would close the surface
+  };
+  const auto take = [&](int f) {
+    for (int k = 0; k < 3; ++k) {
+      const int a = face_vertex(f, k), b = face_vertex(f, (k + 1) % 3);
+      directed(a, b) = 1;
+      in_patch_[static_cast<size_t>(a)] = 1;
+    }
+    accepted_.push_back(f);
+  };
+  for (int f = 0; f < nf; ++f) {
+    const Verdict verdict = judge(f);
+    if (verdict == later) pending_.push_back(f);
+    if (verdict != accept) continue;
+    take(f);
+    // Earlier faces first: retry the waiting ones until none fits.
+    for (bool progress = true; progress;) {
+      progress = false;
+      size_t keep = 0;
+      for (size_t i = 0; i < pending_.size(); ++i) {
+        const int g = pending_[i];
+        const Verdict again = judge(g);
+        if (again == accept) {
+          take(g);
+          progress = true;
+        } else if (again == later) {
+          pending_[keep++] = g;
+        }
+      }
+      pending_.resize(keep);
+    }
+  }
+  if (accepted_.empty()) return false;
+  std::sort(accepted_.begin(), accepted_.end());
+
+  // Renumber: patch vertex j <- ring vertex ring_index_[j] (centre first: every face accepted
+  // first contains it); in_patch_ becomes the new index + 1.
+  ring_index_.clear();
+  for (int i = 0; i < n; ++i) {
+    if (!in_patch_[static_cast<size_t>(i)]) {
+      local_[static_cast<size_t>(globals_[static_cast<size_t>(i)])] = -1;
+      continue;
+    }
+    const int j = static_cast<int>(ring_index_.size());
+    ring_index_.push_back(i);
+    local_[static_cast<size_t>(globals_[static_cast<size_t>(i)])] = j;
+    globals_[static_cast<size_t>(j)] = globals_[static_cast<size_t>(i)];
+    positions_[static_cast<size_t>(j)] = positions_[static_cast<size_t>(i)];
+  }
+  globals_.resize(ring_index_.size());
+  positions_.resize(ring_index_.size());
+  for (int f = 0; f < nf; ++f)
+    face_local_[static_cast<size_t>(face_globals_[static_cast<size_t>(f)])] = -1;
+  for (size_t j = 0; j < accepted_.size(); ++j) {
+    const int f = accepted_[j];
+    const int g = face_globals_[static_cast<size_t>(f)];
+    face_globals_[j] = g;
+    face_local_[static_cast<size_t>(g)] = static_cast<int>(j);
+    for (int k = 0; k < 3; ++k)
+      faces_[3 * j + static_cast<size_t>(k)] =
+          local_[static_cast<size_t>(mesh_->face_vertex(g, k))];
+  }
+  face_globals_.resize(accepted_.size());
+  faces_.resize(3 * accepted_.size());
+  cut_ = true;
+  return ring_index_[0] == 0;
+}
+
+void RingPatch::to_ring(std::span<const Vec2> patch_uv, std::vector<Vec2>& ring_uv) const {
+  ring_uv.assign(static_cast<size_t>(ring_size_),
+                 Vec2::Constant(std::numeric_limits<double>::quiet_NaN()));
+  for (int i = 0; i < num_vertices(); ++i)
+    ring_uv[static_cast<size_t>(ring_index(i))] = patch_uv[static_cast<size_t>(i)];
 }
 
 // Halfedge h = 3f + k runs from face_vertex(f, k) to face_vertex(f, (k+1)%3). A connected,
@@ -257,22 +368,18 @@ bool cholesky_solve(std::complex<double>* matrix, int n, std::complex<double>* r
   return true;
 }
 
-}  // namespace
-
-LscmMap::LscmMap(const Mesh& mesh, LscmMapOptions options) : options_(options), patch_(mesh) {}
-
 // CGAL Two_vertices_parameterizer_3::parameterize (CGAL 5.5), the same comparisons: project on
 // the longest and second-longest axes of the bounding box, take the vertices with the smallest
 // and the largest projection on the longest one (ties broken by the second one).
-void LscmMap::choose_pins(int& p, int& q) const {
-  const int n = patch_.num_vertices();
+void choose_pins(const RingPatch& patch, LscmPins pins, int& p, int& q) {
+  const int n = patch.num_vertices();
   p = 0;
   q = 0;
-  if (options_.pins == LscmPins::farthest_pair) {
+  if (pins == LscmPins::farthest_pair) {
     double best = -1.0;
     for (int i = 0; i < n; ++i)
       for (int j = i + 1; j < n; ++j) {
-        const double d2 = (patch_.position(i) - patch_.position(j)).squaredNorm();
+        const double d2 = (patch.position(i) - patch.position(j)).squaredNorm();
         if (d2 > best) {
           best = d2;
           p = i;
@@ -284,8 +391,8 @@ void LscmMap::choose_pins(int& p, int& q) const {
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
   Vec3 hi = -lo;
   for (int i = 0; i < n; ++i) {
-    lo = lo.cwiseMin(patch_.position(i));
-    hi = hi.cwiseMax(patch_.position(i));
+    lo = lo.cwiseMin(patch.position(i));
+    hi = hi.cwiseMax(patch.position(i));
   }
   const Vec3 d = hi - lo;
   int a1, a2;  // longest and second-longest axis, as CGAL decides them
@@ -301,8 +408,8 @@ void LscmMap::choose_pins(int& p, int& q) const {
   }
   double umin = std::numeric_limits<double>::infinity(), umax = -umin, vmin = umin, vmax = -umin;
   for (int i = 0; i < n; ++i) {
-    const double u = (patch_.position(i)[a1] - lo[a1]) / d[a1];
-    const double v = (patch_.position(i)[a2] - lo[a2]) / d[a2];
+    const double u = (patch.position(i)[a1] - lo[a1]) / d[a1];
+    const double v = (patch.position(i)[a2] - lo[a2]) / d[a2];
     if (u < umin || (u == umin && v < vmin)) {
       p = i;
       umin = u;
@@ -316,13 +423,17 @@ void LscmMap::choose_pins(int& p, int& q) const {
   }
 }
 
+}  // namespace
+
+LscmMap::LscmMap(const Mesh& mesh, LscmMapOptions options) : options_(options), patch_(mesh) {}
+
 bool LscmMap::map(int centre, std::span<const int> neighbours, std::span<const int> faces,
                   std::vector<Vec2>& uv) {
   if (!patch_.build(centre, neighbours, faces)) return false;
   const int n = patch_.num_vertices();
   const int nf = patch_.num_faces();
   int p, q;
-  choose_pins(p, q);
+  choose_pins(patch_, options_.pins, p, q);
   if (p == q || !((patch_.position(p) - patch_.position(q)).squaredNorm() > 0.0)) return false;
 
   unknown_.assign(static_cast<size_t>(n), -1);
@@ -377,16 +488,18 @@ bool LscmMap::map(int centre, std::span<const int> neighbours, std::span<const i
   }
 
   if (!cholesky_solve(matrix_.data(), nu, rhs_.data())) return false;
-  uv.resize(static_cast<size_t>(n));
+  patch_uv_.resize(static_cast<size_t>(n));
   for (int i = 0; i < n; ++i) {
     const int ui = unknown_[static_cast<size_t>(i)];
     if (ui >= 0)
-      uv[static_cast<size_t>(i)] =
+      patch_uv_[static_cast<size_t>(i)] =
           Vec2(rhs_[static_cast<size_t>(ui)].real(), rhs_[static_cast<size_t>(ui)].imag());
     else
-      uv[static_cast<size_t>(i)] = Vec2(i == q ? 1.0 : 0.0, 0.0);
+      patch_uv_[static_cast<size_t>(i)] = Vec2(i == q ? 1.0 : 0.0, 0.0);
   }
-  return normalise_patch_map(patch_, uv);
+  if (!normalise_patch_map(patch_, patch_uv_)) return false;
+  patch_.to_ring(patch_uv_, uv);
+  return true;
 }
 
 // ---- CGAL LSCM ---------------------------------------------------------------------------------
@@ -434,6 +547,11 @@ CgalLscmMap::~CgalLscmMap() = default;
 bool CgalLscmMap::map(int centre, std::span<const int> neighbours, std::span<const int> faces,
                       std::vector<Vec2>& uv) {
   if (!patch_.build(centre, neighbours, faces)) return false;
+  // CGAL's border parameterizer does not check its pins: a patch whose vertices all coincide
+  // (e.g. a cut down to one zero-area face) would crash it.
+  int p, q;
+  choose_pins(patch_, LscmPins::bounding_box, p, q);
+  if (p == q || !((patch_.position(p) - patch_.position(q)).squaredNorm() > 0.0)) return false;
   try {
     CgalMesh& sm = impl_->mesh;
     sm.clear_without_removing_property_maps();
@@ -458,15 +576,17 @@ bool CgalLscmMap::map(int centre, std::span<const int> neighbours, std::span<con
     const bool ok = solver_ == CgalLscmSolver::eigen_ldlt ? impl_->run<EigenLdltTraits>(border)
                                                           : impl_->run<OpenNlTraits>(border);
     if (!ok) return false;
-    uv.resize(static_cast<size_t>(n));
+    patch_uv_.resize(static_cast<size_t>(n));
     for (int i = 0; i < n; ++i) {
-      const CgalKernel::Point_2& p = impl_->uv[CgalVertex(i)];
-      uv[static_cast<size_t>(i)] = Vec2(p.x(), p.y());
+      const CgalKernel::Point_2& x = impl_->uv[CgalVertex(i)];
+      patch_uv_[static_cast<size_t>(i)] = Vec2(x.x(), x.y());
     }
   } catch (...) {
     return false;
   }
-  return normalise_patch_map(patch_, uv);
+  if (!normalise_patch_map(patch_, patch_uv_)) return false;
+  patch_.to_ring(patch_uv_, uv);
+  return true;
 }
 
 }  // namespace curvbench

@@ -2,15 +2,24 @@
 // LSCM-d (paper §4.2.3; docs/algorithms.md §8).
 //
 // Input: the mesh, the centre vertex p0, its ring neighbours V_r \ {p0} and the ring faces F_r
-// (RingCollector::neighbours() and faces()). Patch vertex i is p0 for i = 0 and neighbours[i-1]
-// for i >= 1; N = 1 + |neighbours|. Every face must use patch vertices only, every patch vertex
-// must be in a face, and the patch must be a topological disk (connected, consistently oriented,
-// edge- and vertex-manifold, one boundary loop, V - E + F = 1).
+// (RingCollector::neighbours() and faces()). Ring vertex i is p0 for i = 0 and neighbours[i-1]
+// for i >= 1; N = 1 + |neighbours|. Every face must use ring vertices only.
 //
-// Output: uv (N rows), uv[i] = (u, v) of patch vertex i, normalised (docs/algorithms.md §6.2, §8):
+// Disk cut. The LSCM needs a topological disk (connected, consistently oriented, edge- and
+// vertex-manifold, one boundary loop, V - E + F = 1). A ring that wraps around a hole or a thin
+// handle of the mesh, or that covers a whole small closed component, is not one; it is then cut
+// to a disk around p0 (RingPatch::build): starting from one face at p0, the ring faces are taken
+// in discovery order (the star of p0 first, then outwards), and a face is accepted only if the
+// patch stays a disk, i.e. if it meets the patch in exactly one boundary edge and brings a new
+// vertex, or in exactly two boundary edges (filling a notch); a face rejected for now is retried
+// after each acceptance. The patch vertices are then the ring vertices of the accepted faces.
+//
+// Output: uv (N rows), uv[i] = (u, v) of ring vertex i, normalised (docs/algorithms.md §6.2, §8):
 // translated so that uv[0] = (0, 0), and v -> -v if the mapped patch is clockwise (total signed
 // area of the mapped faces < 0). Normals and curvatures of a fit are invariant under similarities
-// of (u, v), so no scaling or rotation is applied.
+// of (u, v), so no scaling or rotation is applied. A ring vertex left out by the disk cut gets a
+// non-finite uv[i] (NaN), which the fitting driver drops (ring_fit_estimator.h); patch().cut()
+// says whether that happened.
 //
 // Two implementations of the same energy E = sum_T |sum_k W_T,k U_k|^2 s_T, U_k = u_k + i v_k,
 // W_T = (z3 - z2, z1 - z3, z2 - z1) with z_k the counter-clockwise local 2-D coordinates of T:
@@ -31,8 +40,8 @@
 // the patch is developable; so the default LscmMap and CgalLscmMap differ slightly on curved
 // patches. Both reproduce a planar patch up to a similarity.
 //
-// Both return false, and never throw, on: fewer than 3 vertices, a patch that is not a disk,
-// coincident pins, a failed solve, or a non-finite / zero-area result.
+// Both return false, and never throw, on: fewer than 3 vertices, a ring with no disk around p0
+// (not even one face), coincident pins, a failed solve, or a non-finite / zero-area result.
 #pragma once
 
 #include <complex>
@@ -45,14 +54,15 @@
 
 namespace curvbench {
 
-/// A ring patch copied to local indices (0 = centre), with the topological-disk test. Owns
-/// reusable buffers (one per thread).
+/// A ring patch copied to local indices (0 = centre), with the topological-disk test and the
+/// disk cut. Owns reusable buffers (one per thread).
 class RingPatch {
  public:
   explicit RingPatch(const Mesh& mesh);
 
-  /// Copies the patch (see the file comment for the vertex order). Returns true iff it has at
-  /// least 3 vertices and is a topological disk.
+  /// Copies the ring (see the file comment for the vertex order) and, if it is not a topological
+  /// disk, cuts it to one around the centre. Returns true iff the resulting patch has at least 3
+  /// vertices and is a topological disk.
   bool build(int centre, std::span<const int> neighbours, std::span<const int> faces);
 
   int num_vertices() const { return static_cast<int>(positions_.size()); }
@@ -61,8 +71,19 @@ class RingPatch {
   /// Local vertex k (0..2) of face f, in the mesh's orientation.
   int face_vertex(int f, int k) const { return faces_[static_cast<size_t>(3 * f + k)]; }
 
+  /// True if the last build() had to cut the ring (some ring faces, maybe vertices, left out).
+  bool cut() const { return cut_; }
+  /// Number of ring vertices N = 1 + |neighbours| of the last build().
+  int ring_size() const { return ring_size_; }
+  /// Ring index (0 = centre, i = neighbours[i-1]) of patch vertex i; the identity unless cut().
+  int ring_index(int i) const { return cut_ ? ring_index_[static_cast<size_t>(i)] : i; }
+  /// Spreads a map of the patch vertices (num_vertices() rows) to the ring vertices
+  /// (ring_size() rows); ring vertices outside the patch get NaN.
+  void to_ring(std::span<const Vec2> patch_uv, std::vector<Vec2>& ring_uv) const;
+
  private:
   bool is_disk();
+  bool cut_to_disk();
 
   const Mesh* mesh_;
   std::vector<int> local_;       // mesh vertex -> local index, -1 outside the current patch
@@ -79,6 +100,15 @@ class RingPatch {
   std::vector<int> some_out_;
   std::vector<int> boundary_out_;
   std::vector<int> boundary_count_;
+  // Disk cut: directed patch edges (dense n x n flags), accepted faces, retry list, and the ring
+  // index of each patch vertex.
+  bool cut_ = false;
+  int ring_size_ = 0;
+  std::vector<unsigned char> directed_;
+  std::vector<unsigned char> in_patch_;
+  std::vector<int> accepted_;
+  std::vector<int> pending_;
+  std::vector<int> ring_index_;
 };
 
 /// Signed area of the mapped patch: sum over faces of the 2-D cross product / 2.
@@ -106,7 +136,8 @@ class LscmMap {
  public:
   explicit LscmMap(const Mesh& mesh, LscmMapOptions options = {});
 
-  /// Maps the patch; uv is resized to N. Returns false (uv unspecified) on failure.
+  /// Maps the patch; uv is resized to N (NaN rows outside a cut patch). Returns false (uv
+  /// unspecified) on failure.
   bool map(int centre, std::span<const int> neighbours, std::span<const int> faces,
            std::vector<Vec2>& uv);
 
@@ -114,13 +145,12 @@ class LscmMap {
   const LscmMapOptions& options() const { return options_; }
 
  private:
-  void choose_pins(int& p, int& q) const;
-
   LscmMapOptions options_;
   RingPatch patch_;
   std::vector<int> unknown_;  // local vertex -> unknown index, -1 for a pin
   std::vector<std::complex<double>> matrix_;
   std::vector<std::complex<double>> rhs_;
+  std::vector<Vec2> patch_uv_;  // per patch vertex, before to_ring()
 };
 
 enum class CgalLscmSolver {
@@ -137,7 +167,8 @@ class CgalLscmMap {
   CgalLscmMap(const CgalLscmMap&) = delete;
   CgalLscmMap& operator=(const CgalLscmMap&) = delete;
 
-  /// Maps the patch; uv is resized to N. Returns false (uv unspecified) on failure.
+  /// Maps the patch; uv is resized to N (NaN rows outside a cut patch). Returns false (uv
+  /// unspecified) on failure.
   bool map(int centre, std::span<const int> neighbours, std::span<const int> faces,
            std::vector<Vec2>& uv);
 
@@ -148,6 +179,7 @@ class CgalLscmMap {
   RingPatch patch_;
   CgalLscmSolver solver_;
   std::unique_ptr<Impl> impl_;
+  std::vector<Vec2> patch_uv_;  // per patch vertex, before to_ring()
 };
 
 }  // namespace curvbench

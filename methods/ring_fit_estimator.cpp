@@ -25,6 +25,7 @@ struct RingFitWorkspace final : Workspace {
   RhsMatrix f;
   FitScratch fit;
   std::unique_ptr<ParamScratch> param;
+  bool partial = false;  // the last assembled system dropped rows with a non-finite (u, v)
 };
 
 }  // namespace
@@ -97,12 +98,16 @@ bool assemble_current_ring(const RingFitEstimator& est, bool hook_ok, const Mesh
   int sel[kMaxRows];
   double gam[kMaxRows];
   int rows = 0;
+  ws.partial = false;
   if (o.include_centre) {
     sel[rows] = 0;
     gam[rows++] = 1.0;
   }
   for (size_t i = 0; i < nb.size() && rows < kMaxRows; ++i) {
-    if (!ws.uv[i + 1].allFinite()) continue;
+    if (!ws.uv[i + 1].allFinite()) {
+      ws.partial = true;
+      continue;
+    }
     const double g =
         safeguard ? normal_safeguard_gamma(ctx.approx_normals.row(nb[i]).transpose(), frame.m)
                   : 1.0;
@@ -158,6 +163,7 @@ void RingFitEstimator::estimate(const MeshContext& ctx, int v, Workspace& base,
   double ring = ws.rings.ring();
   FitResult fit;
   bool have_fit = false;
+  bool fit_partial = false;
   double fit_ring = ring;
   for (;;) {
     const RingView view{
@@ -168,6 +174,7 @@ void RingFitEstimator::estimate(const MeshContext& ctx, int v, Workspace& base,
     if (fit_current_ring(*this, hook_ok, ctx, v, frame, safeguard, ws, attempt)) {
       fit = attempt;
       have_fit = true;
+      fit_partial = ws.partial;
       fit_ring = ring;
     }
     // Rank-failure rule (docs/algorithms.md §1.2, [C2]): grow by half a ring up to 2 r0.
@@ -193,6 +200,8 @@ void RingFitEstimator::estimate(const MeshContext& ctx, int v, Workspace& base,
                                       t.row(kFvv).transpose());
   if (!set_quantities(c, fit.degree, d, fit.rows, fit_ring, out))
     set_failed(fit_ring, fit.rows, out);
+  else if (fit_partial && out.status == VertexStatus::ok)
+    out.status = VertexStatus::disk_cut;
 }
 
 bool RingFitEstimator::first_system(const MeshContext& ctx, int v, Workspace& base,

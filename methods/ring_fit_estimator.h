@@ -16,8 +16,11 @@
 //     adaptive and d_used < d and ring < 2 r0 and the ring can grow: ring += 0.5, repeat
 //   quantities (core/shape_operator.h): height route curvature_from_height(t1, t2, m0, f_u, ...),
 //   parametric route curvature_from_parametric(x_u, x_v, x_uu, x_uv, x_vv).
-// Status: ok (d_used = d), degree_reduced (1 <= d_used < d), failed (d_used = 0, the hook
-// failed, or non-finite quantities): every value NaN (vertex_result.h).
+// Status: ok (d_used = d), disk_cut (d_used = d, but the hook left some ring vertices without a
+// finite (u, v): e.g. the LSCM disk cut of a ring that is not a disk), degree_reduced (1 <= d_used
+// < d, with or without a cut), failed (d_used = 0, the hook failed, or non-finite quantities):
+// values NaN (vertex_result.h).
+// Exceptions are caught by estimate_mesh (the vertex is failed).
 //
 // ---- Extension point (LSCM and any other ring parameterization) -------------------------------
 // Derive from RingFitEstimator, pass FitRoute::parametric to the constructor, and override
@@ -37,8 +40,9 @@
 //        The driver translates uv[0] to (0, 0). The map must preserve orientation: (u, v)
 //        counter-clockwise seen from the outward/upward side (flip v -> -v if the mapped patch
 //        has negative signed area), so that x_u x x_v points outward. A non-finite uv[i] drops
-//        that row.
-//   return false if no parameterization exists (e.g. the patch is not a disk): the vertex is
+//        that row, and the vertex's status then says disk_cut (the map covers only part of the
+//        ring's vertices, e.g. the LSCM disk cut).
+//   return false if no parameterization exists (e.g. no disk around the centre): the vertex is
 //        then reported as failed (or, in the adaptive rank-failure loop, the previous fit is
 //        kept if there was one).
 //   It is called once per fit attempt (several times when the ring grows), from several threads

@@ -73,4 +73,13 @@ bool set_operator_quantities(const Curvature& c, const ComputedQuantities& compu
   return true;
 }
 
+void mark_sign_undetermined(const std::vector<unsigned char>& undetermined,
+                            std::vector<VertexEstimate>& estimates) {
+  for (size_t v = 0; v < estimates.size() && v < undetermined.size(); ++v) {
+    VertexStatus& s = estimates[v].status;
+    if (undetermined[v] && s != VertexStatus::failed && s != VertexStatus::excluded)
+      s = VertexStatus::sign_undetermined;
+  }
+}
+
 }  // namespace curvbench

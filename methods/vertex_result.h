@@ -2,6 +2,8 @@
 // Shared by every estimator so that the status conventions live in one place.
 #pragma once
 
+#include <vector>
+
 #include "core/shape_operator.h"
 #include "methods/estimator.h"
 #include "methods/local_frame.h"
@@ -30,5 +32,10 @@ bool set_quantities(const Curvature& c, int degree, int requested, int points, d
 /// computed value is not finite.
 bool set_operator_quantities(const Curvature& c, const ComputedQuantities& computed, int points,
                              double ring, VertexEstimate& out);
+
+/// Marks every vertex v with undetermined[v] != 0 and finite values (ok, degree_reduced,
+/// disk_cut) as sign_undetermined (mesh/orientation.h); failed and excluded rows stay as they are.
+void mark_sign_undetermined(const std::vector<unsigned char>& undetermined,
+                            std::vector<VertexEstimate>& estimates);
 
 }  // namespace curvbench

@@ -30,6 +30,7 @@
 #include "mesh/io.h"
 #include "mesh/mesh.h"
 #include "meshgen/generate.h"
+#include "methods/estimate_oriented.h"
 #include "methods/estimator.h"
 
 namespace py = pybind11;
@@ -165,8 +166,8 @@ struct PyExact {
 
 py::array numpy_status_names(const py::array_t<std::uint8_t>& codes) {
   const py::module_ np = py::module_::import("numpy");
-  const py::object names =
-      np.attr("array")(py::make_tuple("ok", "degree_reduced", "failed", "excluded"));
+  const py::object names = np.attr("array")(py::make_tuple(
+      "ok", "degree_reduced", "failed", "excluded", "disk_cut", "sign_undetermined"));
   return names.attr("__getitem__")(codes);
 }
 
@@ -190,7 +191,7 @@ PyEstimate py_estimate(const py::handle& V, const py::handle& F, const std::stri
   {
     py::gil_scoped_release unlocked;
     const Mesh mesh(std::move(Vm), std::move(Fm), "mesh");
-    r.estimates = estimate_mesh(mesh, *est);
+    r.estimates = estimate_oriented(mesh, *est).estimates;
   }
   const auto& e = r.estimates;
   const size_t n = e.size();
@@ -337,10 +338,14 @@ PYBIND11_MODULE(curvbench, m) {
       .def_readonly("ring", &PyEstimate::ring, "(n,) float64 ring actually used.")
       .def_readonly("status", &PyEstimate::status,
                     "(n,) str: 'ok', 'degree_reduced' (finite values at a lower degree), "
-                    "'failed' (normal = area-weighted normal, curvatures 0) or 'excluded' (NaN "
-                    "by design, e.g. Xu at a boundary vertex).")
-      .def_readonly("status_code", &PyEstimate::status_code,
-                    "(n,) uint8 status as 0 ok, 1 degree_reduced, 2 failed, 3 excluded.")
+                    "'failed' (no estimate: every value NaN), 'excluded' (NaN by design, e.g. Xu "
+                    "at a boundary vertex), 'disk_cut' (fitted on part of a ring that was not a "
+                    "disk) or 'sign_undetermined' (finite, but the surface there cannot be "
+                    "oriented).")
+      .def_readonly(
+          "status_code", &PyEstimate::status_code,
+          "(n,) uint8 status as 0 ok, 1 degree_reduced, 2 failed, 3 excluded, 4 disk_cut, "
+          "5 sign_undetermined.")
       .def("__len__", [](const PyEstimate& e) { return e.estimates.size(); })
       .def("__repr__", [](const PyEstimate& e) {
         return "<curvbench.Estimate " + e.method + " of " + std::to_string(e.estimates.size()) +

@@ -26,13 +26,17 @@ namespace curvbench {
 
 /// Outcome per vertex (the same codes as the CSV/PLY output of `curvbench estimate`).
 enum class Status : std::uint8_t {
-  ok = 0,              ///< fitted at the requested degree
+  ok = 0,              ///< estimated (at the requested degree, for a fit); quantities the method
+                       ///< does not compute (e.g. directions of Meyer's operator) are NaN
   degree_reduced = 1,  ///< the safeguard lowered the degree; values are finite
-  failed = 2,          ///< no fit possible: normal = area-weighted normal, curvatures 0
+  failed = 2,          ///< no estimate possible: every value NaN
   excluded = 3,        ///< not computed by design (e.g. Xu at a boundary vertex): values NaN
+  disk_cut = 4,        ///< fitted on part of the ring: the ring was not a disk and was cut (LSCM)
+  sign_undetermined = 5,  ///< finite, but the surface there cannot be oriented (non-orientable
+                          ///< or non-manifold): the signs of normal and curvatures are arbitrary
 };
 
-/// "ok", "degree_reduced", "failed", "excluded".
+/// "ok", "degree_reduced", "failed", "excluded", "disk_cut", "sign_undetermined".
 const char* status_name(Status status);
 
 struct EstimateOptions {

@@ -17,6 +17,7 @@
 #include "methods/estimator.h"
 #include "methods/lscm.h"
 #include "methods/lscm_parameterization.h"
+#include "real_mesh_util.h"
 
 namespace curvbench {
 namespace {
@@ -194,7 +195,20 @@ TEST(LscmMap, MapFollowsTheFaceOrientation) {
   EXPECT_LT(similarity_residual(z, uv), 1e-10);
 }
 
-TEST(LscmMap, RejectsPatchesThatAreNotDisks) {
+// Rows of uv that are finite; the others must be NaN in both coordinates.
+int finite_rows(const std::vector<Vec2>& uv) {
+  int finite = 0;
+  for (const Vec2& p : uv) {
+    if (p.allFinite()) {
+      ++finite;
+    } else {
+      EXPECT_TRUE(std::isnan(p.x()) && std::isnan(p.y()));
+    }
+  }
+  return finite;
+}
+
+TEST(LscmMap, RejectsInvalidRings) {
   const PlanarPatch p = planar_patch();
   RingCollector rc(p.mesh);
   rc.collect(p.centre, 2.0);
@@ -210,19 +224,12 @@ TEST(LscmMap, RejectsPatchesThatAreNotDisks) {
     return a;
   };
   EXPECT_TRUE(both(p.centre, nb, faces));
-
-  // A hole: drop one face incident on the centre (its vertices stay in other faces).
-  std::vector<int> holed = faces;
-  holed.erase(holed.begin());
-  EXPECT_FALSE(both(p.centre, nb, holed));
-  // A face whose vertex is not listed, a listed vertex in no face, a repeated vertex, a repeated
-  // face, no faces, invalid indices.
+  EXPECT_FALSE(fast.patch().cut());
+  // A face whose vertex is not listed, a repeated vertex, a repeated face, no faces, invalid
+  // indices.
   std::vector<int> missing_vertex = nb;
   missing_vertex.pop_back();
   EXPECT_FALSE(both(p.centre, missing_vertex, faces));
-  std::vector<int> extra_vertex = nb;
-  extra_vertex.push_back(0);  // a grid corner, far from the ring
-  EXPECT_FALSE(both(p.centre, extra_vertex, faces));
   std::vector<int> repeated_vertex = nb;
   repeated_vertex.push_back(nb[0]);
   EXPECT_FALSE(both(p.centre, repeated_vertex, faces));
@@ -234,7 +241,70 @@ TEST(LscmMap, RejectsPatchesThatAreNotDisks) {
   EXPECT_FALSE(both(-1, nb, faces));
   EXPECT_FALSE(both(p.centre, nb, {-1}));
 
-  // A bowtie: two triangles sharing only a vertex (non-manifold vertex).
+  // A bowtie whose first triangle has three coincident corners: the disk cut keeps only it, and
+  // both maps refuse it (CGAL's border parameterizer would crash on it).
+  VertexMatrix V(5, 3);
+  V << 0, 0, 0, 0, 0, 0, 0, 0, 0, -1, 0, 0, 0, -1, 0;
+  FaceMatrix F(2, 3);
+  F << 0, 1, 2, 0, 3, 4;
+  const Mesh collapsed(V, F);
+  LscmMap f2(collapsed);
+  CgalLscmMap c2(collapsed);
+  const std::vector<int> n{1, 2, 3, 4}, fs{0, 1};
+  EXPECT_FALSE(f2.map(0, n, fs, uv));
+  EXPECT_FALSE(c2.map(0, n, fs, uv));
+}
+
+// A ring that is not a disk is cut to one around the centre: the patch's own vertices are mapped
+// (still exactly, up to a similarity, on a plane), the others get NaN.
+TEST(LscmMap, CutsRingsThatAreNotDisks) {
+  const PlanarPatch p = planar_patch();
+  RingCollector rc(p.mesh);
+  rc.collect(p.centre, 2.0);
+  const std::vector<int> nb(rc.neighbours().begin(), rc.neighbours().end());
+  const std::vector<int> faces(rc.faces().begin(), rc.faces().end());
+  const std::vector<Vec2> z = in_plane(p, rc);
+  LscmMap fast(p.mesh);
+  CgalLscmMap cgal(p.mesh);
+  std::vector<Vec2> uv;
+  const auto finite_part = [](const std::vector<Vec2>& a, const std::vector<Vec2>& mask) {
+    std::vector<Vec2> out;
+    for (size_t i = 0; i < a.size(); ++i)
+      if (mask[i].allFinite()) out.push_back(a[i]);
+    return out;
+  };
+
+  // An annulus: drop one face incident on the centre (its vertices stay in other faces). The cut
+  // keeps every vertex and all faces but two: one face alone cannot open an annulus whose hole
+  // touches its outer boundary only through interior edges (removing it leaves a pinch vertex),
+  // a strip of two from the hole to the outer boundary can.
+  std::vector<int> holed = faces;
+  holed.erase(holed.begin());
+  for (bool use_cgal : {false, true}) {
+    const bool ok =
+        use_cgal ? cgal.map(p.centre, nb, holed, uv) : fast.map(p.centre, nb, holed, uv);
+    ASSERT_TRUE(ok);
+    const RingPatch& patch = use_cgal ? cgal.patch() : fast.patch();
+    EXPECT_TRUE(patch.cut());
+    EXPECT_EQ(patch.num_vertices(), 1 + static_cast<int>(nb.size()));
+    EXPECT_EQ(patch.num_faces(), static_cast<int>(holed.size()) - 2);
+    EXPECT_EQ(finite_rows(uv), static_cast<int>(uv.size()));
+    EXPECT_EQ(uv[0], Vec2::Zero());
+    EXPECT_LT(similarity_residual(z, uv), 1e-10);
+  }
+
+  // A listed vertex in no face: left out (NaN), the rest mapped as before.
+  std::vector<int> extra_vertex = nb;
+  extra_vertex.push_back(0);  // a grid corner, far from the ring
+  ASSERT_TRUE(fast.map(p.centre, extra_vertex, faces, uv));
+  EXPECT_TRUE(fast.patch().cut());
+  ASSERT_EQ(uv.size(), extra_vertex.size() + 1);
+  EXPECT_EQ(finite_rows(uv), static_cast<int>(nb.size()) + 1);
+  EXPECT_FALSE(uv.back().allFinite());
+  uv.pop_back();
+  EXPECT_LT(similarity_residual(z, uv), 1e-12);
+
+  // A bowtie (two triangles sharing only a vertex): the first triangle.
   {
     VertexMatrix V(5, 3);
     V << 0, 0, 0, 1, 0, 0, 0, 1, 0, -1, 0, 0, 0, -1, 0;
@@ -244,14 +314,20 @@ TEST(LscmMap, RejectsPatchesThatAreNotDisks) {
     LscmMap f2(bowtie);
     CgalLscmMap c2(bowtie);
     const std::vector<int> n{1, 2, 3, 4}, fs{0, 1};
-    EXPECT_FALSE(f2.map(0, n, fs, uv));
-    EXPECT_FALSE(c2.map(0, n, fs, uv));
+    for (bool use_cgal : {false, true}) {
+      ASSERT_TRUE(use_cgal ? c2.map(0, n, fs, uv) : f2.map(0, n, fs, uv));
+      ASSERT_EQ(uv.size(), 5u);
+      EXPECT_EQ(finite_rows(uv), 3);
+      EXPECT_TRUE(uv[1].allFinite() && uv[2].allFinite());
+    }
+    EXPECT_TRUE(f2.patch().cut());
+    EXPECT_EQ(f2.patch().num_faces(), 1);
     // Each triangle alone is a disk.
     EXPECT_TRUE(f2.map(0, std::vector<int>{1, 2}, std::vector<int>{0}, uv));
-    EXPECT_TRUE(c2.map(0, std::vector<int>{1, 2}, std::vector<int>{0}, uv));
+    EXPECT_FALSE(f2.patch().cut());
   }
-  // An edge with three faces (non-manifold in the mesh): any two of them with opposite
-  // directions form a disk, all three do not.
+  // An edge with three faces (non-manifold in the mesh): the first two (opposite directions)
+  // form the disk; two faces running the edge the same way never join.
   {
     VertexMatrix V(5, 3);
     V << 0, 0, 0, 1, 0, 0, 0.5, 1, 0, 0.5, -1, 0, 0.5, 0, 1;
@@ -262,13 +338,20 @@ TEST(LscmMap, RejectsPatchesThatAreNotDisks) {
     LscmMap f2(fin);
     CgalLscmMap c2(fin);
     const std::vector<int> all{0, 1, 2};
-    EXPECT_FALSE(f2.map(0, std::vector<int>{1, 2, 3, 4}, all, uv));
-    EXPECT_FALSE(c2.map(0, std::vector<int>{1, 2, 3, 4}, all, uv));
+    for (bool use_cgal : {false, true}) {
+      ASSERT_TRUE(use_cgal ? c2.map(0, std::vector<int>{1, 2, 3, 4}, all, uv)
+                           : f2.map(0, std::vector<int>{1, 2, 3, 4}, all, uv));
+      EXPECT_EQ(finite_rows(uv), 4);
+      EXPECT_FALSE(uv[4].allFinite());  // vertex 4, only in the third face
+    }
     EXPECT_TRUE(f2.map(0, std::vector<int>{1, 2, 3}, std::vector<int>{0, 1}, uv));
-    EXPECT_TRUE(c2.map(0, std::vector<int>{1, 2, 4}, std::vector<int>{0, 2}, uv));
-    EXPECT_FALSE(f2.map(0, std::vector<int>{1, 3, 4}, std::vector<int>{1, 2}, uv));  // same way
+    EXPECT_FALSE(f2.patch().cut());
+    ASSERT_TRUE(f2.map(0, std::vector<int>{1, 3, 4}, std::vector<int>{1, 2}, uv));  // same way
+    EXPECT_TRUE(f2.patch().cut());
+    EXPECT_EQ(f2.patch().num_faces(), 1);
+    EXPECT_EQ(finite_rows(uv), 3);
   }
-  // Closed patches (the whole icosahedron) and inconsistent orientation.
+  // A closed patch (the whole icosahedron): all faces but one, every vertex, centre interior.
   {
     const Mesh ico = icosphere(0, 1.0);
     RingCollector r(ico);
@@ -276,10 +359,26 @@ TEST(LscmMap, RejectsPatchesThatAreNotDisks) {
     ASSERT_EQ(r.faces().size(), 20u);
     LscmMap f2(ico);
     CgalLscmMap c2(ico);
-    EXPECT_FALSE(f2.map(0, r.neighbours(), r.faces(), uv));
-    EXPECT_FALSE(c2.map(0, r.neighbours(), r.faces(), uv));
+    for (bool use_cgal : {false, true}) {
+      ASSERT_TRUE(use_cgal ? c2.map(0, r.neighbours(), r.faces(), uv)
+                           : f2.map(0, r.neighbours(), r.faces(), uv));
+      EXPECT_EQ(finite_rows(uv), 12);
+      const RingPatch& patch = use_cgal ? c2.patch() : f2.patch();
+      EXPECT_TRUE(patch.cut());
+      EXPECT_EQ(patch.num_faces(), 19);
+      int star = 0;
+      for (int f = 0; f < patch.num_faces(); ++f)
+        for (int k = 0; k < 3; ++k) star += patch.face_vertex(f, k) == 0;
+      EXPECT_EQ(star, 5);  // the centre's whole star: the centre is interior
+      EXPECT_GT(mapped_signed_area(patch, finite_part(uv, uv)), 0.0);
+    }
+  }
+  // Inconsistent orientation: one face of the star flipped. The cut starts from it and cannot
+  // join its neighbours across the edges they run the same way.
+  {
+    const Mesh ico = icosphere(0, 1.0);
+    RingCollector r(ico);
     r.collect(0, 1.0);
-    EXPECT_TRUE(f2.map(0, r.neighbours(), r.faces(), uv));
     FaceMatrix F = ico.faces();
     const int f0 = r.faces()[0];
     std::swap(F(f0, 1), F(f0, 2));
@@ -287,9 +386,9 @@ TEST(LscmMap, RejectsPatchesThatAreNotDisks) {
     RingCollector rb(bad);
     rb.collect(0, 1.0);
     LscmMap f3(bad);
-    CgalLscmMap c3(bad);
-    EXPECT_FALSE(f3.map(0, rb.neighbours(), rb.faces(), uv));
-    EXPECT_FALSE(c3.map(0, rb.neighbours(), rb.faces(), uv));
+    ASSERT_TRUE(f3.map(0, rb.neighbours(), rb.faces(), uv));
+    EXPECT_TRUE(f3.patch().cut());
+    EXPECT_EQ(f3.patch().num_faces(), 1);
   }
 }
 
@@ -437,6 +536,65 @@ TEST(LscmEstimator, NoNanOnAMeshWithBoundaryAndThreadIndependent) {
     }
     EXPECT_EQ(failed, 0) << name;
   }
+}
+
+// A tilted jittered plane with one grid cell removed: the rings of the vertices around the hole
+// wrap around it and are cut to disks (issue 16). On a plane every LSCM map is exact, so the cut
+// fits must still give the plane's normal and zero curvature.
+TEST(LscmEstimator, CutRingsAroundAHoleInAPlaneStayExact) {
+  const Mat3 R = rotation(0.4, -0.9, 0.2);
+  const int N = 10;
+  const Mesh grid = grid_mesh(N, 0.1, false, 0.25, 5,
+                              [&](double x, double y) { return Vec3(R * Vec3(x, y, 0.0)); });
+  const int hole = 2 * (5 * N + 5);  // the two faces of cell (5, 5)
+  FaceMatrix F(grid.num_faces() - 2, 3);
+  for (int f = 0, g = 0; f < grid.num_faces(); ++f)
+    if (f != hole && f != hole + 1) F.row(g++) = grid.faces().row(f);
+  const Mesh plate(grid.vertices(), F);
+  const Vec3 normal = R.col(2);
+  EXPECT_GT(testing::rings_cut(plate, 2.0), 0);  // the 2-rings around the hole enclose it
+  EXPECT_EQ(testing::rings_cut(grid, 2.0), 0);
+  for (const char* method : {"lscm", "lscm-fast", "lscm-cg"})
+    for (int degree = 2; degree <= 4; ++degree) {
+      EstimatorOptions o;
+      o.degree = degree;
+      const auto res = estimate_mesh(plate, *make_estimator(method, o));
+      for (int v = 0; v < plate.num_vertices(); ++v) {
+        const VertexEstimate& q = res[static_cast<size_t>(v)];
+        ASSERT_NE(q.status, VertexStatus::failed) << method << degree << " vertex " << v;
+        EXPECT_LT((q.normal - normal).norm(), 1e-9) << method << degree << " vertex " << v;
+        EXPECT_LT(0.1 * std::max(std::abs(q.k1), std::abs(q.k2)), 1e-8)
+            << method << degree << " vertex " << v;
+      }
+      // Without the hole no ring is cut.
+      for (const VertexEstimate& q : estimate_mesh(grid, *make_estimator(method, o)))
+        EXPECT_NE(q.status, VertexStatus::disk_cut);
+    }
+}
+
+// A thin torus (tube of 4 edges): every ring of 2 rings or more wraps around the tube. Before
+// the disk cut LSCM-3 and LSCM-4 failed on every vertex of it; now every vertex gets finite
+// values, and the outer equator keeps the outward sign (both curvatures < 0 there).
+TEST(LscmEstimator, ThinTorusRingsAreCutNotFailed) {
+  const int nu = 48, nv = 4;
+  const Mesh torus = testing::torus_grid(1.0, 0.08, nu, nv);
+  ASSERT_EQ(testing::rings_cut(torus, 2.0), torus.num_vertices());
+  for (const char* method : {"lscm", "lscm-fast", "lscm-cg"})
+    for (int degree = 2; degree <= 4; ++degree) {
+      EstimatorOptions o;
+      o.degree = degree;
+      const auto res = estimate_mesh(torus, *make_estimator(method, o));
+      for (const VertexEstimate& q : res) {
+        ASSERT_NE(q.status, VertexStatus::failed) << method << degree;
+        ASSERT_TRUE(q.normal.allFinite() && std::isfinite(q.k1) && std::isfinite(q.k2) &&
+                    q.d1.allFinite() && q.d2.allFinite());
+      }
+      for (int i = 0; i < nu; ++i) {  // j = 0: the outer equator, k = -1/r and -1/(R + r)
+        const VertexEstimate& q = res[static_cast<size_t>(i)];
+        EXPECT_LT(q.H, 0.0) << method << degree << " vertex " << i;
+        EXPECT_GT(q.normal.dot(torus.position(i)), 0.0);
+      }
+    }
 }
 
 TEST(LscmEstimator, Registry) {

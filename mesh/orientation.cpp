@@ -1,0 +1,144 @@
+// Consistent face orientation; see orientation.h.
+#include "mesh/orientation.h"
+
+#include <string>
+#include <utility>
+
+namespace curvbench {
+
+namespace {
+
+// Position of edge (a, b) in face f as k with F(f,k) = a, F(f,k+1) = b (+1: same direction), or
+// with F(f,k) = b, F(f,k+1) = a (-1: opposite); 0 if f has no such edge.
+int edge_direction(const FaceMatrix& F, int f, int a, int b) {
+  for (int k = 0; k < 3; ++k) {
+    const int x = F(f, k), y = F(f, (k + 1) % 3);
+    if (x == a && y == b) return 1;
+    if (x == b && y == a) return -1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+OrientationResult orient_mesh(const Mesh& mesh) {
+  const int n = mesh.num_vertices();
+  const int m = mesh.num_faces();
+  const FaceMatrix& F = mesh.faces();
+  OrientationResult out;
+  out.sign_undetermined.assign(static_cast<size_t>(n), 0);
+
+  // flip[f]: reverse face f relative to the input. patch[f]: patch index.
+  std::vector<unsigned char> flip(static_cast<size_t>(m), 0);
+  std::vector<int> patch(static_cast<size_t>(m), -1);
+  std::vector<int> queue;
+  std::vector<int> members;
+  for (int seed = 0; seed < m; ++seed) {
+    if (patch[static_cast<size_t>(seed)] >= 0) continue;
+    const int id = out.patches++;
+    members.clear();
+    queue.assign(1, seed);
+    patch[static_cast<size_t>(seed)] = id;
+    bool orientable = true, closed = true;
+    for (size_t head = 0; head < queue.size(); ++head) {
+      const int f = queue[head];
+      members.push_back(f);
+      for (int k = 0; k < 3; ++k) {
+        const int g = mesh.face_neighbor(f, k);
+        if (g < 0) {
+          closed = false;
+          continue;
+        }
+        // f runs its edge k from a to b (in its new orientation); g must run it from b to a.
+        int a = F(f, k), b = F(f, (k + 1) % 3);
+        if (flip[static_cast<size_t>(f)]) std::swap(a, b);
+        const int dir = edge_direction(F, g, a, b);  // in g's input orientation
+        const unsigned char want = dir == 1 ? 1 : 0;
+        if (patch[static_cast<size_t>(g)] < 0) {
+          patch[static_cast<size_t>(g)] = id;
+          flip[static_cast<size_t>(g)] = want;
+          queue.push_back(g);
+        } else if (flip[static_cast<size_t>(g)] != want) {
+          orientable = false;  // g was reached the other way round: a seam
+        }
+      }
+    }
+    if (!orientable) {
+      ++out.nonorientable_patches;
+      for (int f : members)
+        for (int k = 0; k < 3; ++k) out.sign_undetermined[static_cast<size_t>(F(f, k))] = 1;
+      continue;
+    }
+    // Choose between the walk's orientation and its reverse.
+    bool reverse;
+    if (closed) {
+      ++out.closed_patches;
+      double volume = 0.0;
+      for (int f : members) {
+        const Vec3 a = mesh.position(F(f, 0)), b = mesh.position(F(f, 1)),
+                   c = mesh.position(F(f, 2));
+        const double v = a.dot(b.cross(c));
+        volume += flip[static_cast<size_t>(f)] ? -v : v;
+      }
+      reverse = volume < 0.0;
+    } else {
+      int flipped = 0;
+      for (int f : members) flipped += flip[static_cast<size_t>(f)];
+      reverse = 2 * flipped > static_cast<int>(members.size());
+    }
+    if (reverse)
+      for (int f : members) flip[static_cast<size_t>(f)] ^= 1;
+  }
+
+  // Vertices whose faces lie in several patches or that end a non-manifold edge.
+  for (int v = 0; v < n; ++v) {
+    const auto faces = mesh.vertex_faces(v);
+    for (int f : faces)
+      if (patch[static_cast<size_t>(f)] != patch[static_cast<size_t>(faces[0])])
+        out.sign_undetermined[static_cast<size_t>(v)] = 1;
+  }
+  for (int f = 0; f < m; ++f)
+    for (int k = 0; k < 3; ++k)
+      if (mesh.is_nonmanifold_edge(f, k)) {
+        out.sign_undetermined[static_cast<size_t>(F(f, k))] = 1;
+        out.sign_undetermined[static_cast<size_t>(F(f, (k + 1) % 3))] = 1;
+      }
+  for (unsigned char u : out.sign_undetermined) out.vertices_undetermined += u;
+
+  // Flip, then rotate each face to start at its smallest vertex index: the same triangle with
+  // the same orientation then has the same row whatever corner the input started at.
+  FaceMatrix oriented = F;
+  bool changed = false;
+  for (int f = 0; f < m; ++f) {
+    if (flip[static_cast<size_t>(f)]) {
+      std::swap(oriented(f, 1), oriented(f, 2));
+      ++out.faces_flipped;
+    }
+    int first = 0;
+    for (int k = 1; k < 3; ++k)
+      if (oriented(f, k) < oriented(f, first)) first = k;
+    if (first != 0) {
+      const int a = oriented(f, first), b = oriented(f, (first + 1) % 3),
+                c = oriented(f, (first + 2) % 3);
+      oriented.row(f) << a, b, c;
+    }
+    changed = changed || first != 0 || flip[static_cast<size_t>(f)];
+  }
+  out.mesh = changed ? Mesh(mesh.vertices(), oriented, "oriented mesh") : mesh;
+  return out;
+}
+
+std::vector<std::string> orientation_warnings(const OrientationResult& r) {
+  std::vector<std::string> out;
+  const int m = r.mesh.num_faces();
+  if (r.faces_flipped > 0)
+    out.push_back("reoriented " + std::to_string(r.faces_flipped) + " of " + std::to_string(m) +
+                  " faces (consistent orientation, closed parts outward; vertex numbering kept)");
+  if (r.vertices_undetermined > 0)
+    out.push_back(std::to_string(r.vertices_undetermined) + " vertices are on a non-orientable (" +
+                  std::to_string(r.nonorientable_patches) +
+                  " patches) or non-manifold part: status sign_undetermined");
+  return out;
+}
+
+}  // namespace curvbench

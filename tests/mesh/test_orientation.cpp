@@ -1,0 +1,190 @@
+// Consistent orientation before estimating (mesh/orientation.h, issue 16).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <utility>
+
+#include "mesh/mesh.h"
+#include "mesh/orientation.h"
+
+namespace curvbench {
+namespace {
+
+// Closed torus (R = 1, r = 0.3), faces counter-clockwise seen from outside.
+Mesh torus(int nu, int nv, Vec3 offset = Vec3::Zero()) {
+  VertexMatrix V(nu * nv, 3);
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      const double u = 2 * std::numbers::pi * i / nu, v = 2 * std::numbers::pi * j / nv;
+      V.row(j * nu + i) = (offset + Vec3((1 + 0.3 * std::cos(v)) * std::cos(u),
+                                         (1 + 0.3 * std::cos(v)) * std::sin(u), 0.3 * std::sin(v)))
+                              .transpose();
+    }
+  FaceMatrix F(2 * nu * nv, 3);
+  const auto id = [&](int i, int j) { return (j % nv) * nu + (i % nu); };
+  for (int j = 0, f = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      F.row(f++) << id(i, j), id(i + 1, j), id(i + 1, j + 1);
+      F.row(f++) << id(i, j), id(i + 1, j + 1), id(i, j + 1);
+    }
+  return Mesh(V, F);
+}
+
+// The same triangle with the same orientation (any starting corner).
+bool same_oriented_face(const FaceMatrix& a, const FaceMatrix& b, int f) {
+  for (int s = 0; s < 3; ++s)
+    if (a(f, 0) == b(f, s) && a(f, 1) == b(f, (s + 1) % 3) && a(f, 2) == b(f, (s + 2) % 3))
+      return true;
+  return false;
+}
+
+FaceMatrix flip_some(const FaceMatrix& F, double fraction, unsigned seed, int& flipped) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  FaceMatrix G = F;
+  flipped = 0;
+  for (int f = 0; f < G.rows(); ++f)
+    if (u(rng) < fraction) {
+      std::swap(G(f, 0), G(f, 2));
+      ++flipped;
+    }
+  return G;
+}
+
+TEST(Orientation, RandomFlipsAreUndoneExactly) {
+  const Mesh t = torus(24, 12);
+  int flipped = 0;
+  const Mesh soup(t.vertices(), flip_some(t.faces(), 0.3, 7, flipped));
+  ASSERT_FALSE(soup.is_consistently_oriented());
+  const OrientationResult a = orient_mesh(soup), b = orient_mesh(t);
+  EXPECT_EQ(a.faces_flipped, flipped);
+  EXPECT_EQ(b.faces_flipped, 0);
+  EXPECT_TRUE(a.mesh.is_consistently_oriented());
+  EXPECT_EQ(a.mesh.faces(), b.mesh.faces());  // identical rows: identical estimates
+  for (int f = 0; f < t.num_faces(); ++f)
+    EXPECT_TRUE(same_oriented_face(t.faces(), a.mesh.faces(), f));
+  EXPECT_EQ(a.mesh.vertices(), t.vertices());
+  EXPECT_EQ(a.patches, 1);
+  EXPECT_EQ(a.closed_patches, 1);
+  EXPECT_EQ(a.vertices_undetermined, 0);
+  EXPECT_EQ(orientation_warnings(b).size(), 0u);
+  ASSERT_EQ(orientation_warnings(a).size(), 1u);
+  EXPECT_NE(
+      orientation_warnings(a)[0].find("reoriented " + std::to_string(flipped) + " of 576 faces"),
+      std::string::npos);
+}
+
+TEST(Orientation, InsideOutClosedMeshIsTurnedOutward) {
+  const Mesh t = torus(16, 8);
+  FaceMatrix G = t.faces();
+  G.col(1).swap(G.col(2));
+  const Mesh inside_out(t.vertices(), G);
+  ASSERT_TRUE(inside_out.is_consistently_oriented());
+  ASSERT_LT(inside_out.signed_volume(), 0.0);
+  const OrientationResult r = orient_mesh(inside_out);
+  EXPECT_EQ(r.faces_flipped, t.num_faces());
+  EXPECT_GT(r.mesh.signed_volume(), 0.0);
+  EXPECT_NEAR(r.mesh.signed_volume(), t.signed_volume(), 1e-12);
+}
+
+TEST(Orientation, TwoComponentsEachOutward) {
+  // Two tori, the second inside out and with random flips: both end outward.
+  const Mesh a = torus(12, 6), b = torus(12, 6, Vec3(5, 0, 0));
+  VertexMatrix V(a.num_vertices() + b.num_vertices(), 3);
+  V << a.vertices(), b.vertices();
+  FaceMatrix Fb = b.faces().array() + a.num_vertices();
+  Fb.col(1).swap(Fb.col(2));
+  int flipped = 0;
+  Fb = flip_some(Fb, 0.2, 3, flipped);
+  FaceMatrix F(a.num_faces() + b.num_faces(), 3);
+  F << a.faces(), Fb;
+  const OrientationResult r = orient_mesh(Mesh(V, F));
+  EXPECT_EQ(r.patches, 2);
+  EXPECT_EQ(r.closed_patches, 2);
+  EXPECT_NEAR(r.mesh.signed_volume(), a.signed_volume() + b.signed_volume(), 1e-12);
+}
+
+TEST(Orientation, OpenPatchKeepsTheMajorityOrientation) {
+  // A strip (open): 1 of its faces flipped comes back; all but 1 flipped: the strip is reversed
+  // to the majority, i.e. only the odd face changes.
+  VertexMatrix V(8, 3);
+  for (int i = 0; i < 4; ++i) {
+    V.row(2 * i) << i, 0, 0;
+    V.row(2 * i + 1) << i, 1, 0;
+  }
+  FaceMatrix F(6, 3);
+  for (int i = 0; i < 3; ++i) {
+    F.row(2 * i) << 2 * i, 2 * i + 2, 2 * i + 3;
+    F.row(2 * i + 1) << 2 * i, 2 * i + 3, 2 * i + 1;
+  }
+  FaceMatrix G = F;
+  std::swap(G(2, 1), G(2, 2));
+  OrientationResult r = orient_mesh(Mesh(V, G));
+  EXPECT_EQ(r.faces_flipped, 1);
+  for (int f = 0; f < 6; ++f) EXPECT_TRUE(same_oriented_face(F, r.mesh.faces(), f));
+  G.col(1).swap(G.col(2));
+  r = orient_mesh(Mesh(V, G));
+  EXPECT_EQ(r.faces_flipped, 1);
+  for (int f = 0; f < 6; ++f) EXPECT_FALSE(same_oriented_face(F, r.mesh.faces(), f));
+  EXPECT_EQ(r.closed_patches, 0);
+  EXPECT_EQ(r.vertices_undetermined, 0);
+}
+
+TEST(Orientation, MoebiusStripSignIsUndetermined) {
+  // A Moebius strip (3 rows across, 30 around) and, in the same file, a separate square.
+  const int nu = 30;
+  VertexMatrix V(3 * nu + 4, 3);
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const double u = 2 * std::numbers::pi * i / nu, t = 0.3 * (j - 1);
+      V.row(3 * i + j) << (1 + t * std::cos(u / 2)) * std::cos(u),
+          (1 + t * std::cos(u / 2)) * std::sin(u), t * std::sin(u / 2);
+    }
+  V.row(3 * nu) << 5, 0, 0;
+  V.row(3 * nu + 1) << 6, 0, 0;
+  V.row(3 * nu + 2) << 6, 1, 0;
+  V.row(3 * nu + 3) << 5, 1, 0;
+  FaceMatrix F(4 * nu + 2, 3);
+  int f = 0;
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < 2; ++j) {
+      const int a = 3 * i + j, b = 3 * i + j + 1;
+      // The next column; across the seam (i = nu - 1) the strip comes back upside down.
+      const int c = i + 1 < nu ? 3 * (i + 1) + j : 2 - j;
+      const int d = i + 1 < nu ? 3 * (i + 1) + j + 1 : 1 - j;
+      F.row(f++) << a, c, d;
+      F.row(f++) << a, d, b;
+    }
+  F.row(f++) << 3 * nu, 3 * nu + 1, 3 * nu + 2;
+  F.row(f++) << 3 * nu, 3 * nu + 2, 3 * nu + 3;
+  const Mesh mesh(V, F);
+  const OrientationResult r = orient_mesh(mesh);
+  EXPECT_EQ(r.patches, 2);
+  EXPECT_EQ(r.nonorientable_patches, 1);
+  EXPECT_EQ(r.vertices_undetermined, 3 * nu);
+  for (int v = 0; v < 3 * nu; ++v) EXPECT_TRUE(r.sign_undetermined[static_cast<size_t>(v)]);
+  for (int v = 3 * nu; v < 3 * nu + 4; ++v)
+    EXPECT_FALSE(r.sign_undetermined[static_cast<size_t>(v)]);
+  // Consistent everywhere but along one seam of the strip (one edge per row: 2 edges).
+  EXPECT_EQ(r.mesh.num_inconsistent_edges(), 2);
+  const auto w = orientation_warnings(r);
+  ASSERT_FALSE(w.empty());
+  EXPECT_NE(w.back().find("sign_undetermined"), std::string::npos);
+}
+
+TEST(Orientation, NonManifoldEdgeVerticesAreUndetermined) {
+  // Three triangles on one edge (a fin).
+  VertexMatrix V(5, 3);
+  V << 0, 0, 0, 1, 0, 0, 0.5, 1, 0, 0.5, -1, 0, 0.5, 0, 1;
+  FaceMatrix F(3, 3);
+  F << 0, 1, 2, 1, 0, 3, 1, 0, 4;
+  const OrientationResult r = orient_mesh(Mesh(V, F));
+  EXPECT_EQ(r.patches, 3);
+  EXPECT_TRUE(r.sign_undetermined[0] && r.sign_undetermined[1]);
+  EXPECT_FALSE(r.sign_undetermined[2] || r.sign_undetermined[3] || r.sign_undetermined[4]);
+}
+
+}  // namespace
+}  // namespace curvbench

@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# `make realmeshes`: every method at degrees 2-4 (2 threads) on the sample meshes Debian's CGAL
+# ships (package libcgal-demo, data/meshes/ of /usr/share/doc/libcgal-dev/data.tar.gz), and
+# results/REAL_MESHES.md (tools/realmeshes_report.py). The package is fetched at run time with
+# `apt-get download` (needs the Debian archive; `apt-get update` as root if the package lists are
+# missing) into $WORK (default build/realmeshes/, ignored); nothing is committed.
+# Usage: tools/realmeshes.sh BUILD_DIR
+set -euo pipefail
+BUILD=${1:-build}
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
+WORK=${WORK:-$BUILD/realmeshes}
+MESHES=${MESHES:-"bunny00 armadillo refined_elephant fandisk_large ChineseDragon-10kv cheese blade man bear"}
+METHODS=${METHODS:-"lhf-2 lhf-3 lhf-4 lop-2 lop-3 lop-4 xu-2 jet-2 jet-3 jet-4 lscm-2 lscm-3 lscm-4 lscm-fast-2 lscm-fast-3 lscm-fast-4 lscm-cg-2 lscm-cg-3 lscm-cg-4"}
+CB="$BUILD/curvbench"
+mkdir -p "$WORK"
+DATA="$WORK/data/meshes"
+if [ ! -d "$DATA" ]; then
+  echo "realmeshes: fetching libcgal-demo (apt-get download) into $WORK" >&2
+  ( cd "$WORK" && (apt-get download libcgal-demo >/dev/null 2>&1 ||
+      { [ "$(id -u)" = 0 ] && apt-get update >/dev/null && apt-get download libcgal-demo; } ||
+      { echo "realmeshes: cannot download libcgal-demo (run 'apt-get update' as root?)" >&2; exit 2; }) )
+  deb=$(ls "$WORK"/libcgal-demo_*.deb | head -1)
+  dpkg-deb -x "$deb" "$WORK/pkg"
+  tar -xzf "$WORK/pkg/usr/share/doc/libcgal-dev/data.tar.gz" -C "$WORK" data/meshes
+fi
+start=$(date +%s)
+for m in $MESHES; do
+  mesh="$DATA/$m.off"
+  [ -f "$mesh" ] || { echo "realmeshes: $mesh missing" >&2; exit 2; }
+  "$CB" info "$mesh" > "$WORK/$m.info"
+  for method in $METHODS; do
+    echo "realmeshes: $m $method" >&2
+    "$CB" estimate "$mesh" --method "$method" --threads 2 --output "$WORK/$m.$method.csv" \
+      2> "$WORK/$m.$method.log"
+  done
+done
+echo "realmeshes: estimates done in $(( $(date +%s) - start )) s" >&2
+mkdir -p "$ROOT/results"
+/usr/bin/python3 "$ROOT/tools/realmeshes_report.py" "$WORK" "$ROOT/results/REAL_MESHES.md" \
+  --meshes $MESHES --methods $METHODS
+echo "realmeshes: wrote results/REAL_MESHES.md" >&2

@@ -1,0 +1,196 @@
+#!/usr/bin/python3
+"""results/REAL_MESHES.md from the runs of tools/realmeshes.sh (standard library only).
+
+Per mesh: the `curvbench info` counts and defects; per method: time, vertices by status, and the
+agreement of H with the reference method as the median and 99th percentile of
+    d_i = |H_i - H_ref,i| / (|H_ref,i| + median_j |H_ref,j|)
+(one vertex cannot dominate it, unlike a relative L2 norm, which is also given with the share of
+its square that the 10 worst vertices carry); then the worst vertices (largest d over all
+methods) with their local mesh quality: smallest and largest angle of the incident faces, valence,
+and the ratio of the largest to the smallest incident face area.
+"""
+import argparse
+import csv
+import math
+import os
+import re
+import sys
+
+
+def read_off(path):
+    toks = open(path).read().split()
+    assert toks[0].upper().startswith("OFF")
+    nv, nf = int(toks[1]), int(toks[2])
+    p = 4
+    V = [tuple(float(x) for x in toks[p + 3 * i:p + 3 * i + 3]) for i in range(nv)]
+    p += 3 * nv
+    F = []
+    for _ in range(nf):
+        k = int(toks[p])
+        idx = [int(x) for x in toks[p + 1:p + 1 + k]]
+        for j in range(1, k - 1):  # fan, as the reader does
+            F.append((idx[0], idx[j], idx[j + 1]))
+        p += 1 + k
+    return V, F
+
+
+def sub(a, b):
+    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+
+
+def cross(a, b):
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def dot(a, b):
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+def norm(a):
+    return math.sqrt(dot(a, a))
+
+
+def vertex_quality(V, F):
+    """Per vertex: (smallest angle, largest angle) in degrees over incident faces, valence,
+    largest / smallest incident face area (inf if a face has zero area)."""
+    n = len(V)
+    amin = [180.0] * n
+    amax = [0.0] * n
+    val = [0] * n
+    area_lo = [math.inf] * n
+    area_hi = [0.0] * n
+    for f in F:
+        P = [V[i] for i in f]
+        area = 0.5 * norm(cross(sub(P[1], P[0]), sub(P[2], P[0])))
+        angles = []
+        for k in range(3):
+            e1, e2 = sub(P[(k + 1) % 3], P[k]), sub(P[(k + 2) % 3], P[k])
+            angles.append(math.degrees(math.atan2(norm(cross(e1, e2)), dot(e1, e2))))
+        for k, v in enumerate(f):
+            val[v] += 1
+            amin[v] = min(amin[v], min(angles))
+            amax[v] = max(amax[v], max(angles))
+            area_lo[v] = min(area_lo[v], area)
+            area_hi[v] = max(area_hi[v], area)
+    ratio = [(area_hi[v] / area_lo[v]) if area_lo[v] > 0 else math.inf for v in range(n)]
+    return amin, amax, val, ratio
+
+
+def read_estimate(path):
+    H, status = [], []
+    with open(path) as f:
+        for row in csv.DictReader(f):
+            H.append(float(row["H"]))
+            status.append(row["status"])
+    return H, status
+
+
+def median(xs):
+    s = sorted(xs)
+    if not s:
+        return math.nan
+    m = len(s) // 2
+    return s[m] if len(s) % 2 else 0.5 * (s[m - 1] + s[m])
+
+
+def percentile(xs, q):
+    s = sorted(xs)
+    if not s:
+        return math.nan
+    return s[min(len(s) - 1, int(math.ceil(q / 100.0 * len(s))) - 1)]
+
+
+def agreement(H, Href):
+    """d_i as in the module comment, over vertices where both are finite; and relative L2."""
+    scale = median([abs(h) for h in Href if math.isfinite(h)])
+    d = {}
+    for i, (h, r) in enumerate(zip(H, Href)):
+        if math.isfinite(h) and math.isfinite(r):
+            d[i] = abs(h - r) / (abs(r) + scale)
+    num = [(H[i] - Href[i]) ** 2 for i in d]
+    den = sum(Href[i] ** 2 for i in d)
+    l2 = math.sqrt(sum(num) / den) if den > 0 else math.nan
+    top10 = sum(sorted(num, reverse=True)[:10]) / sum(num) if sum(num) > 0 else math.nan
+    return d, l2, top10
+
+
+def summary_time(log):
+    m = re.search(r" in ([0-9.]+) s ", open(log).read())
+    return float(m.group(1)) if m else math.nan
+
+
+def info_lines(path):
+    keep = ("vertices", "faces", "boundary edges", "non-manifold edges", "non-manifold vertices",
+            "zero-area faces", "duplicate vertices", "components", "euler characteristic",
+            "mean edge length", "orientation")
+    out = []
+    for line in open(path):
+        key = line.split(":")[0].strip()
+        if key in keep:
+            out.append("%s: %s" % (key, line.split(":", 1)[1].strip()))
+    return out
+
+
+STATUSES = ["ok", "degree_reduced", "disk_cut", "sign_undetermined", "failed", "excluded"]
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__)
+    ap.add_argument("work")
+    ap.add_argument("output")
+    ap.add_argument("--meshes", nargs="+", required=True)
+    ap.add_argument("--methods", nargs="+", required=True)
+    ap.add_argument("--reference", default="lhf-4")
+    ap.add_argument("--worst", type=int, default=5)
+    a = ap.parse_args()
+    out = []
+    out.append("# Real meshes\n")
+    out.append("Generated by `make realmeshes` (tools/realmeshes.sh, tools/realmeshes_report.py) "
+               "on the sample meshes of Debian's `libcgal-demo`; every method at degrees 2-4 with "
+               "2 threads. Agreement: d = |H - H_ref| / (|H_ref| + median |H_ref|) against "
+               "**%s** (the most accurate method of the convergence studies at this degree); "
+               "rel. L2 = ||H - H_ref||_2 / ||H_ref||_2, with the share of its square carried by "
+               "the 10 worst vertices. Timings are wall times on the machine that ran it.\n"
+               % a.reference.upper())
+    for m in a.meshes:
+        w = a.work
+        V, F = read_off(os.path.join(w, "data", "meshes", m + ".off"))
+        amin, amax, val, ratio = vertex_quality(V, F)
+        ref_path = os.path.join(w, "%s.%s.csv" % (m, a.reference))
+        Href, _ = read_estimate(ref_path)
+        out.append("\n## %s\n" % m)
+        out.append("`info`: " + "; ".join(info_lines(os.path.join(w, m + ".info"))) + "\n")
+        out.append("| method | time (s) | " + " | ".join(STATUSES) +
+                   " | median d | p99 d | max d | rel. L2 | top-10 share |")
+        out.append("|---|---:|" + "---:|" * len(STATUSES) + "---:|---:|---:|---:|---:|")
+        worst = {}
+        for method in a.methods:
+            H, status = read_estimate(os.path.join(w, "%s.%s.csv" % (m, method)))
+            t = summary_time(os.path.join(w, "%s.%s.log" % (m, method)))
+            counts = [sum(1 for s in status if s == k) for k in STATUSES]
+            d, l2, top10 = agreement(H, Href)
+            ds = list(d.values())
+            out.append("| %s | %.2f | %s | %.3g | %.3g | %.3g | %.3g | %.0f%% |" % (
+                method.upper(), t, " | ".join(str(c) for c in counts), median(ds),
+                percentile(ds, 99), max(ds) if ds else math.nan, l2, 100 * top10))
+            if method != a.reference:
+                for i, x in d.items():
+                    if x > worst.get(i, (0, ""))[0]:
+                        worst[i] = (x, method, H[i])
+        out.append("\nWorst vertices (largest d over all methods):\n")
+        out.append("| vertex | d | method | H | H_ref | smallest angle | largest angle | valence | "
+                   "area ratio |")
+        out.append("|---:|---:|---|---:|---:|---:|---:|---:|---:|")
+        for i, (x, method, h) in sorted(worst.items(), key=lambda kv: -kv[1][0])[:a.worst]:
+            out.append("| %d | %.3g | %s | %.4g | %.4g | %.2f | %.2f | %d | %.3g |" % (
+                i, x, method.upper(), h, Href[i], amin[i], amax[i], val[i], ratio[i]))
+        # Mesh quality overall, for comparison with the worst vertices.
+        out.append("\nWhole mesh: median smallest angle %.1f deg, vertices with an angle < 1 deg: "
+                   "%d, with an angle > 170 deg: %d.\n" % (
+                       median(amin), sum(1 for x in amin if x < 1.0),
+                       sum(1 for x in amax if x > 170.0)))
+    open(a.output, "w").write("\n".join(out) + "\n")
+
+
+if __name__ == "__main__":
+    sys.exit(main())
