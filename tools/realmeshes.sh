@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `make realmeshes`: every method at degrees 2-4 (2 threads) on the sample meshes Debian's CGAL
+# `make realmeshes`: every method (fits at degrees 2-4; the degree-free operators once; 2 threads) on the sample meshes Debian's CGAL
 # ships (package libcgal-demo, data/meshes/ of /usr/share/doc/libcgal-dev/data.tar.gz), and
 # results/REAL_MESHES.md (tools/realmeshes_report.py). The package is fetched at run time with
 # `apt-get download` (needs the Debian archive; `apt-get update` as root if the package lists are
@@ -10,7 +10,7 @@ BUILD=${1:-build}
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 WORK=${WORK:-$BUILD/realmeshes}
 MESHES=${MESHES:-"bunny00 armadillo refined_elephant fandisk_large ChineseDragon-10kv cheese blade man bear"}
-METHODS=${METHODS:-"lhf-2 lhf-3 lhf-4 lop-2 lop-3 lop-4 xu-2 jet-2 jet-3 jet-4 lscm-2 lscm-3 lscm-4 lscm-fast-2 lscm-fast-3 lscm-fast-4 lscm-cg-2 lscm-cg-3 lscm-cg-4"}
+METHODS=${METHODS:-"lhf-2 lhf-3 lhf-4 lop-2 lop-3 lop-4 xu-2 jet-2 jet-3 jet-4 lscm-2 lscm-3 lscm-4 lscm-fast-2 lscm-fast-3 lscm-fast-4 lscm-cg-2 lscm-cg-3 lscm-cg-4 meyer taubin rusinkiewicz quadric goldfeather normal-cycle"}
 CB="$BUILD/curvbench"
 mkdir -p "$WORK"
 DATA="$WORK/data/meshes"
