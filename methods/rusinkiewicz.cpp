@@ -117,17 +117,17 @@ class RusinkiewiczEstimator final : public OperatorEstimator {
     const int points = static_cast<int>(faces.size());
     const auto& data = static_cast<const RusinkiewiczData&>(*ctx.data);
     const Vec3 n = data.normal(ctx, v);
-    double total = 0.0;
-    for (int f : faces) total += data.faces.mixed_area(f, corner_of(mesh, f, v));
-    if (faces.empty() || !(total > 0.0)) {
+    if (faces.empty()) {
       set_failed(1.0, points, out);
       return;
     }
     const LocalFrame frame = make_local_frame(n);
-    double w11 = 0.0, w12 = 0.0, w22 = 0.0;
+    // One pass: the weighted sums, divided by the total weight at the end.
+    double total = 0.0, w11 = 0.0, w12 = 0.0, w22 = 0.0;
     for (int f : faces) {
       const FaceTensor& ft = data.tensors[static_cast<size_t>(f)];
-      const double weight = data.faces.mixed_area(f, corner_of(mesh, f, v)) / total;
+      const double weight = data.faces.mixed_area(f, corner_of(mesh, f, v));
+      total += weight;
       // The face's axes t, b rotated about m x n until m coincides with n (§3.2): the rotation
       // R taking m to n, c = m . n, is R x = x - (m + n) (n . x) / (1 + c) for x orthogonal to
       // m (Rodrigues), so t_i . R x = t_i . x - (t_i . m)(n . x) / (1 + c) (t_i . n = 0). Opposite
@@ -151,6 +151,13 @@ class RusinkiewiczEstimator final : public OperatorEstimator {
       w12 += weight * (ft.A * u1 * u2 + ft.B * (u1 * v2 + u2 * v1) + ft.C * v1 * v2);
       w22 += weight * (ft.A * u2 * u2 + 2.0 * ft.B * u2 * v2 + ft.C * v2 * v2);
     }
+    if (!(total > 0.0)) {
+      set_failed(1.0, points, out);
+      return;
+    }
+    w11 /= total;
+    w12 /= total;
+    w22 /= total;
     Curvature c;
     c.normal = n;
     principal_from_symmetric(w11, w12, w22, frame.t1, frame.t2, c.k1, c.k2, c.d1, c.d2);
