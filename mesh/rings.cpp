@@ -111,6 +111,14 @@ void RingCollector::collect(int v, double ring) {
   while (half_steps_ < target) grow();
 }
 
+void RingCollector::collect_integer(int v, int k) {
+  if (k < 1) throw UsageError("ring size must be at least 1, got " + std::to_string(k));
+  begin(v);
+  // F_{j+1} = F_j plus the faces of V_j \ V_{j-1}: the half rings F_{j+1/2} lie in F_{j+1}.
+  for (int j = 0; j < k; ++j) integer_step();
+  half_steps_ = 2 * k;
+}
+
 double RingCollector::collect_at_least(int v, double r0, int min_neighbours, double max_ring) {
   collect(v, r0);
   const long max_steps = std::lround(2.0 * max_ring);

@@ -41,6 +41,10 @@ class RingCollector {
   /// Afterwards neighbours() holds V_r without v, faces() holds F_r.
   void collect(int v, double ring);
 
+  /// Collects the integer k-ring of v (k >= 1): the same sets V_k, F_k as collect(v, k), without
+  /// the half steps in between (cheaper); the discovery order differs. Throws UsageError for
+  /// k < 1.
+  void collect_integer(int v, int k);
   /// Collects ring r0 and grows it by half rings while fewer than min_neighbours neighbours are
   /// found, until max_ring is reached or the ring stops growing (the component is exhausted).
   /// Returns the ring actually collected.

@@ -36,7 +36,8 @@
 // deficit and cotangent sum measure the boundary curve as well), and it gives no boundary
 // variant: status excluded, values NaN. A vertex whose tensor fit is singular or whose values are
 // not finite (degenerate faces) is failed.
-// Cost: O(1) per face in prepare(), two passes over the incident faces per vertex.
+// Cost: O(1) per face in prepare() (no trigonometry), two passes over the incident faces and
+// one atan2 per vertex.
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -76,13 +77,23 @@ class MeyerEstimator final : public OperatorEstimator {
     const FaceGeometry& g = data.faces;
     const Vec3 n = data.normal(ctx, v);
     const Vec3 xi = mesh.position(v);
-    double area = 0.0, angles = 0.0;
+    double area = 0.0;
     Vec3 k_vec = Vec3::Zero();
+    // The angle sum as the argument of prod_f (cot theta_f + i) (each factor has argument
+    // theta_f in (0, pi)): one atan2 per vertex instead of one per corner. `turns` counts the
+    // passes of the running argument through pi; the sum is 2 pi turns + arg(z).
+    double zr = 1.0, zi = 0.0;
+    int turns = 0;
     for (int f : faces) {
       const int i = corner_of(mesh, f, v);
       const int j = (i + 1) % 3, k = (i + 2) % 3;
       area += g.mixed_area(f, i);
-      angles += g.angle(f, i);
+      const double cot = g.cot(f, i);
+      const double r = zr * cot - zi, t = zr + zi * cot;
+      const double scale = 1.0 / (std::abs(r) + std::abs(t));  // keeps |z| near 1
+      if (zi > 0.0 && t < 0.0) ++turns;
+      zr = r * scale;
+      zi = t * scale;
       k_vec += g.cot(f, k) * (xi - mesh.position(mesh.face_vertex(f, j))) +
                g.cot(f, j) * (xi - mesh.position(mesh.face_vertex(f, k)));
     }
@@ -90,7 +101,9 @@ class MeyerEstimator final : public OperatorEstimator {
     Curvature c;
     c.normal = n;
     c.H = -0.5 * k_vec.dot(n);
-    c.K = (2.0 * std::numbers::pi - angles) / area;
+    // Eq. 9: 2 pi - sum theta = 2 pi (1 - turns) - arg(z), accurate near a flat vertex (turns = 1,
+    // arg(z) small) where the sum of the angles would cancel.
+    c.K = (2.0 * std::numbers::pi * (1 - turns) - std::atan2(zi, zr)) / area;
     const double disc = std::sqrt(std::max(0.0, c.H * c.H - c.K));
     c.k1 = c.H + disc;
     c.k2 = c.H - disc;

@@ -26,7 +26,8 @@
 // al. 2003 ("Anisotropic polygonal remeshing"), the ball one the paper's.
 // Boundary: an edge of B without a second face has no dihedral angle; a vertex whose region
 // reaches the boundary is excluded (values NaN). Non-finite values: failed.
-// Cost: 1-ring, O(1) per incident face; ball, O(faces in the ball).
+// Cost: prepare(), one atan2 per face edge; 1-ring, O(1) per incident face; ball, O(faces in
+// the ball).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -56,6 +57,12 @@ struct BallWorkspace final : Workspace {
   std::vector<int> queue;
 };
 
+/// Per-mesh data: the signed dihedral angle of every face edge, computed once per mesh (each
+/// interior edge is visited from 2 faces at each of 4 vertices by estimate()).
+struct NormalCycleData final : OperatorMeshData {
+  CornerMatrix beta;  ///< m x 3: beta(f, k) of edge k (F(f,k) -> F(f,k+1)); NaN on the boundary
+};
+
 Vec3 face_normal(const Mesh& mesh, int f) {
   const Vec3 a = mesh.position(mesh.face_vertex(f, 0));
   return (mesh.position(mesh.face_vertex(f, 1)) - a)
@@ -64,11 +71,14 @@ Vec3 face_normal(const Mesh& mesh, int f) {
 }
 
 // Signed dihedral angle of edge k of face f (f's orientation), positive when convex; NaN if the
-// edge has no second face.
-double dihedral(const Mesh& mesh, int f, int k, const Vec3& edge_unit) {
+// edge has no second face. `normals`: the unit face normals.
+double dihedral(const Mesh& mesh, const VertexMatrix& normals, int f, int k) {
   const int g = mesh.face_neighbor(f, k);
   if (g < 0) return std::numeric_limits<double>::quiet_NaN();
-  const Vec3 nf = face_normal(mesh, f), ng = face_normal(mesh, g);
+  const Vec3 a = mesh.position(mesh.face_vertex(f, k));
+  const Vec3 e = mesh.position(mesh.face_vertex(f, (k + 1) % 3)) - a;
+  const Vec3 edge_unit = e / e.norm();
+  const Vec3 nf = normals.row(f).transpose(), ng = normals.row(g).transpose();
   return std::atan2(nf.cross(ng).dot(edge_unit), nf.dot(ng));
 }
 
@@ -107,6 +117,25 @@ class NormalCycleEstimator final : public OperatorEstimator {
     return std::make_unique<Workspace>();
   }
 
+  std::unique_ptr<MeshData> prepare(const Mesh& mesh, const VertexMatrix&,
+                                    int threads) const override {
+    auto data = std::make_unique<NormalCycleData>();
+    fill_mesh_data(mesh, threads, *data);
+    const int m = mesh.num_faces();
+    VertexMatrix normals(m, 3);
+    data->beta.resize(m, 3);
+    const int t = threads > 0 ? threads : 1;
+#pragma omp parallel num_threads(t)
+    {
+#pragma omp for schedule(static)
+      for (int f = 0; f < m; ++f) normals.row(f) = face_normal(mesh, f).transpose();
+#pragma omp for schedule(static)
+      for (int f = 0; f < m; ++f)
+        for (int k = 0; k < 3; ++k) data->beta(f, k) = dihedral(mesh, normals, f, k);
+    }
+    return data;
+  }
+
   void estimate(const MeshContext& ctx, int v, Workspace& base,
                 VertexEstimate& out) const override {
     const Mesh& mesh = ctx.mesh;
@@ -115,7 +144,8 @@ class NormalCycleEstimator final : public OperatorEstimator {
       set_failed(1.0, 0, out);
       return;
     }
-    const Vec3 n = mesh_data(ctx).normal(ctx, v);
+    const auto& data = static_cast<const NormalCycleData&>(*ctx.data);
+    const Vec3 n = data.normal(ctx, v);
     const LocalFrame frame = make_local_frame(n);
     double t11 = 0.0, t12 = 0.0, t22 = 0.0, area = 0.0;
     bool boundary = false;
@@ -142,11 +172,11 @@ class NormalCycleEstimator final : public OperatorEstimator {
         // The edge v -> x1 (edge i of f): each edge at v is edge "from v" of exactly one face;
         // the edge x2 -> v of a boundary fan has no second face.
         const double l01 = (x1 - x0).norm();
-        add((x1 - x0) / l01, dihedral(mesh, f, i, (x1 - x0) / l01), l01);
+        add((x1 - x0) / l01, data.beta(f, i), l01);
         if (mesh.face_neighbor(f, (i + 2) % 3) < 0) boundary = true;
         // The link edge x1 -> x2 (edge i+1 of f), half its length.
         const double l12 = (x2 - x1).norm();
-        add((x2 - x1) / l12, dihedral(mesh, f, (i + 1) % 3, (x2 - x1) / l12), 0.5 * l12);
+        add((x2 - x1) / l12, data.beta(f, (i + 1) % 3), 0.5 * l12);
       }
     } else {
       auto& ws = static_cast<BallWorkspace&>(base);
@@ -171,7 +201,7 @@ class NormalCycleEstimator final : public OperatorEstimator {
             boundary = true;
             continue;
           }
-          if (f < g) add((b - a).normalized(), dihedral(mesh, f, k, (b - a).normalized()), inside);
+          if (f < g) add((b - a).normalized(), data.beta(f, k), inside);
           if (ws.stamp[static_cast<size_t>(g)] != ws.current) {
             ws.stamp[static_cast<size_t>(g)] = ws.current;
             ws.queue.push_back(g);

@@ -33,7 +33,7 @@ std::unique_ptr<Workspace> OperatorEstimator::make_workspace(const Mesh&) const 
 
 void OperatorEstimator::fill_mesh_data(const Mesh& mesh, int threads,
                                        OperatorMeshData& data) const {
-  if (needs_face_geometry_) data.faces = face_geometry(mesh, threads);
+  if (needs_face_geometry_) data.faces = face_geometry(mesh, threads, /*angles=*/false);
   // The area-weighted normals are MeshContext::approx_normals already.
   if (normal_weighting() != VertexNormals::area)
     data.normals = weighted_vertex_normals(mesh, normal_weighting(), threads);

@@ -46,9 +46,13 @@ constexpr int kMinPoints = 6;  // libigl: at least 6 points, centre included
 constexpr double kDefaultRing = 5.0;
 
 struct QuadricWorkspace final : Workspace {
-  explicit QuadricWorkspace(const Mesh& mesh) : rings(mesh) { keep.reserve(256); }
+  explicit QuadricWorkspace(const Mesh& mesh) : rings(mesh) {
+    keep.reserve(256);
+    local.reserve(3 * 256);
+  }
   RingCollector rings;
   std::vector<int> keep;
+  std::vector<double> local;  ///< (u, v, w) of each kept point, 3 per point
 };
 
 class QuadricEstimator final : public OperatorEstimator {
@@ -76,47 +80,47 @@ class QuadricEstimator final : public OperatorEstimator {
     const Mesh& mesh = ctx.mesh;
     const OperatorMeshData& data = mesh_data(ctx);
     const double ring = options_.ring > 0.0 ? options_.ring : kDefaultRing;
-    ws.rings.collect(v, ring);
+    ws.rings.collect_integer(v, static_cast<int>(ring));
     const auto nb = ws.rings.neighbours();
     if (1 + static_cast<int>(nb.size()) < kMinPoints) {
       set_failed(ring, 1 + static_cast<int>(nb.size()), out);
       return;
     }
-    const Vec3 n = data.normal(ctx, v);
+    const VertexMatrix& normals = data.normals.rows() > 0 ? data.normals : ctx.approx_normals;
+    const Vec3 n = normals.row(v).transpose();
     ws.keep.clear();
     for (int w : nb)
-      if (data.normal(ctx, w).dot(n) > 0.0) ws.keep.push_back(w);
+      if (normals.row(w).dot(n) > 0.0) ws.keep.push_back(w);
     if (1 + static_cast<int>(ws.keep.size()) < kMinPoints) ws.keep.assign(nb.begin(), nb.end());
     const LocalFrame frame = make_local_frame(n);
     const Vec3 x0 = mesh.position(v);
-    // RMS tangent distance: the scale of the (u, v) coordinates.
+    // Local coordinates (u, v, w) of the points, once; RMS tangent distance s: the scale of the
+    // (u, v) coordinates.
+    const size_t count = ws.keep.size();
+    ws.local.resize(3 * count);
     double s2 = 0.0;
-    for (int w : ws.keep) {
-      const Vec3 d = mesh.position(w) - x0;
+    for (size_t i = 0; i < count; ++i) {
+      const Vec3 d = mesh.position(ws.keep[i]) - x0;
       const double u = d.dot(frame.t1), t = d.dot(frame.t2);
+      ws.local[3 * i] = u;
+      ws.local[3 * i + 1] = t;
+      ws.local[3 * i + 2] = d.dot(frame.m);
       s2 += u * u + t * t;
     }
-    const double s = std::sqrt(s2 / static_cast<double>(ws.keep.size()));
-    const int points = 1 + static_cast<int>(ws.keep.size());
+    const double s = std::sqrt(s2 / static_cast<double>(count));
+    const int points = 1 + static_cast<int>(count);
     if (!(s > 0.0) || !std::isfinite(s)) {
       set_failed(ring, points, out);
       return;
     }
     const bool constant = options_.quadric_constant;
-    Eigen::Matrix<double, 6, 6> ata = Eigen::Matrix<double, 6, 6>::Zero();
-    Eigen::Matrix<double, 6, 1> atb = Eigen::Matrix<double, 6, 1>::Zero();
-    const auto add_row = [&](double u, double t, double w) {
-      Eigen::Matrix<double, 6, 1> row;
-      row << u * u, u * t, t * t, u, t, 1.0;
-      ata.noalias() += row * row.transpose();
-      atb.noalias() += w * row;
-    };
-    add_row(0.0, 0.0, 0.0);  // the centre (libigl's k-ring includes it)
     const double inv = 1.0 / s;
-    for (int w : ws.keep) {
-      const Vec3 d = (mesh.position(w) - x0) * inv;
-      add_row(d.dot(frame.t1), d.dot(frame.t2), d.dot(frame.m));
-    }
+    Eigen::Matrix<double, 6, 6> ata;
+    Eigen::Matrix<double, 6, 1> atb;
+    if (constant)
+      normal_equations<6>(ws.local, inv, ata, atb);
+    else
+      normal_equations<5>(ws.local, inv, ata, atb);
     Eigen::Matrix<double, 6, 1> coef = Eigen::Matrix<double, 6, 1>::Zero();
     if (constant) {
       const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> ldlt(ata);
@@ -141,6 +145,33 @@ class QuadricEstimator final : public OperatorEstimator {
   }
 
  private:
+  // The normal equations of the rows (u^2, u v, v^2, u, v[, 1]) . coef = w over the points
+  // (u, v, w) = inv * local[3i .. 3i+2] and the centre (0, 0, 0), in one pass: the upper
+  // triangle of the N x N matrix is accumulated, then mirrored.
+  template <int N>
+  static void normal_equations(const std::vector<double>& local, double inv,
+                               Eigen::Matrix<double, 6, 6>& ata, Eigen::Matrix<double, 6, 1>& atb) {
+    double a[N * (N + 1) / 2] = {};
+    double b[N] = {};
+    for (size_t i = 0; i < local.size(); i += 3) {
+      const double u = local[i] * inv, t = local[i + 1] * inv, w = local[i + 2] * inv;
+      const double row[6] = {u * u, u * t, t * t, u, t, 1.0};
+      int k = 0;
+      for (int r = 0; r < N; ++r) {
+        for (int c = r; c < N; ++c) a[k++] += row[r] * row[c];
+        b[r] += w * row[r];
+      }
+    }
+    if (N == 6) a[N * (N + 1) / 2 - 1] += 1.0;  // the centre row (0, 0, 0, 0, 0, 1), w = 0
+    ata.setZero();
+    atb.setZero();
+    int k = 0;
+    for (int r = 0; r < N; ++r) {
+      for (int c = r; c < N; ++c) ata(r, c) = ata(c, r) = a[k++];
+      atb(r) = b[r];
+    }
+  }
+
   // Full rank: every pivot of the LDLT is clearly positive.
   template <class D>
   static bool solvable(const D& d) {

@@ -25,13 +25,12 @@
 // Boundary vertices: the method is a weighted average over the incident faces and needs no
 // full 1-ring; a boundary vertex averages the faces it has (as trimesh2 does), status ok.
 // Failed: a vertex without faces, zero total area, or non-finite values.
-// Cost: O(1) per face in prepare() (a 3x3 solve), O(1) per incident face per vertex.
+// Cost: O(1) per face in prepare() (a 3x3 solve in closed form), O(1) per incident face per
+// vertex (dot products, no rotation matrix).
 #include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
-
-#include <Eigen/Cholesky>
 
 #include "core/shape_operator.h"
 #include "methods/local_frame.h"
@@ -58,39 +57,31 @@ FaceTensor face_tensor(const Vec3 x[3], const Vec3 n[3]) {
   ft.t = e[0].normalized();
   ft.m = e[0].cross(e[1]).normalized();
   ft.b = ft.m.cross(ft.t);
-  Mat3 w = Mat3::Zero();
+  // Normal equations M (A, B, C)^T = rhs with M = [p q 0; q p+r q; 0 q r], p = sum u^2,
+  // q = sum u v, r = sum v^2: det M = (p + r)(p r - q^2) (a Gram determinant of the edges,
+  // positive on a non-degenerate face); solved by the adjugate.
+  double p = 0.0, q = 0.0, r = 0.0;
   Vec3 rhs = Vec3::Zero();
   for (int j = 0; j < 3; ++j) {
     const double u = e[j].dot(ft.t), v = e[j].dot(ft.b);
     const Vec3 dn = n[(j + 2) % 3] - n[(j + 1) % 3];
     const double dnu = dn.dot(ft.t), dnv = dn.dot(ft.b);
     // Rows (u, v, 0) . (A, B, C) = dnu and (0, u, v) . (A, B, C) = dnv.
-    w(0, 0) += u * u;
-    w(0, 1) += u * v;
-    w(1, 1) += u * u + v * v;
-    w(1, 2) += u * v;
-    w(2, 2) += v * v;
+    p += u * u;
+    q += u * v;
+    r += v * v;
     rhs(0) += dnu * u;
     rhs(1) += dnu * v + dnv * u;
     rhs(2) += dnv * v;
   }
-  w(1, 0) = w(0, 1);
-  w(2, 1) = w(1, 2);
-  const Vec3 ii = w.ldlt().solve(rhs);
+  const double s = p + r, inv_det = 1.0 / (s * (p * r - q * q));
+  const Vec3 ii = inv_det * Vec3((s * r - q * q) * rhs(0) - q * r * rhs(1) + q * q * rhs(2),
+                                 -q * r * rhs(0) + p * r * rhs(1) - p * q * rhs(2),
+                                 q * q * rhs(0) - p * q * rhs(1) + (p * s - q * q) * rhs(2));
   ft.A = -ii(0);
   ft.B = -ii(1);
   ft.C = -ii(2);
   return ft;
-}
-
-// Rotates the vector x by the rotation that takes the unit vector a to the unit vector b about
-// a x b (Rodrigues); opposite a and b: -x (the tensor's quadratic form is unchanged).
-Vec3 rotate(const Vec3& x, const Vec3& a, const Vec3& b) {
-  const double c = a.dot(b);
-  if (c <= -1.0 + 1e-12) return -x;
-  const Vec3 k = a.cross(b);
-  const Vec3 kx = k.cross(x);
-  return x + kx + k.cross(kx) / (1.0 + c);
 }
 
 class RusinkiewiczEstimator final : public OperatorEstimator {
@@ -126,24 +117,47 @@ class RusinkiewiczEstimator final : public OperatorEstimator {
     const int points = static_cast<int>(faces.size());
     const auto& data = static_cast<const RusinkiewiczData&>(*ctx.data);
     const Vec3 n = data.normal(ctx, v);
-    double total = 0.0;
-    for (int f : faces) total += data.faces.mixed_area(f, corner_of(mesh, f, v));
-    if (faces.empty() || !(total > 0.0)) {
+    if (faces.empty()) {
       set_failed(1.0, points, out);
       return;
     }
     const LocalFrame frame = make_local_frame(n);
-    double w11 = 0.0, w12 = 0.0, w22 = 0.0;
+    // One pass: the weighted sums, divided by the total weight at the end.
+    double total = 0.0, w11 = 0.0, w12 = 0.0, w22 = 0.0;
     for (int f : faces) {
       const FaceTensor& ft = data.tensors[static_cast<size_t>(f)];
-      const double weight = data.faces.mixed_area(f, corner_of(mesh, f, v)) / total;
-      const Vec3 ru = rotate(ft.t, ft.m, n), rv = rotate(ft.b, ft.m, n);
-      const double u1 = frame.t1.dot(ru), v1 = frame.t1.dot(rv);
-      const double u2 = frame.t2.dot(ru), v2 = frame.t2.dot(rv);
+      const double weight = data.faces.mixed_area(f, corner_of(mesh, f, v));
+      total += weight;
+      // The face's axes t, b rotated about m x n until m coincides with n (§3.2): the rotation
+      // R taking m to n, c = m . n, is R x = x - (m + n) (n . x) / (1 + c) for x orthogonal to
+      // m (Rodrigues), so t_i . R x = t_i . x - (t_i . m)(n . x) / (1 + c) (t_i . n = 0). Opposite
+      // normals: R x = -x (the quadratic form is unchanged).
+      const double c = ft.m.dot(n);
+      double u1, v1, u2, v2;
+      if (c <= -1.0 + 1e-12) {
+        u1 = -frame.t1.dot(ft.t);
+        v1 = -frame.t1.dot(ft.b);
+        u2 = -frame.t2.dot(ft.t);
+        v2 = -frame.t2.dot(ft.b);
+      } else {
+        const double nt = n.dot(ft.t) / (1.0 + c), nb = n.dot(ft.b) / (1.0 + c);
+        const double m1 = frame.t1.dot(ft.m), m2 = frame.t2.dot(ft.m);
+        u1 = frame.t1.dot(ft.t) - m1 * nt;
+        v1 = frame.t1.dot(ft.b) - m1 * nb;
+        u2 = frame.t2.dot(ft.t) - m2 * nt;
+        v2 = frame.t2.dot(ft.b) - m2 * nb;
+      }
       w11 += weight * (ft.A * u1 * u1 + 2.0 * ft.B * u1 * v1 + ft.C * v1 * v1);
       w12 += weight * (ft.A * u1 * u2 + ft.B * (u1 * v2 + u2 * v1) + ft.C * v1 * v2);
       w22 += weight * (ft.A * u2 * u2 + 2.0 * ft.B * u2 * v2 + ft.C * v2 * v2);
     }
+    if (!(total > 0.0)) {
+      set_failed(1.0, points, out);
+      return;
+    }
+    w11 /= total;
+    w12 /= total;
+    w22 /= total;
     Curvature c;
     c.normal = n;
     principal_from_symmetric(w11, w12, w22, frame.t1, frame.t2, c.k1, c.k2, c.d1, c.d2);

@@ -22,23 +22,25 @@ VertexMatrix weighted_vertex_normals(const Mesh& mesh, VertexNormals weighting, 
       const Vec3 a = mesh.position(mesh.face_vertex(f, (k + 1) % 3)) - x0;
       const Vec3 b = mesh.position(mesh.face_vertex(f, (k + 2) % 3)) - x0;
       const Vec3 cross = a.cross(b);  // 2 area(f) times the unit face normal
-      const double len = cross.norm();
-      if (!(len > 0.0)) continue;
-      double w = 0.0;
+      if (!(cross.squaredNorm() > 0.0)) continue;
+      // w / |cross| times cross; area and max need no square root.
+      double w_over_len = 0.0;
       switch (weighting) {
         case VertexNormals::area:
-          w = 0.5 * len;
+          w_over_len = 0.5;
           break;
-        case VertexNormals::angle:
-          w = std::atan2(len, a.dot(b));
+        case VertexNormals::angle: {
+          const double len = cross.norm();
+          w_over_len = std::atan2(len, a.dot(b)) / len;
           break;
+        }
         case VertexNormals::max:
-          w = len / (a.squaredNorm() * b.squaredNorm());
+          w_over_len = 1.0 / (a.squaredNorm() * b.squaredNorm());
           break;
         case VertexNormals::method_default:
           break;
       }
-      sum += (w / len) * cross;
+      sum += w_over_len * cross;
     }
     const double len = sum.norm();
     N.row(v) = (len > 0.0 && std::isfinite(len) ? Vec3(sum / len) : Vec3::Zero()).transpose();

@@ -163,6 +163,26 @@ TEST(Rings, MatchesSetDefinition) {
   }
 }
 
+TEST(Rings, IntegerCollectionMatchesCollect) {
+  // collect_integer skips the half steps: the same V_k and F_k as collect(v, k) (4-8 mesh with
+  // a boundary, valences 4 and 8), rings up to beyond the mesh; k < 1 is rejected.
+  const Mesh mesh = four_eight(5);
+  RingCollector a(mesh), b(mesh);
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    for (int k = 1; k <= 6; ++k) {
+      a.collect(v, k);
+      b.collect_integer(v, k);
+      EXPECT_EQ(std::set<int>(a.faces().begin(), a.faces().end()),
+                std::set<int>(b.faces().begin(), b.faces().end()))
+          << "vertex " << v << " ring " << k;
+      EXPECT_EQ(std::set<int>(a.neighbours().begin(), a.neighbours().end()),
+                std::set<int>(b.neighbours().begin(), b.neighbours().end()))
+          << "vertex " << v << " ring " << k;
+      EXPECT_EQ(b.ring(), k);
+    }
+  EXPECT_THROW(b.collect_integer(0, 0), UsageError);
+}
+
 TEST(Rings, AdaptiveGrowthReachesMinimum) {
   const Mesh mesh = four_eight(16);
   const int v4 = 8 * 17 + 7;
