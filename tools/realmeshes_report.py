@@ -160,6 +160,9 @@ def main():
         Href, _ = read_estimate(ref_path)
         out.append("\n## %s\n" % m)
         out.append("`info`: " + "; ".join(info_lines(os.path.join(w, m + ".info"))) + "\n")
+        picture = os.path.join("realmeshes", m + ".H.png")  # tools/render_ply.py, if drawn
+        if os.path.exists(os.path.join(os.path.dirname(os.path.abspath(a.output)), picture)):
+            out.append("![H of %s by %s](%s)\n" % (m, a.reference.upper(), picture))
         out.append("| method | time (s) | " + " | ".join(STATUSES) +
                    " | median d | p99 d | max d | rel. L2 | top-10 share |")
         out.append("|---|---:|" + "---:|" * len(STATUSES) + "---:|---:|---:|---:|---:|")
