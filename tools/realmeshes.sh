@@ -48,7 +48,8 @@ for r in $RENDER; do
   echo "realmeshes: picture of $m" >&2
   "$CB" estimate "$DATA/$m.off" --method "$REF" --color H --threads 2 --output "$WORK/$m.H.ply" \
     2> "$WORK/$m.H.ply.log"
-  /usr/bin/python3 "$ROOT/tools/render_ply.py" "$WORK/$m.H.ply" "$ROOT/results/realmeshes/$m.H.png" \
+  /usr/bin/python3 "$ROOT/tools/render_ply.py" "$WORK/$m.H.ply" \
+    "$ROOT/results/realmeshes/$m.H.png" \
     --up "$up" --azimuth "$az" --elevation "$el" --title "$m: mean curvature H (${REF^^})"
 done
 /usr/bin/python3 "$ROOT/tools/realmeshes_report.py" "$WORK" "$ROOT/results/REAL_MESHES.md" \

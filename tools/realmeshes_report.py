@@ -239,11 +239,13 @@ def main():
         ranked = [i for i, _ in sorted(worst.items(), key=lambda kv: -kv[1][0])]
         for i in ranked[:a.worst]:
             x, method, h = worst[i]
-            out.append("| %d | %.3g | %s | %.4g | %.4g | %.2f | %.2f | %d | %.3g | %.1f | %.3g |" % (
+            out.append("| %d | %.3g | %s | %.4g | %.4g | %.2f | %.2f | %d | %.3g | %.1f | %.3g |"
+                       % (
                 i, x, method.upper(), h, Href[i], amin[i], amax[i], val[i], ratio[i], fold[i],
                 shortest[i] / mean_edge))
         top = ranked[:50]
-        out.append("\nOf the %d worst vertices, %d have a fold > 90 deg in their two-ring and %d an "
+        out.append("\nOf the %d worst vertices, %d have a fold > 90 deg in their two-ring and %d "
+                   "an "
                    "edge shorter than 0.1 mean edge length." % (
                        len(top), sum(1 for i in top if i in folded),
                        sum(1 for i in top if shortest[i] < 0.1 * mean_edge)))
@@ -258,7 +260,8 @@ def main():
                    "%d.\n" % (
                        median(amin), sum(1 for x in amin if x < 1.0),
                        sum(1 for x in amax if x > 170.0), median(fold), len(folded),
-                       100.0 * len(folded) / len(V), sum(1 for x in shortest if x < 0.1 * mean_edge)))
+                       100.0 * len(folded) / len(V),
+                       sum(1 for x in shortest if x < 0.1 * mean_edge)))
     open(a.output, "w").write("\n".join(out) + "\n")
 
 

@@ -6,7 +6,8 @@ green, blue; triangle faces), turns the model by --azimuth/--elevation (degrees,
 --up axis), shades every triangle by its vertices' mean colour times a headlight Lambert factor,
 sorts the triangles back to front (painter's algorithm) and hands them to gnuplot
 (`set terminal pngcairo`; one 2 x 2 pm3d surface per triangle, drawn in file order with
-`fillcolor rgb variable`, 0xRRGGBB; gnuplot 5.4 ignores a variable colour `with polygons`). The colour range written by `--color` in the PLY header goes into the caption.
+`fillcolor rgb variable`, 0xRRGGBB; gnuplot 5.4 ignores a variable colour `with polygons`).
+The colour range written by `--color` in the PLY header goes into the caption.
 Standard library only.
 Usage: render_ply.py IN.ply OUT.png [--azimuth A] [--elevation E] [--up y|z|x] [--title T]
 """
