@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `make realmeshes`: every method (fits at degrees 2-4; the degree-free operators once; 2 threads) on the sample meshes Debian's CGAL
 # ships (package libcgal-demo, data/meshes/ of /usr/share/doc/libcgal-dev/data.tar.gz), and
-# results/REAL_MESHES.md (tools/realmeshes_report.py). The package is fetched at run time with
+# results/REAL_MESHES.md (tools/realmeshes_report.py) with PNGs of H on two meshes in
+# results/realmeshes/ (tools/render_ply.py, gnuplot). The package is fetched at run time with
 # `apt-get download` (needs the Debian archive; `apt-get update` as root if the package lists are
 # missing) into $WORK (default build/realmeshes/, ignored); nothing is committed.
 # Usage: tools/realmeshes.sh BUILD_DIR
@@ -11,6 +12,7 @@ ROOT=$(cd "$(dirname "$0")/.." && pwd)
 WORK=${WORK:-$BUILD/realmeshes}
 MESHES=${MESHES:-"bunny00 armadillo refined_elephant fandisk_large ChineseDragon-10kv cheese blade man bear"}
 METHODS=${METHODS:-"lhf-2 lhf-3 lhf-4 lop-2 lop-3 lop-4 xu-2 jet-2 jet-3 jet-4 lscm-2 lscm-3 lscm-4 lscm-fast-2 lscm-fast-3 lscm-fast-4 lscm-cg-2 lscm-cg-3 lscm-cg-4 meyer taubin rusinkiewicz quadric goldfeather normal-cycle"}
+REF=${REF:-lhf-4}  # the reference of the agreement columns and of the pictures
 CB="$BUILD/curvbench"
 mkdir -p "$WORK"
 DATA="$WORK/data/meshes"
@@ -35,7 +37,21 @@ for m in $MESHES; do
   done
 done
 echo "realmeshes: estimates done in $(( $(date +%s) - start )) s" >&2
-mkdir -p "$ROOT/results"
+mkdir -p "$ROOT/results/realmeshes"
+# Pictures: H of the reference method as a coloured PLY (kept in $WORK: several MB) and a PNG of
+# it in results/realmeshes/ (tools/render_ply.py, gnuplot's pngcairo; headless).
+# Each entry: mesh:up axis:azimuth:elevation.
+RENDER=${RENDER:-"bunny00:y:180:10 fandisk_large:z:215:-30"}
+for r in $RENDER; do
+  IFS=: read -r m up az el <<< "$r"
+  case " $MESHES " in *" $m "*) ;; *) continue ;; esac
+  echo "realmeshes: picture of $m" >&2
+  "$CB" estimate "$DATA/$m.off" --method "$REF" --color H --threads 2 --output "$WORK/$m.H.ply" \
+    2> "$WORK/$m.H.ply.log"
+  /usr/bin/python3 "$ROOT/tools/render_ply.py" "$WORK/$m.H.ply" \
+    "$ROOT/results/realmeshes/$m.H.png" \
+    --up "$up" --azimuth "$az" --elevation "$el" --title "$m: mean curvature H (${REF^^})"
+done
 /usr/bin/python3 "$ROOT/tools/realmeshes_report.py" "$WORK" "$ROOT/results/REAL_MESHES.md" \
-  --meshes $MESHES --methods $METHODS
+  --meshes $MESHES --methods $METHODS --reference "$REF"
 echo "realmeshes: wrote results/REAL_MESHES.md" >&2
