@@ -64,15 +64,8 @@ class MeyerEstimator final : public OperatorEstimator {
 
   void estimate(const MeshContext& ctx, int v, Workspace&, VertexEstimate& out) const override {
     const Mesh& mesh = ctx.mesh;
+    if (!interior_with_faces(mesh, v, out)) return;
     const auto faces = mesh.vertex_faces(v);
-    if (faces.empty()) {
-      set_failed(1.0, 0, out);
-      return;
-    }
-    if (mesh.is_boundary_vertex(v)) {
-      set_excluded(1.0, 0, out);
-      return;
-    }
     const OperatorMeshData& data = mesh_data(ctx);
     const FaceGeometry& g = data.faces;
     const Vec3 n = data.normal(ctx, v);

@@ -6,6 +6,7 @@
 #include "core/errors.h"
 #include "core/text.h"
 #include "methods/vertex_normals.h"
+#include "methods/vertex_result.h"
 
 namespace curvbench {
 
@@ -44,6 +45,18 @@ std::unique_ptr<MeshData> OperatorEstimator::prepare(const Mesh& mesh, const Ver
   auto data = std::make_unique<OperatorMeshData>();
   fill_mesh_data(mesh, threads, *data);
   return data;
+}
+
+bool OperatorEstimator::interior_with_faces(const Mesh& mesh, int v, VertexEstimate& out) {
+  if (mesh.vertex_faces(v).empty()) {
+    set_failed(1.0, 0, out);
+    return false;
+  }
+  if (mesh.is_boundary_vertex(v)) {
+    set_excluded(1.0, 0, out);
+    return false;
+  }
+  return true;
 }
 
 }  // namespace curvbench

@@ -40,6 +40,9 @@ class OperatorEstimator : public Estimator {
   /// Fills the fields of OperatorMeshData (what prepare() returns); for an override of
   /// prepare() that derives its own data from OperatorMeshData.
   void fill_mesh_data(const Mesh& mesh, int threads, OperatorMeshData& data) const;
+  /// The common start of a method that excludes boundary vertices by design: false, with `out`
+  /// set, for a vertex without faces (failed) or on the boundary (excluded).
+  static bool interior_with_faces(const Mesh& mesh, int v, VertexEstimate& out);
   static const OperatorMeshData& mesh_data(const MeshContext& ctx) {
     return static_cast<const OperatorMeshData&>(*ctx.data);
   }
