@@ -14,10 +14,10 @@ packages=(
   libgtest-dev libgmock-dev  # GoogleTest
   libbenchmark-dev         # Google Benchmark
   libcli11-dev             # command line
-  pybind11-dev python3-dev python3-numpy python3-pytest  # Python module (for /usr/bin/python3)
+  pybind11-dev python3-dev python3-numpy python3-pytest  # Python module (for /usr/bin/python3);
+                           # numpy also runs the outside-estimator example (experiments/examples/)
   gnuplot-nox              # convergence plots (PNG and SVG)
   time                     # /usr/bin/time -v: peak memory in make bench
-  python3-numpy            # the outside-estimator example (experiments/examples/) and its test
 )
 case "$mode" in
   build) ;;
