@@ -144,4 +144,14 @@ Curvature curvature_from_height(const Vec3& t1, const Vec3& t2, const Vec3& m, d
   return c;
 }
 
+Curvature curvature_from_tangent_tensor(const Vec3& n, double w11, double w12, double w22,
+                                        const Vec3& q1, const Vec3& q2) {
+  Curvature c;
+  c.normal = n;
+  principal_from_symmetric(w11, w12, w22, q1, q2, c.k1, c.k2, c.d1, c.d2);
+  c.H = 0.5 * (c.k1 + c.k2);
+  c.K = c.k1 * c.k2;
+  return c;
+}
+
 }  // namespace curvbench

@@ -45,6 +45,12 @@ bool is_umbilic(double k1, double k2);
 void principal_from_symmetric(double w11, double w12, double w22, const Vec3& q1, const Vec3& q2,
                               double& k1, double& k2, Vec3& d1, Vec3& d2);
 
+/// The whole Curvature of a symmetric tangent tensor [w11 w12; w12 w22] in the frame (q1, q2) with
+/// normal n (a discrete operator's shape operator): principal_from_symmetric, H = (k1 + k2)/2,
+/// K = k1 k2.
+Curvature curvature_from_tangent_tensor(const Vec3& n, double w11, double w12, double w22,
+                                        const Vec3& q1, const Vec3& q2);
+
 /// Parametric surface x(u,v) (docs/algorithms.md §6.2): eq. (1) normal n = x_u x x_v / |x_u x x_v|,
 /// eq. (2) B = [n.x_uu n.x_uv; n.x_uv n.x_vv], Gram-Schmidt QR J = [x_u x_v] = [q1 q2] R, eq. (5)
 /// W~ = R^-T B R^-1, eqs. (7)-(8) for the principal pair; H = (k1 + k2)/2, K = k1 k2.
@@ -54,7 +60,8 @@ Curvature curvature_from_parametric(const Vec3& xu, const Vec3& xv, const Vec3& 
 
 /// Local height function w = f(u,v) in the right-handed orthonormal frame (t1, t2, m), given in
 /// global coordinates (U = [t1 t2 m]); paper §2.2, Table 1 height-function column,
-/// docs/algorithms.md §6.1. With grad = (fu, fv), Hess = [fuu fuv; fuv fvv], l = sqrt(1 + |grad|^2):
+/// docs/algorithms.md §6.1. With grad = (fu, fv), Hess = [fuu fuv; fuv fvv], l = sqrt(1 +
+/// |grad|^2):
 ///   normal = U (-fu, -fv, 1) / l,
 ///   H = tr(Hess)/(2 l) - grad^T Hess grad / (2 l^3),   K = det(Hess) / l^4   (Table 1),
 ///   principal pair from eqs. (7)-(8) in the basis q1 = U (c/l, s/l, |grad|/l), q2 = U (-s, c, 0)

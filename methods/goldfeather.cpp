@@ -123,11 +123,7 @@ class GoldfeatherEstimator final : public OperatorEstimator {
     }
     const Vec7 coef = ldlt.solve(atb);
     const double A = coef(0) / s, B = coef(1) / s, C = coef(2) / s;
-    Curvature c;
-    c.normal = frame.m;
-    principal_from_symmetric(A, B, C, frame.t1, frame.t2, c.k1, c.k2, c.d1, c.d2);
-    c.H = 0.5 * (c.k1 + c.k2);
-    c.K = c.k1 * c.k2;
+    const Curvature c = curvature_from_tangent_tensor(frame.m, A, B, C, frame.t1, frame.t2);
     if (!set_operator_quantities(c, computes(), points, 1.0, out)) set_failed(1.0, points, out);
   }
 };

@@ -158,11 +158,7 @@ class RusinkiewiczEstimator final : public OperatorEstimator {
     w11 /= total;
     w12 /= total;
     w22 /= total;
-    Curvature c;
-    c.normal = n;
-    principal_from_symmetric(w11, w12, w22, frame.t1, frame.t2, c.k1, c.k2, c.d1, c.d2);
-    c.H = 0.5 * (c.k1 + c.k2);
-    c.K = c.k1 * c.k2;
+    const Curvature c = curvature_from_tangent_tensor(n, w11, w12, w22, frame.t1, frame.t2);
     if (!set_operator_quantities(c, computes(), points, 1.0, out)) set_failed(1.0, points, out);
   }
 };
