@@ -1,6 +1,8 @@
 // The public C++ API (include/curvbench/curvbench.h) over the library's layers.
 #include "curvbench/curvbench.h"
 
+#include <utility>
+
 #include "api/make_api_estimator.h"
 #include "curvbench/version.h"
 #include "mesh/io.h"
@@ -23,8 +25,8 @@ EstimateResult estimate(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
     throw InputError("F: expected m x 3 triangle indices, got " + std::to_string(F.rows()) + " x " +
                      std::to_string(F.cols()));
   const std::unique_ptr<Estimator> est = make_api_estimator(options);
-  const Mesh mesh(VertexMatrix(V), FaceMatrix(F), "mesh");
-  const std::vector<VertexEstimate> res = estimate_oriented(mesh, *est).estimates;
+  Mesh mesh(VertexMatrix(V), FaceMatrix(F), "mesh");
+  const std::vector<VertexEstimate> res = estimate_oriented(std::move(mesh), *est).estimates;
   const Eigen::Index n = static_cast<Eigen::Index>(res.size());
   EstimateResult out;
   out.method = est->label();

@@ -1,7 +1,9 @@
 // Google Benchmark suite for the paper's Table 5 (§5.4, §4.3.2): every estimator of Table 5
 // plus CGAL's Jet_fitting_3, the in-house LSCM and the discrete operators (Meyer, Taubin,
 // Rusinkiewicz, the libigl quadric, Goldfeather, the normal cycle) on the well-shaped
-// (torus-unstructured) torus, levels 1-4, one thread; LHF-2 also with 2 threads. Scaling: LHF-2
+// (torus-unstructured) torus, levels 1-4, one thread; LHF-2 also with 2 threads; LHF-2, LHF-4
+// and LOP-2 also with the scalar fitting kernel (rows "LHF-2 scalar", ...; the plain rows are
+// the default batched kernel, EstimatorOptions::kernel). Scaling: LHF-2
 // with 1 and 2 threads on torus-structured levels 5 and 6 as well (1024x352 and 2048x704 = 1.44
 // million vertices), reported in the .md only (the CSV is Table 5's four levels).
 //
@@ -33,6 +35,7 @@
 #include "harness/paper_tables.h"
 #include "meshgen/generate.h"
 #include "methods/estimator.h"
+#include "methods/neighbourhood_table.h"
 
 // GCC 12 reports a false -Wrestrict in std::string operator+ (const char*, string&&) at -O3
 // (GCC bug 105329).
@@ -55,19 +58,56 @@ struct MethodSpec {
   std::string name;  ///< make_estimator name
   int degree;
   int threads;
-  bool scaling = false;  ///< levels 5-6 of the scaling sweep (logged in g_scaling)
+  bool scaling = false;             ///< levels 5-6 of the scaling sweep (logged in g_scaling)
+  Kernel kernel = Kernel::batched;  ///< LHF/LOP: the scalar rows are labelled "... scalar"
+  /// Neighbourhoods from a table built once per mesh before timing (NeighbourhoodCache, as the
+  /// experiment runner sweeps methods and degrees on one mesh); rows labelled "... cached".
+  bool cached = false;
 };
 
+// The row label: the estimator's, plus " scalar" for the scalar fitting kernel and " cached"
+// for neighbourhoods from a prebuilt table.
+std::string row_label(const Estimator& est, bool cached) {
+  return est.label() + (est.options().kernel == Kernel::scalar ? " scalar" : "") +
+         (cached ? " cached" : "");
+}
+
+// The label without spaces, for --benchmark_filter ("LHF-2 scalar" -> "LHF-2_scalar").
+std::string benchmark_name(std::string label) {
+  std::replace(label.begin(), label.end(), ' ', '_');
+  return label;
+}
+
 // Degree 0: a degree-free discrete operator.
-const std::vector<MethodSpec> kMethods = {
-    {"xu", 2, 1},          {"lop", 2, 1},          {"lhf", 2, 1},       {"lhf", 3, 1},
-    {"lhf", 4, 1},         {"lscm", 2, 1},         {"lscm", 3, 1},      {"lscm", 4, 1},
-    {"lscm-fast", 2, 1},   {"lscm-fast", 3, 1},    {"lscm-fast", 4, 1}, {"jet", 2, 1},
-    {"jet", 3, 1},         {"jet", 4, 1},          {"lhf", 2, 2},       {"meyer", 0, 1},
-    {"taubin", 0, 1},      {"rusinkiewicz", 0, 1}, {"quadric", 0, 1},   {"goldfeather", 0, 1},
-    {"normal-cycle", 0, 1}};
+const std::vector<MethodSpec> kMethods = {{"xu", 2, 1},
+                                          {"lop", 2, 1},
+                                          {"lhf", 2, 1},
+                                          {"lhf", 3, 1},
+                                          {"lhf", 4, 1},
+                                          {"lscm", 2, 1},
+                                          {"lscm", 3, 1},
+                                          {"lscm", 4, 1},
+                                          {"lscm-fast", 2, 1},
+                                          {"lscm-fast", 3, 1},
+                                          {"lscm-fast", 4, 1},
+                                          {"jet", 2, 1},
+                                          {"jet", 3, 1},
+                                          {"jet", 4, 1},
+                                          {"lhf", 2, 2},
+                                          {"meyer", 0, 1},
+                                          {"taubin", 0, 1},
+                                          {"rusinkiewicz", 0, 1},
+                                          {"quadric", 0, 1},
+                                          {"goldfeather", 0, 1},
+                                          {"normal-cycle", 0, 1},
+                                          {"lhf", 2, 1, false, Kernel::scalar},
+                                          {"lhf", 4, 1, false, Kernel::scalar},
+                                          {"lop", 2, 1, false, Kernel::scalar},
+                                          {"lhf", 2, 1, false, Kernel::batched, true},
+                                          {"lhf", 4, 1, false, Kernel::batched, true}};
 
 std::array<std::optional<GeneratedMesh>, kScalingLevels + 1> g_meshes;
+std::array<std::unique_ptr<NeighbourhoodCache>, kScalingLevels + 1> g_neighbourhoods;
 SampleLog g_log;      // Table 5
 SampleLog g_scaling;  // levels 5-6 of the scaling sweep
 
@@ -84,19 +124,27 @@ void BM_Estimate(benchmark::State& state, const MethodSpec spec) {
   EstimatorOptions o;
   o.degree = spec.degree;
   o.threads = spec.threads;
+  o.kernel = spec.kernel;
   const std::unique_ptr<Estimator> est = make_estimator(spec.name, o);
   Sample& s = (spec.scaling ? g_scaling : g_log)
                   .get({family_of(level),
                         level,
                         mesh.num_vertices(),
                         mesh.num_faces(),
-                        est->label(),
+                        row_label(*est, spec.cached),
                         spec.degree,
                         spec.threads,
                         {}});
+  NeighbourhoodCache* cache = nullptr;
+  if (spec.cached) {
+    auto& slot = g_neighbourhoods[static_cast<size_t>(level)];
+    if (!slot) slot = std::make_unique<NeighbourhoodCache>(mesh);
+    cache = slot.get();
+    estimate_mesh(mesh, *est, cache);  // builds the table outside the timed passes
+  }
   for (auto _ : state) {
     const auto t0 = std::chrono::steady_clock::now();
-    std::vector<VertexEstimate> res = estimate_mesh(mesh, *est);
+    std::vector<VertexEstimate> res = estimate_mesh(mesh, *est, cache);
     benchmark::DoNotOptimize(res.data());
     benchmark::ClobberMemory();
     s.seconds.push_back(
@@ -118,7 +166,8 @@ void register_all() {
   for (const MethodSpec& m : kMethods) {
     EstimatorOptions o;
     o.degree = m.degree;
-    const std::string label = make_estimator(m.name, o)->label();
+    o.kernel = m.kernel;
+    const std::string label = row_label(*make_estimator(m.name, o), m.cached);
     // Samples in registration order, so the rows keep it when repetitions run interleaved.
     for (int level = 1; level <= kLevels; ++level)
       g_log.get({kFamily,
@@ -129,10 +178,11 @@ void register_all() {
                  m.degree,
                  m.threads,
                  {}});
-    level_sweep(benchmark::RegisterBenchmark(
-                    ("Estimate/" + label + "/threads:" + std::to_string(m.threads)).c_str(),
-                    BM_Estimate, m),
-                kLevels);
+    level_sweep(
+        benchmark::RegisterBenchmark(
+            ("Estimate/" + benchmark_name(label) + "/threads:" + std::to_string(m.threads)).c_str(),
+            BM_Estimate, m),
+        kLevels);
   }
   for (int threads : {1, 2}) {
     const MethodSpec m{"lhf", 2, threads, true};
@@ -266,7 +316,9 @@ std::string make_markdown(const std::vector<Table5Row>& rows, const std::string&
 
   // Our Table 5.
   std::vector<std::string> ours = paper_methods();
-  for (const char* m : {"Jet-2", "Jet-3", "Jet-4", "LSCM-fast-2", "LSCM-fast-3", "LSCM-fast-4"})
+  for (const char* m :
+       {"Jet-2", "Jet-3", "Jet-4", "LSCM-fast-2", "LSCM-fast-3", "LSCM-fast-4", "LHF-2 scalar",
+        "LHF-4 scalar", "LOP-2 scalar", "LHF-2 cached", "LHF-4 cached"})
     ours.push_back(m);
   for (const char* m : kOperators) ours.push_back(m);
   md += "## Our times (seconds, 1 thread), paper's in parentheses\n\n| mesh | #V | #T |";
@@ -310,16 +362,18 @@ std::string make_markdown(const std::vector<Table5Row>& rows, const std::string&
     bool paper;
   };
   const std::vector<RatioDef> ratios = {
-      {"Jet-2", "LHF-2", false},       {"LOP-2", "LHF-2", true},
-      {"LHF-3", "LHF-2", true},        {"LHF-4", "LHF-3", true},
-      {"Xu-2", "LHF-2", true},         {"Xu-2", "LOP-2", true},
-      {"LSCM-2", "LHF-2", true},       {"LSCM-3", "LHF-3", true},
-      {"LSCM-4", "LHF-4", true},       {"LSCM-2", "Xu-2", true},
-      {"LSCM-fast-2", "LHF-2", false}, {"LSCM-fast-3", "LHF-3", false},
-      {"LSCM-fast-4", "LHF-4", false}, {"Meyer", "LHF-2", false},
-      {"Taubin", "LHF-2", false},      {"Rusinkiewicz", "LHF-2", false},
-      {"Quadric", "LHF-2", false},     {"Goldfeather", "LHF-2", false},
-      {"Normal-cycle", "LHF-2", false}};
+      {"Jet-2", "LHF-2", false},        {"LOP-2", "LHF-2", true},
+      {"LHF-3", "LHF-2", true},         {"LHF-4", "LHF-3", true},
+      {"Xu-2", "LHF-2", true},          {"Xu-2", "LOP-2", true},
+      {"LSCM-2", "LHF-2", true},        {"LSCM-3", "LHF-3", true},
+      {"LSCM-4", "LHF-4", true},        {"LSCM-2", "Xu-2", true},
+      {"LSCM-fast-2", "LHF-2", false},  {"LSCM-fast-3", "LHF-3", false},
+      {"LSCM-fast-4", "LHF-4", false},  {"Meyer", "LHF-2", false},
+      {"Taubin", "LHF-2", false},       {"Rusinkiewicz", "LHF-2", false},
+      {"Quadric", "LHF-2", false},      {"Goldfeather", "LHF-2", false},
+      {"Normal-cycle", "LHF-2", false}, {"LHF-2 scalar", "LHF-2", false},
+      {"LHF-4 scalar", "LHF-4", false}, {"LOP-2 scalar", "LOP-2", false},
+      {"LHF-2 cached", "LHF-2", false}, {"Jet-2", "LHF-2 cached", false}};
   md +=
       "\n## Time ratios, ours (paper)\n\nThe paper gives Jet-2/LHF-2 only as \"more than 16x\" "
       "(about 28k triangles/s for Jet_fitting_3).\n\n| ratio |";

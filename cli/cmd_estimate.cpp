@@ -1,8 +1,10 @@
 // `curvbench estimate MESH --method M --degree D [--rings R] [--threads N] [--noisy] [--timing]
-//  [--skip-invalid] --output OUT.csv|OUT.ply`: per-vertex normals and curvatures of one estimator.
+//  [--skip-invalid] [--vertex-normals W] [--quadric-constant] [--ball-factor C]
+//  --output OUT.csv|OUT.ply`: per-vertex normals and curvatures of one estimator.
 //
 // CSV: a header, then one row per vertex; PLY: the mesh with per-vertex properties; both from
-// the column table of harness/estimate_columns.h. The file is written
+// the column table of harness/estimate_columns.h, written block by block as the estimates come
+// (--block vertices at a time; the bytes do not depend on it or on --threads). The file is written
 // to a temporary name and renamed, so a failed run never leaves a truncated OUT. A one-line summary
 // goes to stderr, after a one-line warning for each kind of element the reader dropped (faces with
 // fewer than 3 vertices or a repeated index; with --skip-invalid, vertices with NaN/Inf coordinates
@@ -12,11 +14,13 @@
 // holds each vertex's index in the input file; the PLY gets a "source_vertex" property (the same
 // index) and a header comment saying so.
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -30,6 +34,7 @@
 #include "mesh/io.h"
 #include "methods/estimate_oriented.h"
 #include "methods/estimator.h"
+#include "methods/vertex_normals.h"
 
 namespace curvbench::cli {
 
@@ -42,30 +47,32 @@ struct EstimateOptions {
   double rings = 0.0;
   int threads = 0;
   bool noisy = false;
+  std::string kernel = "batched";  // --kernel: batched or scalar (EstimatorOptions::kernel)
   bool timing = false;
   bool skip_invalid = false;
   std::string color;  // "", H, K, k1 or k2: PLY per-vertex RGB (mesh/colormap.h)
   std::string output;
+  // Options of single methods (EstimatorOptions).
+  std::string vertex_normals = "default";
+  bool quadric_constant = false;
+  double ball_factor = 0.0;
+  int block = kEstimateBlock;  // vertices estimated and written at a time
 };
 
-// --color: red, green, blue properties from a diverging map of one quantity (mesh/colormap.h).
-void add_color_properties(const std::string& quantity, const std::vector<VertexEstimate>& est,
-                          std::vector<VertexProperty>& props, std::vector<std::string>& comments) {
+// --color: the diverging map of one quantity (mesh/colormap.h) over every vertex, and the header
+// comment with its range.
+VertexColors color_of(const std::string& quantity, std::span<const VertexEstimate> est,
+                      std::vector<std::string>& comments) {
   std::vector<double> x(est.size());
   for (size_t v = 0; v < est.size(); ++v)
     x[v] = quantity == "H"    ? est[v].H
            : quantity == "K"  ? est[v].K
            : quantity == "k1" ? est[v].k1
                               : est[v].k2;
-  const VertexColors c = diverging_colors(x);
-  const char* names[3] = {"red", "green", "blue"};
-  for (int j = 0; j < 3; ++j) {
-    VertexProperty p{names[j], std::vector<double>(est.size()), true};
-    for (size_t v = 0; v < est.size(); ++v) p.values[v] = c.rgb[v][static_cast<size_t>(j)];
-    props.push_back(std::move(p));
-  }
+  VertexColors c = diverging_colors(x);
   comments.push_back("color: " + quantity + ", blue -L .. white 0 .. red +L, L = " +
                      format_g(c.limit) + " (98th percentile of |" + quantity + "|)");
+  return c;
 }
 
 int run_estimate(const EstimateOptions& o, bool degree_given) {
@@ -73,11 +80,16 @@ int run_estimate(const EstimateOptions& o, bool degree_given) {
   if (ext != "csv" && ext != "ply")
     throw UsageError("--output " + o.output + ": extension must be .csv or .ply");
   if (!o.color.empty() && ext != "ply") throw UsageError("--color needs a .ply --output");
+  if (o.block < 1) throw UsageError("--block must be at least 1");
   EstimatorOptions eo;
   eo.degree = degree_given ? o.degree : 0;  // 0: the method's default (none if degree-free)
   eo.ring = o.rings;
   eo.threads = o.threads;
   eo.noisy = o.noisy;
+  eo.kernel = o.kernel == "scalar" ? Kernel::scalar : Kernel::batched;
+  eo.vertex_normals = parse_vertex_normals(o.vertex_normals);
+  eo.quadric_constant = o.quadric_constant;
+  eo.ball_factor = o.ball_factor;
   std::unique_ptr<Estimator> est = make_estimator(o.method, eo);
   if (degree_given && est->options().degree != o.degree)
     throw UsageError("--method " + o.method + " names degree " +
@@ -90,51 +102,88 @@ int run_estimate(const EstimateOptions& o, bool degree_given) {
   };
   const auto t_read = Clock::now();
   MeshReadReport report;
-  const Mesh input = read_input_mesh(o.mesh, o.skip_invalid, report);
+  Mesh input = read_input_mesh(o.mesh, o.skip_invalid, report);
   const double read_seconds = since(t_read);
-  const auto t0 = Clock::now();
-  // Consistent orientation, closed parts outward, then the estimates (methods/estimate_oriented.h).
-  OrientedEstimate oriented = estimate_oriented(input, *est);
-  const double seconds = since(t0);
-  for (const std::string& w : orientation_warnings(oriented.orientation))
-    std::fprintf(stderr, "curvbench: warning: %s: %s\n", o.mesh.c_str(), w.c_str());
-  const Mesh& mesh = oriented.orientation.mesh;
-  std::vector<VertexEstimate>& res = oriented.estimates;
-  int counts[6] = {0, 0, 0, 0, 0, 0};  // by VertexStatus code
-  for (const VertexEstimate& e : res) ++counts[static_cast<int>(e.status)];
+  const int n = input.num_vertices();
 
-  const auto t_write = Clock::now();
-
-  if (ext == "csv") {
-    write_estimate_csv_atomic(o.output, res, report.source_vertex);
-  } else {
-    std::vector<VertexProperty> props = estimate_ply_properties(res);
-    std::vector<std::string> comments;
-    if (!report.source_vertex.empty()) {
-      props.push_back(
-          {"source_vertex",
-           std::vector<double>(report.source_vertex.begin(), report.source_vertex.end()), true});
-      comments.push_back("--skip-invalid: " + std::to_string(report.vertices_skipped) + " of " +
-                         std::to_string(report.vertices_in_file) +
-                         " input vertices (NaN/Inf coordinates) and " +
-                         std::to_string(report.faces_skipped) +
-                         " faces dropped; source_vertex = index in the input file");
+  // The output is written as the estimates come, a block of vertices at a time
+  // (methods/estimate_oriented.h): no record per vertex is kept for the whole mesh. --color needs
+  // the colour range over every vertex first: one block then.
+  const int block = o.color.empty() ? o.block : std::max(n, 1);
+  std::unique_ptr<EstimateCsvWriter> csv;
+  std::unique_ptr<PlyWriter> ply;
+  std::vector<PlyWriter::Property> types = estimate_ply_types();
+  const std::size_t columns = types.size();
+  std::vector<double> rows;
+  VertexColors colors;  // --color: over every vertex (one block)
+  const auto t_open = Clock::now();
+  if (ext == "csv")
+    csv = std::make_unique<EstimateCsvWriter>(o.output, report.source_vertex, o.threads);
+  double open_seconds = since(t_open);
+  const EstimateSink sink = [&](const Mesh& mesh, int first, std::span<const VertexEstimate> out) {
+    if (csv) {
+      csv->write(first, out);
+      return;
     }
-    if (!o.color.empty()) add_color_properties(o.color, res, props, comments);
-    write_mesh(o.output, mesh, props, comments);  // atomic itself (mesh/io.h)
-  }
-  const double write_seconds = since(t_write);
+    if (!ply) {  // the header, at the first block (it names the colour range)
+      std::vector<std::string> comments;
+      if (!report.source_vertex.empty()) {
+        types.push_back({"source_vertex", true});
+        comments.push_back("--skip-invalid: " + std::to_string(report.vertices_skipped) + " of " +
+                           std::to_string(report.vertices_in_file) +
+                           " input vertices (NaN/Inf coordinates) and " +
+                           std::to_string(report.faces_skipped) +
+                           " faces dropped; source_vertex = index in the input file");
+      }
+      if (!o.color.empty()) {
+        colors = color_of(o.color, out, comments);
+        for (const char* name : {"red", "green", "blue"}) types.push_back({name, true});
+      }
+      ply = std::make_unique<PlyWriter>(o.output, mesh, types, comments);
+    }
+    // The rows of the PLY properties, at most o.block vertices at a time (--color hands over
+    // every vertex at once).
+    for (size_t i0 = 0; i0 < out.size(); i0 += static_cast<size_t>(o.block)) {
+      const size_t count = std::min(out.size() - i0, static_cast<size_t>(o.block));
+      rows.resize(count * types.size());
+      for (size_t i = i0; i < i0 + count; ++i) {
+        double* row = rows.data() + (i - i0) * types.size();
+        estimate_ply_row(out[i], row);
+        std::size_t p = columns;
+        if (!report.source_vertex.empty())
+          row[p++] = report.source_vertex[static_cast<size_t>(first) + i];
+        if (!o.color.empty())
+          for (int j = 0; j < 3; ++j) row[p++] = colors.rgb[i][static_cast<size_t>(j)];
+      }
+      ply->write_vertices(first + static_cast<int>(i0), static_cast<int>(count), rows.data());
+    }
+  };
+  // Consistent orientation, closed parts outward (in place, no copy of a mesh that already is),
+  // then the estimates block by block into the sink.
+  const auto t_orient = Clock::now();
+  OrientedRun run = estimate_oriented(std::move(input), *est, block, sink);
+  const double total_seconds = since(t_orient);
+  for (const std::string& w : orientation_warnings(run.orientation))
+    std::fprintf(stderr, "curvbench: warning: %s: %s\n", o.mesh.c_str(), w.c_str());
+  const auto t_commit = Clock::now();
+  if (csv) csv->commit();
+  if (ply) ply->commit();  // the faces
+  const double write_seconds = open_seconds + run.sink_seconds + since(t_commit);
+  const double seconds = run.estimate_seconds;
+  const double orient_seconds = total_seconds - run.estimate_seconds - run.sink_seconds;
 
-  const int n = mesh.num_vertices();
+  const std::array<int, 6>& counts = run.status_counts;
   std::fprintf(stderr,
                "curvbench estimate: %s on %s: %d vertices (ok %d, degree_reduced %d, failed %d, "
                "excluded %d, disk_cut %d, sign_undetermined %d) in %.3f s (%.2f us/vertex) -> %s\n",
                est->label().c_str(), o.mesh.c_str(), n, counts[0], counts[1], counts[2], counts[3],
                counts[4], counts[5], seconds, n > 0 ? 1e6 * seconds / n : 0.0, o.output.c_str());
   if (o.timing) {
-    // Per-stage wall times; neighbourhoods and fits are interleaved per vertex, so they are one
-    // stage (estimate_mesh, including the area-weighted normals).
+    // Per-stage wall times. Estimation and writing alternate block by block; each line is the sum
+    // of its own parts: neighbourhoods+fit = normals, neighbourhoods and fits (MeshEstimation);
+    // write = formatting and writing the output, faces of a PLY included.
     std::fprintf(stderr, "timing: read %.6f s\n", read_seconds);
+    std::fprintf(stderr, "timing: orientation %.6f s\n", orient_seconds);
     std::fprintf(stderr, "timing: neighbourhoods+fit %.6f s\n", seconds);
     std::fprintf(stderr, "timing: write %.6f s\n", write_seconds);
   }
@@ -160,8 +209,14 @@ Command add_estimate_command(CLI::App& app) {
       "Ring size 1, 1.5, 2, ... (default: method default, (d+1)/2; Xu 1; quadric 5, integers)");
   sub->add_option("--threads", o->threads, "OpenMP threads (default: all)");
   sub->add_flag("--noisy", o->noisy, "Noisy input: default ring + 0.5 (paper §5.3)");
-  sub->add_flag("--timing", o->timing,
-                "Print per-stage wall times (read, neighbourhoods+fit, write) to stderr");
+  sub->add_option("--kernel", o->kernel,
+                  "Fitting kernel of LHF/LOP degree 1-4: batched (default: several vertices per "
+                  "SIMD instruction) or scalar (one vertex at a time, the reference); same "
+                  "results up to rounding")
+      ->check(CLI::IsMember({"batched", "scalar"}));
+  sub->add_flag(
+      "--timing", o->timing,
+      "Print per-stage wall times (read, orientation, neighbourhoods+fit, write) to stderr");
   sub->add_flag("--skip-invalid", o->skip_invalid,
                 "Drop vertices with a NaN/Inf coordinate and the faces using them instead of "
                 "failing; the output then has only the remaining vertices (CSV 'vertex' = index "
@@ -170,7 +225,19 @@ Command add_estimate_command(CLI::App& app) {
                   "PLY only: per-vertex red/green/blue of H, K, k1 or k2 (diverging map, symmetric "
                   "range: 98th percentile of |value|)")
       ->check(CLI::IsMember({"H", "K", "k1", "k2"}));
+  sub->add_option("--vertex-normals", o->vertex_normals,
+                  "Discrete operators only: vertex normal weighting area, angle or max (default: "
+                  "the method's own; meyer, taubin, quadric, normal-cycle area; rusinkiewicz, "
+                  "goldfeather max)");
+  sub->add_flag("--quadric-constant", o->quadric_constant,
+                "quadric only: fit 6 coefficients (a constant term) instead of libigl's 5");
+  sub->add_option("--ball-factor", o->ball_factor,
+                  "normal-cycle only: the ball of radius C times the mean edge length instead of "
+                  "the 1-ring (default 0 = the 1-ring)");
   sub->add_option("--output", o->output, "Output file (.csv or .ply)")->required();
+  sub->add_option("--block", o->block,
+                  "Vertices estimated and written at a time (default 65536; memory vs. overhead; "
+                  "the output is the same for any value)");
   return [o, degree]() { return run_estimate(*o, degree->count() > 0); };
 }
 

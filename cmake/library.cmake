@@ -11,7 +11,7 @@ foreach(layer ${CURVBENCH_LAYERS})
   list(APPEND _archives $<TARGET_FILE:${layer}>)
 endforeach()
 target_link_libraries(curvbench_shared
-  PRIVATE -Wl,--whole-archive ${_archives} -Wl,--no-whole-archive OpenMP::OpenMP_CXX CGAL::CGAL
+  PRIVATE -Wl,--whole-archive ${_archives} -Wl,--no-whole-archive OpenMP::OpenMP_CXX CGAL::CGAL hwy::hwy
   PUBLIC Eigen3::Eigen)
 add_dependencies(curvbench_shared ${CURVBENCH_LAYERS})
 target_include_directories(curvbench_shared PUBLIC

@@ -1,9 +1,13 @@
 #include "harness/estimate_columns.h"
 
+#include <omp.h>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
-#include <filesystem>
+
+#include <algorithm>
+#include <cstring>
+#include <memory>
+#include <vector>
 
 #include "core/errors.h"
 #include "harness/results_table.h"
@@ -41,15 +45,63 @@ bool is_status(const EstimateColumn& c) {
   return std::string_view(c.name) == "status";
 }
 
-// Shortest text that reads back to exactly x (std::to_chars; about 10x faster than "%.17g").
-void put_double(std::FILE* f, double x) {
-  if (std::isnan(x)) {
-    std::fputs("nan", f);
-    return;
+// Appends the shortest text that reads back to exactly x (std::to_chars), "nan" for NaN; at most
+// 24 characters.
+char* put_double(char* p, double x) {
+  if (std::isnan(x)) return std::copy_n("nan", 3, p);
+  return std::to_chars(p, p + 32, x).ptr;
+}
+
+// The longest row: an index, 13 doubles, 2 integers and a status word, with separators.
+constexpr std::size_t kMaxRow = 12 + 16 * 25 + 20 + 2;
+
+// Formats the rows of estimates[begin, end) at `p`; returns the end.
+char* format_rows(char* p, int first, std::span<const VertexEstimate> estimates,
+                  std::span<const int> source, std::size_t begin, std::size_t end) {
+  for (std::size_t i = begin; i < end; ++i) {
+    const VertexEstimate& e = estimates[i];
+    const std::size_t v = static_cast<std::size_t>(first) + i;
+    p = std::to_chars(p, p + 24, source.empty() ? v : static_cast<std::size_t>(source[v])).ptr;
+    for (const EstimateColumn& c : kColumns) {
+      if (!c.in_csv) continue;
+      *p++ = ',';
+      if (is_status(c)) {
+        const char* word = to_string(e.status);
+        p = std::copy(word, word + std::strlen(word), p);
+      } else if (c.integer) {
+        p = std::to_chars(p, p + 12, static_cast<int>(c.value(e))).ptr;
+      } else {
+        p = put_double(p, c.value(e));
+      }
+    }
+    *p++ = '\n';
   }
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, x);
-  std::fwrite(buf, 1, static_cast<size_t>(r.ptr - buf), f);
+  return p;
+}
+
+// Formats the rows into `scratch` (room for kMaxRow bytes per row; not zero-filled), packed, and
+// returns their length: the block is cut into chunks formatted in parallel, each into its own
+// slice, then moved together in order.
+std::size_t format_csv_block(char* scratch, int first, std::span<const VertexEstimate> estimates,
+                             std::span<const int> source, int threads) {
+  const std::size_t n = estimates.size();
+  if (threads < 1) threads = omp_get_max_threads();
+  const std::size_t chunks =
+      std::max<std::size_t>(1, std::min<std::size_t>(static_cast<std::size_t>(threads), n / 4096));
+  std::vector<std::size_t> ends(chunks);
+  const auto bound = [&](std::size_t c) { return n * c / chunks; };
+#pragma omp parallel for num_threads(static_cast <int>(chunks)) schedule(static, 1)
+  for (std::size_t c = 0; c < chunks; ++c) {
+    char* start = scratch + bound(c) * kMaxRow;
+    ends[c] = static_cast<std::size_t>(
+        format_rows(start, first, estimates, source, bound(c), bound(c + 1)) - start);
+  }
+  std::size_t at = ends[0];
+  for (std::size_t c = 1; c < chunks; ++c) {
+    std::memmove(scratch + at, scratch + bound(c) * kMaxRow, ends[c]);
+    at += ends[c];
+  }
+  return at;
 }
 
 }  // namespace
@@ -65,43 +117,37 @@ std::string estimate_csv_header() {
   return h;
 }
 
-void write_estimate_csv(const std::string& path, const std::string& shown,
-                        std::span<const VertexEstimate> estimates, std::span<const int> source) {
-  std::FILE* f = std::fopen(path.c_str(), "w");
-  if (f == nullptr) throw InputError(shown + ": cannot open for writing");
-  std::fputs((estimate_csv_header() + "\n").c_str(), f);
-  for (size_t v = 0; v < estimates.size(); ++v) {
-    const VertexEstimate& e = estimates[v];
-    std::fprintf(f, "%zu", source.empty() ? v : static_cast<size_t>(source[v]));
-    for (const EstimateColumn& c : kColumns) {
-      if (!c.in_csv) continue;
-      std::fputc(',', f);
-      if (is_status(c))
-        std::fputs(to_string(e.status), f);
-      else if (c.integer)
-        std::fprintf(f, "%d", static_cast<int>(c.value(e)));
-      else
-        put_double(f, c.value(e));
-    }
-    std::fputc('\n', f);
+void append_estimate_csv_rows(std::string& out, int first,
+                              std::span<const VertexEstimate> estimates,
+                              std::span<const int> source, int threads) {
+  const std::unique_ptr<char[]> scratch(new char[estimates.size() * kMaxRow + 1]);
+  out.append(scratch.get(), format_csv_block(scratch.get(), first, estimates, source, threads));
+}
+
+EstimateCsvWriter::EstimateCsvWriter(const std::string& path, std::span<const int> source,
+                                     int threads)
+    : file_(path), source_(source), threads_(threads) {
+  file_.append(estimate_csv_header() + "\n");
+}
+
+void EstimateCsvWriter::write(int first, std::span<const VertexEstimate> estimates) {
+  if (estimates.size() * kMaxRow + 1 > capacity_) {
+    capacity_ = estimates.size() * kMaxRow + 1;
+    scratch_.reset(new char[capacity_]);
   }
-  const bool ok = std::ferror(f) == 0;
-  if (std::fclose(f) != 0 || !ok) throw InputError(shown + ": write failed");
+  const std::size_t bytes = format_csv_block(scratch_.get(), first, estimates, source_, threads_);
+  file_.append(std::string_view(scratch_.get(), bytes));
+}
+
+void EstimateCsvWriter::commit() {
+  file_.commit();
 }
 
 void write_estimate_csv_atomic(const std::string& path, std::span<const VertexEstimate> estimates,
-                               std::span<const int> source) {
-  const std::string tmp = temp_path(path);
-  try {
-    write_estimate_csv(tmp, path, estimates, source);
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) throw InputError(path + ": cannot write (" + ec.message() + ")");
-  } catch (...) {
-    std::error_code ec;
-    std::filesystem::remove(tmp, ec);
-    throw;
-  }
+                               std::span<const int> source, int threads) {
+  EstimateCsvWriter writer(path, source, threads);
+  writer.write(0, estimates);
+  writer.commit();
 }
 
 std::vector<VertexProperty> estimate_ply_properties(std::span<const VertexEstimate> estimates) {
@@ -113,6 +159,18 @@ std::vector<VertexProperty> estimate_ply_properties(std::span<const VertexEstima
     props.push_back(std::move(p));
   }
   return props;
+}
+
+std::vector<PlyWriter::Property> estimate_ply_types() {
+  std::vector<PlyWriter::Property> types;
+  for (const EstimateColumn& c : kColumns)
+    if (c.in_ply) types.push_back({c.name, c.integer});
+  return types;
+}
+
+void estimate_ply_row(const VertexEstimate& e, double* row) {
+  for (const EstimateColumn& c : kColumns)
+    if (c.in_ply) *row++ = c.value(e);
 }
 
 }  // namespace curvbench

@@ -3,15 +3,20 @@
 //
 //   CSV  vertex,nx,ny,nz,k1,k2,H,K,d1x,d1y,d1z,d2x,d2y,d2z,degree,points,status
 //        numbers as the shortest text that reads back to the exact double (std::to_chars),
-//        "nan" for NaN, the status as a word (ok, degree_reduced, failed, excluded)
+//        "nan" for NaN, the status as a word (ok, degree_reduced, failed, excluded, disk_cut,
+//        sign_undetermined)
 //   PLY  nx,ny,nz,k1,k2,H,K,d1x,d1y,d1z,d2x,d2y,d2z,degree,points,ring,status
-//        status as its integer code 0..3
+//        status as its integer code 0..5
+// Both are written block by block as the estimates come (EstimateCsvWriter, PlyWriter with
+// estimate_ply_types / estimate_ply_row), or at once from a whole vector (the same bytes).
 #pragma once
 
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "core/atomic_file.h"
 #include "mesh/io.h"
 #include "methods/estimator.h"
 
@@ -32,17 +37,42 @@ std::span<const EstimateColumn> estimate_columns();
 /// The CSV header line (without newline): "vertex," then the CSV columns.
 std::string estimate_csv_header();
 
-/// Writes the estimates as CSV to `path` (not atomic; see write_estimate_csv_atomic). Errors
-/// throw InputError naming `shown` (the user's output file). `source`: the file index of each
-/// vertex for the "vertex" column (empty: the identity).
-void write_estimate_csv(const std::string& path, const std::string& shown,
-                        std::span<const VertexEstimate> estimates, std::span<const int> source);
+/// Appends the CSV rows of the estimates of vertices first, first + 1, ... to `out`: the block is
+/// cut into `threads` chunks (< 1: the OpenMP default) formatted in parallel and joined in order,
+/// so the bytes do not depend on the thread count. `source`: the file index of every vertex of the
+/// mesh for the "vertex" column (empty: the identity).
+void append_estimate_csv_rows(std::string& out, int first,
+                              std::span<const VertexEstimate> estimates,
+                              std::span<const int> source, int threads = 1);
 
-/// The same, streamed to temp_path(path) and renamed into place (no partial file on failure).
+/// The estimate CSV written block by block (the header first), through the project's atomic
+/// file writer: a failure leaves no file. `source` as above; it must outlive the writer.
+class EstimateCsvWriter {
+ public:
+  EstimateCsvWriter(const std::string& path, std::span<const int> source, int threads = 1);
+  /// Appends the rows of vertices [first, first + estimates.size()).
+  void write(int first, std::span<const VertexEstimate> estimates);
+  /// Closes the file and renames it into place.
+  void commit();
+
+ private:
+  AtomicFile file_;
+  std::span<const int> source_;
+  int threads_;
+  std::unique_ptr<char[]> scratch_;  ///< formatted rows of one block
+  std::size_t capacity_ = 0;
+};
+
+/// Writes the whole CSV at once (EstimateCsvWriter with one block).
 void write_estimate_csv_atomic(const std::string& path, std::span<const VertexEstimate> estimates,
-                               std::span<const int> source);
+                               std::span<const int> source, int threads = 1);
 
 /// The PLY vertex properties of the estimates (write_mesh's `properties`).
 std::vector<VertexProperty> estimate_ply_properties(std::span<const VertexEstimate> estimates);
+
+/// Names and types of the same properties, for PlyWriter, and one vertex's values in that order
+/// (estimate_ply_types().size() of them written to `row`).
+std::vector<PlyWriter::Property> estimate_ply_types();
+void estimate_ply_row(const VertexEstimate& e, double* row);
 
 }  // namespace curvbench

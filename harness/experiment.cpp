@@ -7,6 +7,7 @@
 
 #include "core/errors.h"
 #include "core/text.h"
+#include "methods/vertex_normals.h"
 
 namespace curvbench {
 
@@ -140,6 +141,12 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
             m.adaptive = to_bool(v, where);
           else if (k == "weight-power")
             m.weight_power = parse_double(v, where);
+          else if (k == "vertex-normals")
+            m.vertex_normals = parse_vertex_normals(v);
+          else if (k == "quadric-constant")
+            m.quadric_constant = to_bool(v, where);
+          else if (k == "ball-factor")
+            m.ball_factor = parse_double(v, where);
           else if (k == "vertex-set") {
             m.vertex_set = parse_vertex_set(v);
             m.has_vertex_set = true;
@@ -155,6 +162,16 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
               throw InputError(where + ": timeout must be a positive number of seconds");
           } else
             throw InputError(where + ": unknown method option '" + k + "'");
+        }
+        if (!m.is_external() && (m.vertex_normals != VertexNormals::method_default ||
+                                 m.quadric_constant || m.ball_factor != 0.0)) {
+          // A method-specific option on a method that does not use it, or a bad value (e.g. a
+          // negative ball factor), is reported here, with the line (make_estimator checks both).
+          EstimatorOptions o;
+          o.vertex_normals = m.vertex_normals;
+          o.quadric_constant = m.quadric_constant;
+          o.ball_factor = m.ball_factor;
+          make_estimator(m.spec, o);
         }
         if (m.is_external()) {
           if (m.label.empty()) throw InputError(where + ": method external needs name=NAME");

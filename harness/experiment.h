@@ -6,12 +6,14 @@
 //   title       "Noise-free torus, degree 2"    one line
 //   section     5.1                             paper section
 //   mesh        torus-structured levels=1,2,3,4 one line per mesh family (meshgen families)
-//   noise       order=3 seed=11                 optional controlled noise (docs/algorithms.md §10.3)
-//   noisy       yes                             input is noisy: default rings +0.5 (paper §5.3)
-//   vertex-set  all                             all | interior | boundary-ring (default all)
+//   noise       order=3 seed=11                 optional controlled noise (docs/algorithms.md
+//   §10.3) noisy       yes                             input is noisy: default rings +0.5 (paper
+//   §5.3) vertex-set  all                             all | interior | boundary-ring (default all)
 //   method      lhf-2 [ring=2.5] [vertex-set=interior]   one line per method and degree
 //               ablation options: centre=yes|no qr-tol=X safeguard=yes|no adaptive=yes|no
 //               weight-power=X, and label="LHF-2 interp" to tell variants apart
+//               options of single methods: vertex-normals=area|angle|max (discrete
+//               operators), quadric-constant=yes|no (quadric), ball-factor=C (normal-cycle)
 //               external name=N command="prog {mesh} {out}" [timeout=SECONDS]: an outside
 //               estimator (external_estimator.h), labelled N, limited to SECONDS per case
 //               (default 600)
@@ -27,6 +29,7 @@
 #include <vector>
 
 #include "harness/metrics.h"
+#include "methods/estimator.h"
 
 namespace curvbench {
 
@@ -47,6 +50,9 @@ struct ExperimentMethod {
   bool normal_safeguard = true;  ///< safeguard=yes|no (gamma of eq. 15)
   bool adaptive = true;          ///< adaptive=yes|no (half-ring growth)
   double weight_power = -1.0;    ///< weight-power=X (< 0: eq. 15's d/4)
+  VertexNormals vertex_normals = VertexNormals::method_default;  ///< vertex-normals=W
+  bool quadric_constant = false;                                 ///< quadric-constant=yes|no
+  double ball_factor = 0.0;                                      ///< ball-factor=C
   // spec "external": an outside estimator (external_estimator.h); its name is the label.
   std::string command;           ///< command=".. {mesh} .. {out}"
   double timeout_seconds = 0.0;  ///< timeout=S (<= 0: kDefaultExternalTimeout)

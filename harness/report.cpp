@@ -10,9 +10,11 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <set>
 #include <sstream>
 
+#include "core/atomic_file.h"
 #include "core/build_info.h"
 #include "core/errors.h"
 #include "harness/metrics.h"
@@ -197,15 +199,23 @@ bool render_plot(const std::string& base, const std::string& title,
       plot << ", " << format_double(0.5 * e0) << "*(x/" << format_double(h0) << ")**" << p
            << " with lines dt 2 lw 1 lc rgb '#808080' title 'O(h^" << p << ")'";
   plot << "\n";
-  // Script and images under temporary names (swept by remove_stale_temp_files if killed).
+  // The images are written by gnuplot to the temporary files of the project's atomic writer
+  // (core/atomic_file.h) and renamed into place only if it succeeds; the script under a temporary
+  // name too (swept by remove_stale_temp_files if killed).
+  std::unique_ptr<AtomicFile> png, svg;
+  try {
+    png = std::make_unique<AtomicFile>(base + ".png");
+    svg = std::make_unique<AtomicFile>(base + ".svg");
+  } catch (const InputError&) {
+    return false;
+  }
   const std::string script_path = temp_path(base + ".gp");
-  const std::string png = temp_path(base + ".png"), svg = temp_path(base + ".svg");
   {
     std::ofstream out(script_path);
-    out << gp.str() << "set terminal pngcairo size 900,560 font 'sans,11'\nset output '" << png
-        << "'\n"
-        << plot.str() << "set terminal svg size 900,560 font 'sans,11'\nset output '" << svg
-        << "'\n"
+    out << gp.str() << "set terminal pngcairo size 900,560 font 'sans,11'\nset output '"
+        << png->temporary() << "'\n"
+        << plot.str() << "set terminal svg size 900,560 font 'sans,11'\nset output '"
+        << svg->temporary() << "'\n"
         << plot.str() << "unset output\n";
   }
   const std::string cmd = "gnuplot '" + script_path + "' > /dev/null 2>&1";
@@ -213,17 +223,18 @@ bool render_plot(const std::string& base, const std::string& title,
   std::error_code ec;
   fs::remove(script_path, ec);
   if (rc != 0) {
-    fs::remove(png, ec);
-    fs::remove(svg, ec);
     // The shell reports a child killed by signal s as exit status 128 + s.
     const int status = WIFEXITED(rc) ? WEXITSTATUS(rc) - 128 : WIFSIGNALED(rc) ? WTERMSIG(rc) : 0;
     if (status == SIGINT || status == SIGTERM) std::raise(status);
+    return false;  // the temporaries are removed by png's and svg's destructors
+  }
+  try {
+    png->commit();
+    svg->commit();
+  } catch (const InputError&) {
     return false;
   }
-  fs::rename(png, base + ".png", ec);
-  if (ec) return false;
-  fs::rename(svg, base + ".svg", ec);
-  return !ec;
+  return true;
 }
 
 std::string write_report(const std::vector<Experiment>& experiments, const ReportOptions& options) {

@@ -15,6 +15,7 @@
 #include "harness/experiment.h"
 #include "harness/results_table.h"
 #include "meshgen/generated_mesh.h"
+#include "methods/neighbourhood_table.h"
 
 namespace curvbench {
 
@@ -22,6 +23,9 @@ namespace curvbench {
 struct ScoredMesh {
   GeneratedMesh generated;
   std::vector<SurfacePoint> exact;  ///< surface->evaluate(exact_points.row(i))
+  /// The starting neighbourhoods of generated.mesh, gathered once per spec and shared by every
+  /// method and degree run on it (bit-identical results; methods/neighbourhood_table.h).
+  std::unique_ptr<NeighbourhoodCache> neighbourhoods;
 };
 
 /// Generated meshes keyed by (family, level, noise order, seed); generated on first use.

@@ -1,7 +1,8 @@
 // Mesh file input and output (contract in io.h).
 //
-// Reading: read_mesh maps the whole file into memory (or reads it), picks the reader by extension
-// (read_off.cpp, read_obj.cpp, read_ply.cpp: one validating pass each, which builds the polygon
+// Reading: read_mesh picks the reader by extension and hands it the file: binary PLY read in
+// blocks, anything else mapped into memory (or read) whole (read_off.cpp, read_obj.cpp,
+// read_ply.cpp: one validating pass each, which builds the polygon
 // soup as it goes and reports the first problem with its line or element number; see
 // read_soup.h), frees the file's bytes, and turns the soup into a Mesh here (soup_to_mesh:
 // defects dropped and counted, --skip-invalid, fan triangulation). CGAL's readers are not used:
@@ -28,13 +29,17 @@
 #include <cstring>
 #include <filesystem>
 #include <limits>
+#include <memory>
 #include <sstream>
+#include <stdexcept>
 #include <string_view>
 #include <system_error>
+#include <type_traits>
 #include <utility>
 
 #include "core/atomic_file.h"
 #include "core/errors.h"
+#include "core/huge_pages.h"
 #include "core/text.h"
 #include "mesh/read_soup.h"
 
@@ -95,32 +100,34 @@ std::string_view unsigned_plus(std::string_view token) {
   return token;
 }
 
-}  // namespace
-
-Number parse_double(std::string_view token, double* value) {
+// One real number token as a double or a float (std::from_chars, no locale).
+template <class Real>
+Number parse_real(std::string_view token, Real* value) {
   const std::string_view s = unsigned_plus(token);
   if (s.empty()) return Number::kBad;
   const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), *value);
   if (ec == std::errc::invalid_argument || ptr != s.data() + s.size()) return Number::kBad;
   if (ec == std::errc::result_out_of_range) {
-    // from_chars does not say which way; strtod returns +-HUGE_VAL on overflow, a tiny value on
-    // underflow (which the stream extraction accepts).
-    *value = std::strtod(std::string(s).c_str(), nullptr);
+    // from_chars does not say which way; strtod/strtof return +-HUGE_VAL on overflow, a tiny
+    // value on underflow (which the stream extraction accepts).
+    const std::string text(s);
+    if constexpr (std::is_same_v<Real, float>)
+      *value = std::strtof(text.c_str(), nullptr);
+    else
+      *value = std::strtod(text.c_str(), nullptr);
     return std::isinf(*value) ? Number::kOverflow : Number::kOk;
   }
   return Number::kOk;
 }
 
+}  // namespace
+
+Number parse_double(std::string_view token, double* value) {
+  return parse_real(token, value);
+}
+
 Number parse_float(std::string_view token, float* value) {
-  const std::string_view s = unsigned_plus(token);
-  if (s.empty()) return Number::kBad;
-  const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), *value);
-  if (ec == std::errc::invalid_argument || ptr != s.data() + s.size()) return Number::kBad;
-  if (ec == std::errc::result_out_of_range) {
-    *value = std::strtof(std::string(s).c_str(), nullptr);
-    return std::isinf(*value) ? Number::kOverflow : Number::kOk;
-  }
-  return Number::kOk;
+  return parse_real(token, value);
 }
 
 bool parse_integer(std::string_view token, long long* value) {
@@ -156,7 +163,8 @@ bool has_repeated_index(const std::int32_t* p, std::size_t k, std::vector<std::i
 /// Builds the Mesh from a reader's soup: drops polygons with fewer than 3 vertices or a repeated
 /// index; refuses non-finite coordinates or, with skip_invalid, drops those vertices and the
 /// polygons using them and renumbers; fan-triangulates (v0, vi, vi+1) the rest.
-/// Takes the soup by value and frees it before the Mesh builds its adjacency (peak memory).
+/// Takes the soup by value and frees it before the Mesh builds its adjacency (peak memory). The
+/// usual file (triangles, every vertex finite) becomes the Mesh without a copy.
 Mesh soup_to_mesh(const std::string& path, const std::string& format, Soup soup,
                   MeshReadReport* report) {
   const std::size_t n = soup.num_vertices();
@@ -167,19 +175,25 @@ Mesh soup_to_mesh(const std::string& path, const std::string& format, Soup soup,
   const double* xyz = soup.xyz.data();
 
   // Vertices to skip: non-finite tokens seen by the text readers and non-finite values decoded
-  // from binary PLY (or made by a homogeneous OFF division).
-  std::vector<unsigned char> skip(n, 0);
-  for (const unsigned long long v : soup.nonfinite) skip[v] = 1;
+  // from binary PLY (or made by a homogeneous OFF division). `skip` is made on the first one.
+  std::vector<unsigned char> skip;
+  if (!soup.nonfinite.empty()) {
+    skip.assign(n, 0);
+    for (const unsigned long long v : soup.nonfinite) skip[v] = 1;
+  }
   std::vector<int> skipped;
   for (std::size_t v = 0; v < n; ++v) {
     const double* q = xyz + 3 * v;
-    if (!skip[v] && std::isfinite(q[0]) && std::isfinite(q[1]) && std::isfinite(q[2])) continue;
+    if ((skip.empty() || !skip[v]) && std::isfinite(q[0]) && std::isfinite(q[1]) &&
+        std::isfinite(q[2]))
+      continue;
     if (!soup.skip_invalid) {
       std::ostringstream msg;
       msg << "vertex " << v << " has a non-finite coordinate (" << q[0] << ", " << q[1] << ", "
           << q[2] << ")" << kSkipHint;
       fail(path, msg.str());
     }
+    if (skip.empty()) skip.assign(n, 0);
     skip[v] = 1;
     skipped.push_back(static_cast<int>(v));
   }
@@ -200,26 +214,35 @@ Mesh soup_to_mesh(const std::string& path, const std::string& format, Soup soup,
   }
   const auto new_index = [&](std::int32_t v) { return index.empty() ? v : index[v]; };
 
-  // Classify the polygons.
+  // Classify the polygons (the same test again when copying them, instead of a stored fate).
   enum Fate : unsigned char { kKeep, kFew, kSkipped, kRepeated };
-  std::vector<unsigned char> fate(num_polygons, kKeep);
   std::vector<std::int32_t> scratch;
+  const auto fate = [&](const std::int32_t* p, std::size_t k) {
+    // (Every index was checked by the reader: 0 <= p[i] < n.)
+    if (k < 3) return kFew;
+    if (!skipped.empty() && std::any_of(p, p + k, [&](std::int32_t i) { return skip[i] != 0; }))
+      return kSkipped;
+    if (has_repeated_index(p, k, scratch)) return kRepeated;
+    return kKeep;
+  };
   unsigned long long triangles = 0;
   int kept = 0, triangulated = 0, few = 0, repeated = 0, faces_skipped = 0;
   for (std::size_t f = 0; f < num_polygons; ++f) {
-    const std::int32_t* p = soup.indices.data() + soup.starts[f];
-    const std::size_t k = soup.starts[f + 1] - soup.starts[f];
-    // (Every index was checked by the reader: 0 <= p[i] < n.)
-    if (k < 3) {
-      fate[f] = kFew, ++few;
-    } else if (!skipped.empty() && std::any_of(p, p + k, [&](std::int32_t i) { return skip[i]; })) {
-      fate[f] = kSkipped, ++faces_skipped;
-    } else if (has_repeated_index(p, k, scratch)) {
-      fate[f] = kRepeated, ++repeated;
-    } else {
-      ++kept;
-      triangles += k - 2;
-      if (k > 3) ++triangulated;
+    const std::size_t k = soup.polygon_size(f);
+    switch (fate(soup.indices.data() + soup.polygon_begin(f), k)) {
+      case kFew:
+        ++few;
+        break;
+      case kSkipped:
+        ++faces_skipped;
+        break;
+      case kRepeated:
+        ++repeated;
+        break;
+      case kKeep:
+        ++kept;
+        triangles += k - 2;
+        if (k > 3) ++triangulated;
     }
   }
   if (triangles > kMaxCount) fail(path, "too many triangles after fan triangulation");
@@ -233,29 +256,40 @@ Mesh soup_to_mesh(const std::string& path, const std::string& format, Soup soup,
                    " (" + why + ")");
   }
 
-  VertexMatrix V(kept_vertices, 3);
-  for (std::size_t v = 0; v < n; ++v) {
-    if (skip[v]) continue;
-    const Eigen::Index r = new_index(static_cast<std::int32_t>(v));
-    V(r, 0) = xyz[3 * v];
-    V(r, 1) = xyz[3 * v + 1];
-    V(r, 2) = xyz[3 * v + 2];
-  }
-  std::vector<double>().swap(soup.xyz);
-  // Fan triangulation (v0, vi, vi+1) of each kept polygon.
-  FaceMatrix F(static_cast<Eigen::Index>(triangles), 3);
-  Eigen::Index t = 0;
-  for (std::size_t f = 0; f < num_polygons; ++f) {
-    if (fate[f] != kKeep) continue;
-    const std::int32_t* p = soup.indices.data() + soup.starts[f];
-    const std::size_t k = soup.starts[f + 1] - soup.starts[f];
-    for (std::size_t i = 1; i + 1 < k; ++i, ++t) {
-      F(t, 0) = new_index(p[0]);
-      F(t, 1) = new_index(p[i]);
-      F(t, 2) = new_index(p[i + 1]);
+  VertexMatrix V;
+  if (skipped.empty()) {
+    V = soup.xyz.take();
+  } else {
+    V.resize(kept_vertices, 3);
+    for (std::size_t v = 0; v < n; ++v) {
+      if (skip[v]) continue;
+      const Eigen::Index r = new_index(static_cast<std::int32_t>(v));
+      V(r, 0) = xyz[3 * v];
+      V(r, 1) = xyz[3 * v + 1];
+      V(r, 2) = xyz[3 * v + 2];
     }
   }
-  std::vector<std::int32_t>().swap(soup.indices);
+  soup.xyz.release();
+  // Fan triangulation (v0, vi, vi+1) of each kept polygon.
+  FaceMatrix F;
+  if (soup.all_triangles() && static_cast<std::size_t>(kept) == num_polygons && index.empty()) {
+    F = soup.indices.take();
+  } else {
+    F.resize(static_cast<Eigen::Index>(triangles), 3);
+    advise_huge_pages(F.data(), sizeof(int) * static_cast<std::size_t>(F.size()));
+    Eigen::Index t = 0;
+    for (std::size_t f = 0; f < num_polygons; ++f) {
+      const std::int32_t* p = soup.indices.data() + soup.polygon_begin(f);
+      const std::size_t k = soup.polygon_size(f);
+      if (fate(p, k) != kKeep) continue;
+      for (std::size_t i = 1; i + 1 < k; ++i, ++t) {
+        F(t, 0) = new_index(p[0]);
+        F(t, 1) = new_index(p[i]);
+        F(t, 2) = new_index(p[i + 1]);
+      }
+    }
+  }
+  soup.indices.release();
   std::vector<std::size_t>().swap(soup.starts);
 
   Mesh mesh(std::move(V), std::move(F), path);
@@ -293,28 +327,12 @@ void append_le(std::string& out, T v) {
   out.append(b, sizeof(T));
 }
 
+/// One value per vertex in every property (names and values are checked by PlyWriter).
 void check_properties(const Mesh& mesh, const std::vector<VertexProperty>& properties) {
-  std::vector<std::string> names = {"x", "y", "z"};
-  for (const VertexProperty& p : properties) {
-    if (p.name.empty() ||
-        std::any_of(p.name.begin(), p.name.end(), [](char c) { return c <= ' ' || c >= 0x7f; }))
-      throw UsageError("vertex property name '" + p.name + "' is empty or not a printable word");
-    if (std::find(names.begin(), names.end(), p.name) != names.end())
-      throw UsageError("vertex property '" + p.name + "' given twice (or clashes with x/y/z)");
-    names.push_back(p.name);
+  for (const VertexProperty& p : properties)
     if (p.values.size() != static_cast<std::size_t>(mesh.num_vertices()))
       throw UsageError("vertex property '" + p.name + "' has " + std::to_string(p.values.size()) +
                        " values for " + std::to_string(mesh.num_vertices()) + " vertices");
-    if (p.integer)
-      for (std::size_t v = 0; v < p.values.size(); ++v) {
-        const double x = p.values[v];
-        if (!(x >= std::numeric_limits<std::int32_t>::min() &&
-              x <= std::numeric_limits<std::int32_t>::max() && std::trunc(x) == x))
-          throw UsageError("integer vertex property '" + p.name + "' has value " +
-                           std::to_string(x) + " at vertex " + std::to_string(v) +
-                           ", not a 32-bit integer");
-      }
-  }
 }
 
 /// The bytes of a file for a reader: a regular file is mapped read-only into memory (no copy,
@@ -394,7 +412,24 @@ Mesh read_mesh(const std::string& path, MeshReadReport* report, const MeshReadOp
                    : "unknown extension '." + format + "' (expected .off, .obj or .ply)");
 
   Soup soup;
-  {
+  // Binary PLY is read from the file in blocks (read_binary_ply_file); everything else from the
+  // whole file mapped into memory.
+  bool read = false;
+  if (format == "ply") {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    struct stat info;
+    if (fd >= 0 && ::fstat(fd, &info) == 0 && S_ISREG(info.st_mode) && info.st_size > 0) {
+      try {
+        read = read_binary_ply_file(path, fd, static_cast<unsigned long long>(info.st_size),
+                                    options.skip_invalid, &soup);
+      } catch (...) {
+        ::close(fd);
+        throw;
+      }
+    }
+    if (fd >= 0) ::close(fd);
+  }
+  if (!read) {
     const FileBytes file(path);
     const std::string_view text = file.bytes();
     if (format == "off")
@@ -469,37 +504,123 @@ void write_off(const std::string& path, const Mesh& mesh,
   file.commit();
 }
 
-void write_ply(const std::string& path, const Mesh& mesh,
-               const std::vector<VertexProperty>& properties,
-               const std::vector<std::string>& comments) {
-  check_properties(mesh, properties);
+struct PlyWriter::Impl {
+  AtomicFile file;
+  const Mesh& mesh;
+  std::vector<Property> properties;
+  int written = 0;
+
+  Impl(const std::string& path, const Mesh& m, std::vector<Property> p)
+      : file(path), mesh(m), properties(std::move(p)) {}
+};
+
+PlyWriter::PlyWriter(const std::string& path, const Mesh& mesh, std::vector<Property> properties,
+                     const std::vector<std::string>& comments) {
+  std::vector<std::string> names = {"x", "y", "z"};
+  for (const Property& p : properties) {
+    if (p.name.empty() ||
+        std::any_of(p.name.begin(), p.name.end(), [](char c) { return c <= ' ' || c >= 0x7f; }))
+      throw UsageError("vertex property name '" + p.name + "' is empty or not a printable word");
+    if (std::find(names.begin(), names.end(), p.name) != names.end())
+      throw UsageError("vertex property '" + p.name + "' given twice (or clashes with x/y/z)");
+    names.push_back(p.name);
+  }
   check_comments(comments);
-  AtomicFile file(path);
-  std::string& header = file.buffer();
+  impl_ = std::make_unique<Impl>(path, mesh, std::move(properties));
+  std::string& header = impl_->file.buffer();
   header += "ply\nformat binary_little_endian 1.0\ncomment written by curvbench\n";
   for (const std::string& c : comments) header += "comment " + c + "\n";
   header += "element vertex " + std::to_string(mesh.num_vertices()) + "\n";
   header += "property double x\nproperty double y\nproperty double z\n";
-  for (const VertexProperty& p : properties)
+  for (const Property& p : impl_->properties)
     header += std::string("property ") + (p.integer ? "int " : "double ") + p.name + "\n";
   header += "element face " + std::to_string(mesh.num_faces()) + "\n";
   header += "property list uchar int vertex_indices\nend_header\n";
-  for (int v = 0; v < mesh.num_vertices(); ++v) {
-    std::string& out = file.buffer();
-    for (int c = 0; c < 3; ++c) append_le(out, mesh.vertices()(v, c));
-    for (const VertexProperty& p : properties) {
-      if (p.integer)
-        append_le(out, static_cast<std::int32_t>(p.values[v]));
-      else
-        append_le(out, p.values[v]);
+}
+
+PlyWriter::~PlyWriter() = default;
+
+void PlyWriter::write_vertices(int first, int count, const double* values) {
+  Impl& w = *impl_;
+  if (first != w.written || count < 0 || first + count > w.mesh.num_vertices())
+    throw std::logic_error("PlyWriter::write_vertices: vertices out of order");
+  const std::size_t P = w.properties.size();
+  for (int i = 0; i < count; ++i) {
+    const double* row = values + static_cast<std::size_t>(i) * P;
+    for (std::size_t p = 0; p < P; ++p) {
+      const double x = row[p];
+      if (w.properties[p].integer &&
+          !(x >= std::numeric_limits<std::int32_t>::min() &&
+            x <= std::numeric_limits<std::int32_t>::max() && std::trunc(x) == x))
+        throw UsageError("integer vertex property '" + w.properties[p].name + "' has value " +
+                         std::to_string(x) + " at vertex " + std::to_string(first + i) +
+                         ", not a 32-bit integer");
     }
   }
-  for (int f = 0; f < mesh.num_faces(); ++f) {
-    std::string& out = file.buffer();
-    append_le(out, static_cast<std::uint8_t>(3));
-    for (int k = 0; k < 3; ++k) append_le(out, static_cast<std::int32_t>(mesh.face_vertex(f, k)));
+  const std::size_t record = 24 + [&] {
+    std::size_t bytes = 0;
+    for (const Property& p : w.properties) bytes += p.integer ? 4 : 8;
+    return bytes;
+  }();
+  std::string block;
+  block.reserve(record * static_cast<std::size_t>(count));
+  for (int i = 0; i < count; ++i) {
+    const int v = first + i;
+    for (int c = 0; c < 3; ++c) append_le(block, w.mesh.vertices()(v, c));
+    const double* row = values + static_cast<std::size_t>(i) * P;
+    for (std::size_t p = 0; p < P; ++p) {
+      if (w.properties[p].integer)
+        append_le(block, static_cast<std::int32_t>(row[p]));
+      else
+        append_le(block, row[p]);
+    }
   }
-  file.commit();
+  w.file.append(block);
+  w.written += count;
+}
+
+void PlyWriter::commit() {
+  Impl& w = *impl_;
+  if (w.written != w.mesh.num_vertices())
+    throw std::logic_error("PlyWriter::commit: " + std::to_string(w.written) + " of " +
+                           std::to_string(w.mesh.num_vertices()) + " vertices written");
+  std::string block;
+  const int m = w.mesh.num_faces();
+  constexpr int kFaces = 1 << 16;
+  for (int f0 = 0; f0 < m; f0 += kFaces) {
+    block.clear();
+    for (int f = f0; f < std::min(m, f0 + kFaces); ++f) {
+      append_le(block, static_cast<std::uint8_t>(3));
+      for (int k = 0; k < 3; ++k)
+        append_le(block, static_cast<std::int32_t>(w.mesh.face_vertex(f, k)));
+    }
+    w.file.append(block);
+  }
+  w.file.commit();
+}
+
+void write_ply(const std::string& path, const Mesh& mesh,
+               const std::vector<VertexProperty>& properties,
+               const std::vector<std::string>& comments) {
+  check_properties(mesh, properties);
+  std::vector<PlyWriter::Property> types;
+  for (const VertexProperty& p : properties) types.push_back({p.name, p.integer});
+  PlyWriter writer(path, mesh, std::move(types), comments);
+  // Rows of property values, a block of vertices at a time.
+  const int n = mesh.num_vertices();
+  const std::size_t P = properties.size();
+  constexpr int kBlock = 1 << 16;
+  std::vector<double> rows;
+  for (int first = 0; first < n; first += kBlock) {
+    const int count = std::min(kBlock, n - first);
+    rows.resize(static_cast<std::size_t>(count) * P);
+    for (int i = 0; i < count; ++i)
+      for (std::size_t p = 0; p < P; ++p)
+        rows[static_cast<std::size_t>(i) * P + p] =
+            properties[p].values[static_cast<std::size_t>(first + i)];
+    writer.write_vertices(first, count, rows.data());
+  }
+  writer.commit();
 }
 
 void write_mesh(const std::string& path, const Mesh& mesh,

@@ -10,6 +10,7 @@
 // Every failure throws InputError with a one-line message naming the file and the problem.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -78,6 +79,41 @@ void write_off(const std::string& path, const Mesh& mesh,
 void write_ply(const std::string& path, const Mesh& mesh,
                const std::vector<VertexProperty>& properties = {},
                const std::vector<std::string>& comments = {});
+
+/// Binary little-endian PLY written vertex block by vertex block, so that per-vertex properties
+/// never need to be held for the whole mesh: the header at construction, then the vertex records
+/// (x, y, z and the properties) of consecutive vertex ranges from the first vertex on, then the
+/// faces at commit(). The bytes are those of write_ply with the same properties and comments
+/// (write_ply is this writer with one pass over its property arrays); a failure leaves no file
+/// (core/atomic_file.h). `mesh` must outlive the writer; its faces are read at commit().
+class PlyWriter {
+ public:
+  /// A vertex property's name and type (its values come with each block).
+  struct Property {
+    std::string name;
+    bool integer = false;  ///< PLY int (the values must be 32-bit integers) instead of double
+  };
+
+  /// Throws UsageError for a bad property name (empty, not a printable word, x/y/z or given
+  /// twice) or a comment of several lines; InputError if the file cannot be written.
+  PlyWriter(const std::string& path, const Mesh& mesh, std::vector<Property> properties,
+            const std::vector<std::string>& comments = {});
+  ~PlyWriter();
+  PlyWriter(const PlyWriter&) = delete;
+  PlyWriter& operator=(const PlyWriter&) = delete;
+
+  /// Appends the records of vertices [first, first + count), where first is the number of
+  /// vertices written so far: values[i * P + p] is property p of vertex first + i (P properties).
+  /// Throws UsageError for an integer property whose value is not a 32-bit integer.
+  void write_vertices(int first, int count, const double* values);
+
+  /// Writes the faces (after all vertices), closes and renames into place.
+  void commit();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 /// Writes OFF or PLY by extension (.off / .ply); throws UsageError for other extensions.
 /// `comments` go into the header of either format. Like write_off and write_ply, it writes to a

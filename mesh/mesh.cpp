@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "core/huge_pages.h"
 
 namespace curvbench {
 
@@ -54,13 +55,18 @@ Mesh::Mesh(VertexMatrix vertices, FaceMatrix faces, const std::string& source)
   }
 
   // Vertex -> faces, compressed (counting sort keeps faces in increasing order).
+  // The big arrays are advised to huge pages before they are first written (core/huge_pages.h).
+  reserve_huge(vf_offsets_, static_cast<size_t>(n) + 1);
   vf_offsets_.assign(n + 1, 0);
   for (int f = 0; f < m; ++f)
     for (int k = 0; k < 3; ++k) ++vf_offsets_[F_(f, k) + 1];
   for (int v = 0; v < n; ++v) vf_offsets_[v + 1] += vf_offsets_[v];
+  reserve_huge(vf_faces_, static_cast<size_t>(3) * m);
   vf_faces_.resize(static_cast<size_t>(3) * m);
   {
-    std::vector<int> cursor(vf_offsets_.begin(), vf_offsets_.end() - 1);
+    std::vector<int> cursor;
+    reserve_huge(cursor, static_cast<size_t>(n));
+    cursor.assign(vf_offsets_.begin(), vf_offsets_.end() - 1);
     for (int f = 0; f < m; ++f)
       for (int k = 0; k < 3; ++k) vf_faces_[cursor[F_(f, k)]++] = f;
   }
@@ -71,7 +77,9 @@ Mesh::Mesh(VertexMatrix vertices, FaceMatrix faces, const std::string& source)
   // Face -> face across each edge, from the half-edges grouped by undirected edge {lo, hi} in
   // increasing (lo, hi) order: the half-edges of vertex lo's edges are among its faces' (vf_),
   // gathered per vertex and sorted by (hi, face, k). No mesh-sized temporary.
+  reserve_huge(ff_, static_cast<size_t>(3) * m);
   ff_.assign(static_cast<size_t>(3) * m, kBoundary);
+  reserve_huge(boundary_vertex_, static_cast<size_t>(n));
   boundary_vertex_.assign(n, 0);
   num_edges_ = num_boundary_edges_ = num_nonmanifold_edges_ = num_inconsistent_edges_ = 0;
   double total_length = 0.0;
@@ -124,6 +132,42 @@ Mesh::Mesh(VertexMatrix vertices, FaceMatrix faces, const std::string& source)
   mean_edge_length_ = num_edges_ > 0 ? total_length / num_edges_ : 0.0;
 }
 
+int Mesh::reorient_faces(const std::vector<unsigned char>& flip) {
+  const int m = num_faces();
+  int changed = 0;
+  for (int f = 0; f < m; ++f) {
+    // Corners c and the edges e (e[k] from c[k] to c[k+1]) after the flip: (a, b, c) reversed is
+    // (a, c, b), whose edges are the old edges 2, 1, 0.
+    int c[3] = {F_(f, 0), F_(f, 1), F_(f, 2)};
+    int e[3] = {ff_[3 * f], ff_[3 * f + 1], ff_[3 * f + 2]};
+    const bool flipped = flip[static_cast<size_t>(f)] != 0;
+    if (flipped) {
+      std::swap(c[1], c[2]);
+      std::swap(e[0], e[2]);
+    }
+    int first = 0;
+    for (int k = 1; k < 3; ++k)
+      if (c[k] < c[first]) first = k;
+    if (!flipped && first == 0) continue;
+    ++changed;
+    for (int k = 0; k < 3; ++k) {
+      F_(f, k) = c[(k + first) % 3];
+      ff_[3 * f + k] = e[(k + first) % 3];
+    }
+  }
+  // Manifold interior edges run the same way by both faces, counted once per edge.
+  num_inconsistent_edges_ = 0;
+  for (int f = 0; f < m; ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int g = ff_[3 * f + k];
+      if (g <= f) continue;  // boundary, non-manifold, or counted from g
+      const int a = F_(f, k), b = F_(f, (k + 1) % 3);
+      for (int j = 0; j < 3; ++j)
+        if (F_(g, j) == a && F_(g, (j + 1) % 3) == b) ++num_inconsistent_edges_;
+    }
+  return changed;
+}
+
 double Mesh::signed_volume() const {
   double vol = 0.0;
   for (int f = 0; f < num_faces(); ++f) {
@@ -134,7 +178,9 @@ double Mesh::signed_volume() const {
 }
 
 VertexMatrix Mesh::area_weighted_normals() const {
-  VertexMatrix N = VertexMatrix::Zero(num_vertices(), 3);
+  VertexMatrix N(num_vertices(), 3);
+  advise_huge_pages(N.data(), sizeof(double) * static_cast<size_t>(N.size()));
+  N.setZero();
   for (int f = 0; f < num_faces(); ++f) {
     const Vec3 a = position(F_(f, 0)), b = position(F_(f, 1)), c = position(F_(f, 2));
     const Vec3 cr = (b - a).cross(c - a);

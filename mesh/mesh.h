@@ -68,6 +68,12 @@ class Mesh {
   /// Signed volume enclosed (divergence theorem); > 0 for a closed outward-oriented surface.
   double signed_volume() const;
 
+  /// Reverses the corner order of every face f with flip[f] != 0 (m entries), then rotates every
+  /// face so that its smallest vertex index comes first (mesh/orientation.h), updating the
+  /// adjacency in O(m) instead of rebuilding it: the result equals
+  /// Mesh(vertices(), reoriented faces). Returns the number of faces whose row changed.
+  int reorient_faces(const std::vector<unsigned char>& flip);
+
   /// Area-weighted vertex normals (docs/algorithms.md §2): normalised sum of the un-normalised face
   /// cross products (x2-x1)x(x3-x1). n x 3. A vertex without faces or with zero total area gets
   /// the zero vector.

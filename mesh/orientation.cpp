@@ -4,6 +4,8 @@
 #include <string>
 #include <utility>
 
+#include "core/huge_pages.h"
+
 namespace curvbench {
 
 namespace {
@@ -21,39 +23,49 @@ int edge_direction(const FaceMatrix& F, int f, int a, int b) {
 
 }  // namespace
 
-OrientationResult orient_mesh(const Mesh& mesh) {
+namespace {
+
+/// Everything but the reoriented mesh, and the faces to reverse.
+OrientationResult orientation_of(const Mesh& mesh, std::vector<unsigned char>& flip) {
   const int n = mesh.num_vertices();
   const int m = mesh.num_faces();
   const FaceMatrix& F = mesh.faces();
   OrientationResult out;
   out.sign_undetermined.assign(static_cast<size_t>(n), 0);
 
-  // flip[f]: reverse face f relative to the input. patch[f]: patch index.
-  std::vector<unsigned char> flip(static_cast<size_t>(m), 0);
-  std::vector<int> patch(static_cast<size_t>(m), -1);
+  // flip[f]: reverse face f relative to the input. patch[f]: patch index. queue: the faces of the
+  // current patch in the order the walk reached them (all of them once the walk is done).
+  reserve_huge(flip, static_cast<size_t>(m));
+  flip.assign(static_cast<size_t>(m), 0);
+  std::vector<int> patch;
+  reserve_huge(patch, static_cast<size_t>(m));
+  patch.assign(static_cast<size_t>(m), -1);
   std::vector<int> queue;
-  std::vector<int> members;
+  reserve_huge(queue, static_cast<size_t>(m));
+  const bool consistent = mesh.is_consistently_oriented();
   for (int seed = 0; seed < m; ++seed) {
     if (patch[static_cast<size_t>(seed)] >= 0) continue;
     const int id = out.patches++;
-    members.clear();
     queue.assign(1, seed);
     patch[static_cast<size_t>(seed)] = id;
     bool orientable = true, closed = true;
     for (size_t head = 0; head < queue.size(); ++head) {
       const int f = queue[head];
-      members.push_back(f);
       for (int k = 0; k < 3; ++k) {
         const int g = mesh.face_neighbor(f, k);
         if (g < 0) {
           closed = false;
           continue;
         }
-        // f runs its edge k from a to b (in its new orientation); g must run it from b to a.
-        int a = F(f, k), b = F(f, (k + 1) % 3);
-        if (flip[static_cast<size_t>(f)]) std::swap(a, b);
-        const int dir = edge_direction(F, g, a, b);  // in g's input orientation
-        const unsigned char want = dir == 1 ? 1 : 0;
+        // f runs its edge k from a to b (in its new orientation); g must run it from b to a. In
+        // a consistently oriented mesh nothing is flipped during the walk and every neighbour
+        // already does.
+        unsigned char want = 0;
+        if (!consistent) {
+          int a = F(f, k), b = F(f, (k + 1) % 3);
+          if (flip[static_cast<size_t>(f)]) std::swap(a, b);
+          want = edge_direction(F, g, a, b) == 1 ? 1 : 0;  // in g's input orientation
+        }
         if (patch[static_cast<size_t>(g)] < 0) {
           patch[static_cast<size_t>(g)] = id;
           flip[static_cast<size_t>(g)] = want;
@@ -65,7 +77,7 @@ OrientationResult orient_mesh(const Mesh& mesh) {
     }
     if (!orientable) {
       ++out.nonorientable_patches;
-      for (int f : members)
+      for (int f : queue)
         for (int k = 0; k < 3; ++k) out.sign_undetermined[static_cast<size_t>(F(f, k))] = 1;
       continue;
     }
@@ -74,7 +86,7 @@ OrientationResult orient_mesh(const Mesh& mesh) {
     if (closed) {
       ++out.closed_patches;
       double volume = 0.0;
-      for (int f : members) {
+      for (int f : queue) {
         const Vec3 a = mesh.position(F(f, 0)), b = mesh.position(F(f, 1)),
                    c = mesh.position(F(f, 2));
         const double v = a.dot(b.cross(c));
@@ -83,11 +95,11 @@ OrientationResult orient_mesh(const Mesh& mesh) {
       reverse = volume < 0.0;
     } else {
       int flipped = 0;
-      for (int f : members) flipped += flip[static_cast<size_t>(f)];
-      reverse = 2 * flipped > static_cast<int>(members.size());
+      for (int f : queue) flipped += flip[static_cast<size_t>(f)];
+      reverse = 2 * flipped > static_cast<int>(queue.size());
     }
     if (reverse)
-      for (int f : members) flip[static_cast<size_t>(f)] ^= 1;
+      for (int f : queue) flip[static_cast<size_t>(f)] ^= 1;
   }
 
   // Vertices whose faces lie in several patches or that end a non-manifold edge.
@@ -97,34 +109,36 @@ OrientationResult orient_mesh(const Mesh& mesh) {
       if (patch[static_cast<size_t>(f)] != patch[static_cast<size_t>(faces[0])])
         out.sign_undetermined[static_cast<size_t>(v)] = 1;
   }
-  for (int f = 0; f < m; ++f)
-    for (int k = 0; k < 3; ++k)
-      if (mesh.is_nonmanifold_edge(f, k)) {
-        out.sign_undetermined[static_cast<size_t>(F(f, k))] = 1;
-        out.sign_undetermined[static_cast<size_t>(F(f, (k + 1) % 3))] = 1;
-      }
+  if (mesh.num_nonmanifold_edges() > 0)
+    for (int f = 0; f < m; ++f)
+      for (int k = 0; k < 3; ++k)
+        if (mesh.is_nonmanifold_edge(f, k)) {
+          out.sign_undetermined[static_cast<size_t>(F(f, k))] = 1;
+          out.sign_undetermined[static_cast<size_t>(F(f, (k + 1) % 3))] = 1;
+        }
   for (unsigned char u : out.sign_undetermined) out.vertices_undetermined += u;
+  for (unsigned char u : flip) out.faces_flipped += u;
+  return out;
+}
 
+}  // namespace
+
+OrientationResult orient_mesh(Mesh&& mesh) {
+  std::vector<unsigned char> flip;
+  OrientationResult out = orientation_of(mesh, flip);
   // Flip, then rotate each face to start at its smallest vertex index: the same triangle with
-  // the same orientation then has the same row whatever corner the input started at.
-  FaceMatrix oriented = F;
-  bool changed = false;
-  for (int f = 0; f < m; ++f) {
-    if (flip[static_cast<size_t>(f)]) {
-      std::swap(oriented(f, 1), oriented(f, 2));
-      ++out.faces_flipped;
-    }
-    int first = 0;
-    for (int k = 1; k < 3; ++k)
-      if (oriented(f, k) < oriented(f, first)) first = k;
-    if (first != 0) {
-      const int a = oriented(f, first), b = oriented(f, (first + 1) % 3),
-                c = oriented(f, (first + 2) % 3);
-      oriented.row(f) << a, b, c;
-    }
-    changed = changed || first != 0 || flip[static_cast<size_t>(f)];
-  }
-  out.mesh = changed ? Mesh(mesh.vertices(), oriented, "oriented mesh") : mesh;
+  // the same orientation then has the same row whatever corner the input started at. In place:
+  // a mesh that is already so (the usual case) is not touched at all.
+  out.mesh = std::move(mesh);
+  out.mesh.reorient_faces(flip);
+  return out;
+}
+
+OrientationResult orient_mesh(const Mesh& mesh) {
+  std::vector<unsigned char> flip;
+  OrientationResult out = orientation_of(mesh, flip);
+  out.mesh = mesh;
+  out.mesh.reorient_faces(flip);
   return out;
 }
 

@@ -41,7 +41,13 @@ struct OrientationResult {
   std::vector<unsigned char> sign_undetermined;
 };
 
-/// Orients every patch of `mesh` as described in the file comment. O(n + m).
+/// Orients every patch of `mesh` as described in the file comment. O(n + m). The mesh is moved
+/// into the result and its faces reoriented in place (Mesh::reorient_faces): no copy, and none
+/// of its arrays is touched when it is already consistently oriented, closed parts outward,
+/// every face starting at its smallest vertex index.
+OrientationResult orient_mesh(Mesh&& mesh);
+
+/// The same on a copy of `mesh`.
 OrientationResult orient_mesh(const Mesh& mesh);
 
 /// One-line warnings for a user (empty when the input was consistently oriented outward and

@@ -106,7 +106,6 @@ Soup read_off(const std::string& path, std::string_view text, bool skip_invalid)
   Soup soup;
   soup.skip_invalid = skip_invalid;
   soup.xyz.reserve(3 * num_vertices);
-  soup.starts.reserve(num_faces + 1);
   soup.indices.reserve(3 * num_faces);
 
   // A short last line without its newline is a cut file, not a malformed record.

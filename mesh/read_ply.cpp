@@ -18,12 +18,16 @@
 // integer property; reads ASCII uchar values through unsigned short and truncates (a list length
 // 259 becomes 3); reads "-1" into a uint index as 4294967295; and resizes each list to its length
 // before reading the entries (a binary int list length of 2^31 asks for 8 GB).
+#include <unistd.h>
+
 #include <algorithm>
 #include <bit>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -254,15 +258,25 @@ long long read_binary_index(const char* p, bool is_signed, bool swap) {
                    : static_cast<long long>(u);
 }
 
-}  // namespace
+/// The elements read_ply uses, after the header checks.
+struct PlyLayout {
+  const PlyElement* vertex = nullptr;
+  const PlyElement* face = nullptr;
+  const PlyProperty* xyz[3] = {nullptr, nullptr, nullptr};
+  const PlyProperty* indices = nullptr;  ///< the face element's index list
+  std::string declared;                  ///< "N 'vertex', M 'face'" for messages
+};
 
-Soup read_ply(const std::string& path, std::string_view text, bool skip_invalid) {
-  const PlyHeader h = parse_ply_header(path, text);
-
+/// Checks the header for what CGAL's reader needs and refuses counts a data section of a
+/// `file_size`-byte file cannot hold.
+PlyLayout check_ply_layout(const std::string& path, const PlyHeader& h,
+                           unsigned long long file_size) {
   // What CGAL's read_PLY needs: a vertex element with float/double x, y, z ...
-  const PlyElement* vertex = find_element(h, "vertex", "vertices");
+  PlyLayout l;
+  const PlyElement*& vertex = l.vertex;
+  vertex = find_element(h, "vertex", "vertices");
   if (vertex == nullptr) fail(path, "PLY file has no (single) 'vertex' element");
-  const PlyProperty* xyz[3];
+  const PlyProperty** xyz = l.xyz;
   for (int c = 0; c < 3; ++c) {
     const char* name = c == 0 ? "x" : (c == 1 ? "y" : "z");
     xyz[c] = vertex->find(name);
@@ -272,9 +286,10 @@ Soup read_ply(const std::string& path, std::string_view text, bool skip_invalid)
                      "' must be float or double (CGAL's reader cannot read other types)");
   }
   // ... a face element with an int or uint list named vertex_indices or vertex_index ...
-  const PlyElement* face = find_element(h, "face", "faces");
+  const PlyElement*& face = l.face;
+  face = find_element(h, "face", "faces");
   if (face == nullptr) fail(path, "empty mesh: PLY file has no 'face' element");
-  const PlyProperty* indices = nullptr;
+  const PlyProperty*& indices = l.indices;
   for (const char* name : {"vertex_indices", "vertex_index"}) {
     const PlyProperty* p = face->find(name);
     if (indices == nullptr && p != nullptr && p->size != nullptr &&
@@ -294,10 +309,10 @@ Soup read_ply(const std::string& path, std::string_view text, bool skip_invalid)
   // Refuse counts the data section cannot hold: a binary item takes at least its fixed-size
   // fields and list lengths, an ASCII item at least 2 bytes per property ("0 ").
   const bool ascii = h.format == PlyFormat::kAscii;
-  const unsigned long long body = text.size() - h.body + (ascii ? 1 : 0);
+  const unsigned long long body = file_size - h.body + (ascii ? 1 : 0);
   unsigned long long need = 0;
   bool absurd = false;
-  std::string declared;
+  std::string& declared = l.declared;
   for (const PlyElement& e : h.elements) {
     unsigned long long item = 0;
     for (const PlyProperty& p : e.properties)
@@ -308,192 +323,349 @@ Soup read_ply(const std::string& path, std::string_view text, bool skip_invalid)
   }
   if (absurd || need > body)
     fail(path, "PLY header declares " + declared + " elements, more than the " +
-                   std::to_string(text.size() - h.body) +
+                   std::to_string(file_size - h.body) +
                    "-byte data section can hold (truncated file or corrupt header)");
-  const unsigned long long num_vertices = vertex->count, num_faces = face->count;
-  if (num_vertices > kMaxCount || num_faces > kMaxCount)
+  if (vertex->count > kMaxCount || face->count > kMaxCount)
     fail(path, "PLY header declares more than " + std::to_string(kMaxCount) + " elements");
+  return l;
+}
 
-  // Reservations within a few times the data section's size (checked just above).
+/// Reserves the soup for the header's counts (within a few times the data section's size,
+/// checked by check_ply_layout).
+Soup make_soup(const PlyHeader& h, const PlyLayout& l, unsigned long long file_size,
+               bool skip_invalid) {
+  const bool ascii = h.format == PlyFormat::kAscii;
+  const unsigned long long body = file_size - h.body + (ascii ? 1 : 0);
   Soup soup;
   soup.skip_invalid = skip_invalid;
-  soup.xyz.reserve(3 * num_vertices);
-  soup.starts.reserve(num_faces + 1);
-  soup.indices.reserve(std::min<unsigned long long>(3 * num_faces, body / (ascii ? 2 : 4)));
+  soup.xyz.reserve(3 * l.vertex->count);
+  soup.indices.reserve(std::min<unsigned long long>(3 * l.face->count, body / (ascii ? 2 : 4)));
+  return soup;
+}
 
-  if (ascii) {
-    Tokens tokens(text, h.body, h.body_line);
-    std::string_view t;
-    for (const PlyElement& e : h.elements) {
-      const bool is_vertex = &e == vertex, is_face = &e == face;
-      for (unsigned long long j = 0; j < e.count; ++j) {
-        const auto what = [&] { return e.name + " " + std::to_string(j); };
-        double point[3] = {0, 0, 0};
-        // Reads one value of type `type` into *integer (integer types) or *real.
-        auto value = [&](const PlyProperty& p, const PlyTypeInfo& type, const char* role,
-                         long long* integer, double* real) {
-          if (!tokens.next(&t))
-            fail(path, "truncated PLY data: the file ends in " + e.name + " " + std::to_string(j) +
-                           " of " + std::to_string(e.count));
-          if (type.integer) {
-            if (!parse_integer(t, integer) || *integer < type.min || *integer > type.max)
-              fail_line(path, tokens.line(),
-                        what() + ": " + role + " " + quote(t) + " of property '" + p.name +
-                            "' is not a valid " + std::string(type.name));
+void read_ascii_body(const std::string& path, std::string_view text, const PlyHeader& h,
+                     const PlyLayout& l, Soup& soup) {
+  const PlyElement* const vertex = l.vertex;
+  const PlyElement* const face = l.face;
+  const PlyProperty* const* xyz = l.xyz;
+  const PlyProperty* const indices = l.indices;
+  const std::string& declared = l.declared;
+  const unsigned long long num_vertices = vertex->count;
+  Tokens tokens(text, h.body, h.body_line);
+  std::string_view t;
+  for (const PlyElement& e : h.elements) {
+    const bool is_vertex = &e == vertex, is_face = &e == face;
+    for (unsigned long long j = 0; j < e.count; ++j) {
+      const auto what = [&] { return e.name + " " + std::to_string(j); };
+      double point[3] = {0, 0, 0};
+      // Reads one value of type `type` into *integer (integer types) or *real.
+      auto value = [&](const PlyProperty& p, const PlyTypeInfo& type, const char* role,
+                       long long* integer, double* real) {
+        if (!tokens.next(&t))
+          fail(path, "truncated PLY data: the file ends in " + e.name + " " + std::to_string(j) +
+                         " of " + std::to_string(e.count));
+        if (type.integer) {
+          if (!parse_integer(t, integer) || *integer < type.min || *integer > type.max)
+            fail_line(path, tokens.line(),
+                      what() + ": " + role + " " + quote(t) + " of property '" + p.name +
+                          "' is not a valid " + std::string(type.name));
+          return;
+        }
+        const Number r = parse_double(t, real);
+        if (r == Number::kBad)
+          fail_line(path, tokens.line(), what() + ": non-numeric token " + quote(t));
+        const bool is_coordinate = is_vertex && (&p == xyz[0] || &p == xyz[1] || &p == xyz[2]);
+        const double limit = type.type == PlyType::kFloat ? std::numeric_limits<float>::max()
+                                                          : std::numeric_limits<double>::max();
+        if (r == Number::kOverflow || !(std::fabs(*real) <= limit)) {
+          if (is_coordinate && soup.skip(j)) {
+            *real = 0;  // the vertex is dropped
             return;
           }
-          const Number r = parse_double(t, real);
-          if (r == Number::kBad)
-            fail_line(path, tokens.line(), what() + ": non-numeric token " + quote(t));
-          const bool is_coordinate = is_vertex && (&p == xyz[0] || &p == xyz[1] || &p == xyz[2]);
-          const double limit = type.type == PlyType::kFloat ? std::numeric_limits<float>::max()
-                                                            : std::numeric_limits<double>::max();
-          if (r == Number::kOverflow || !(std::fabs(*real) <= limit)) {
-            if (is_coordinate && soup.skip(j)) {
-              *real = 0;  // the vertex is dropped
-              return;
-            }
-            fail_line(
-                path, tokens.line(),
-                what() +
-                    (is_coordinate ? " has a non-finite coordinate "
-                                   : ": non-finite or out-of-range value ") +
-                    quote(t) +
-                    (is_coordinate ? std::string(kSkipHint) : " of property '" + p.name + "'"));
-          }
-          if (type.type == PlyType::kFloat) {  // rounded once, to float, as CGAL reads it
-            float f;
-            parse_float(t, &f);
-            *real = f;
-          }
-        };
-        long long integer = 0;
-        double real = 0;
-        for (const PlyProperty& p : e.properties) {
-          if (p.size == nullptr) {
-            value(p, *p.type, "value", &integer, &real);
-            if (is_vertex)
-              for (int c = 0; c < 3; ++c)
-                if (&p == xyz[c]) point[c] = real;
-            continue;
-          }
-          long long len;
-          value(p, *p.size, "list length", &len, &real);
-          const bool is_face_list = is_face && &p == indices;
-          for (long long k = 0; k < len; ++k) {
-            value(p, *p.type, "entry", &integer, &real);
-            if (is_face_list) {
-              check_face_index(path, tokens.line(), j, integer, num_vertices);
-              soup.indices.push_back(static_cast<std::int32_t>(integer));
-            }
-          }
+          fail_line(path, tokens.line(),
+                    what() +
+                        (is_coordinate ? " has a non-finite coordinate "
+                                       : ": non-finite or out-of-range value ") +
+                        quote(t) +
+                        (is_coordinate ? std::string(kSkipHint) : " of property '" + p.name + "'"));
         }
-        if (is_vertex) soup.xyz.insert(soup.xyz.end(), point, point + 3);
-        if (is_face) soup.end_polygon();
-      }
-    }
-    if (tokens.next(&t))
-      fail_line(path, tokens.line(),
-                "data " + quote(t) + " after the last element the header declares (" + declared +
-                    "; wrong counts?)");
-  } else {
-    const bool big = h.format == PlyFormat::kBinaryBigEndian;
-    const bool swap = big != (std::endian::native == std::endian::big);
-    const char* at = text.data() + h.body;
-    const char* const end = text.data() + text.size();
-    for (const PlyElement& e : h.elements) {
-      const bool is_vertex = &e == vertex, is_face = &e == face;
-      // Elements of fixed-size properties only: one size check for the whole block.
-      unsigned long long item = 0;
-      bool fixed = true;
+        if (type.type == PlyType::kFloat) {  // rounded once, to float, as CGAL reads it
+          float f;
+          parse_float(t, &f);
+          *real = f;
+        }
+      };
+      long long integer = 0;
+      double real = 0;
       for (const PlyProperty& p : e.properties) {
-        fixed = fixed && p.size == nullptr;
-        item += p.size == nullptr ? p.type->size : 0;
-      }
-      if (fixed && item > 0) {
-        const auto left = static_cast<unsigned long long>(end - at);
-        if (left / item < e.count)  // the file ends in item left / item
-          fail(path, "truncated PLY data: the file ends in " + e.name + " " +
-                         std::to_string(left / item) + " of " + std::to_string(e.count));
-        if (is_vertex) {
-          std::size_t offset[3];
-          for (int c = 0; c < 3; ++c) {
-            offset[c] = 0;
-            for (const PlyProperty& p : e.properties) {
-              if (&p == xyz[c]) break;
-              offset[c] += p.type->size;
-            }
-          }
-          const bool packed_doubles = item == 24 && !swap && offset[0] == 0 && offset[1] == 8 &&
-                                      offset[2] == 16 && xyz[0]->type->type == PlyType::kDouble &&
-                                      xyz[1]->type->type == PlyType::kDouble &&
-                                      xyz[2]->type->type == PlyType::kDouble;
-          if (packed_doubles) {  // the layout curvbench writes: copy the block as it is
-            std::vector<double> block(3 * e.count);
-            if (e.count > 0) std::memcpy(block.data(), at, 24 * e.count);
-            soup.xyz = std::move(block);
-          } else {
-            for (unsigned long long j = 0; j < e.count; ++j)
-              for (int c = 0; c < 3; ++c)
-                soup.xyz.push_back(read_binary_real(at + j * item + offset[c], *xyz[c]->type, big));
+        if (p.size == nullptr) {
+          value(p, *p.type, "value", &integer, &real);
+          if (is_vertex)
+            for (int c = 0; c < 3; ++c)
+              if (&p == xyz[c]) point[c] = real;
+          continue;
+        }
+        long long len;
+        value(p, *p.size, "list length", &len, &real);
+        const bool is_face_list = is_face && &p == indices;
+        for (long long k = 0; k < len; ++k) {
+          value(p, *p.type, "entry", &integer, &real);
+          if (is_face_list) {
+            check_face_index(path, tokens.line(), j, integer, num_vertices);
+            soup.indices.push_back(static_cast<std::int32_t>(integer));
           }
         }
-        at += item * e.count;  // (the face element has its index list: never here)
+      }
+      if (is_vertex) soup.xyz.append(point, 3);
+      if (is_face) soup.end_polygon();
+    }
+  }
+  if (tokens.next(&t))
+    fail_line(path, tokens.line(),
+              "data " + quote(t) + " after the last element the header declares (" + declared +
+                  "; wrong counts?)");
+}
+
+/// The data section of a binary file in memory (the whole file's bytes).
+class MemoryBytes {
+ public:
+  MemoryBytes(std::string_view text, std::size_t pos)
+      : at_(text.data() + pos), end_(text.data() + text.size()) {}
+  unsigned long long left() const { return static_cast<unsigned long long>(end_ - at_); }
+  /// At least k contiguous bytes at the cursor (k <= left()).
+  const char* need(std::size_t) { return at_; }
+  void skip(unsigned long long k) { at_ += k; }
+  /// Bytes the read buffer can hand out at once (need()).
+  static constexpr std::size_t block() { return std::size_t{1} << 20; }
+
+ private:
+  const char* at_;
+  const char* end_;
+};
+
+/// The data section read from an open file through a buffer of about a mebibyte (no copy of the
+/// whole file in memory; the pages of a memory map would count in the resident set too).
+class FileWindow {
+ public:
+  FileWindow(const std::string& path, int fd, unsigned long long size, unsigned long long pos)
+      : path_(path),
+        fd_(fd),
+        size_(size),
+        pos_(pos),
+        buffer_(new char[kBuffer]),
+        capacity_(kBuffer) {}
+  unsigned long long left() const { return size_ - pos_; }
+  const char* need(std::size_t k) {
+    if (pos_ >= base_ && pos_ + k <= base_ + filled_) return buffer_.get() + (pos_ - base_);
+    refill(k);
+    return buffer_.get();
+  }
+  void skip(unsigned long long k) { pos_ += k; }
+  static constexpr std::size_t block() { return kBuffer; }
+
+ private:
+  static constexpr std::size_t kBuffer = std::size_t{1} << 20;
+
+  // Makes the buffer start at the cursor and hold at least k bytes (fewer only at the end of
+  // the file): keeps what is already there, reads the rest.
+  void refill(std::size_t k) {
+    std::size_t kept = 0;
+    if (pos_ >= base_ && pos_ < base_ + filled_) {
+      kept = static_cast<std::size_t>(base_ + filled_ - pos_);
+      std::memmove(buffer_.get(), buffer_.get() + (pos_ - base_), kept);
+    }
+    if (k > capacity_) {  // a long list: k <= left(), checked by the caller
+      std::unique_ptr<char[]> bigger(new char[k]);
+      std::memcpy(bigger.get(), buffer_.get(), kept);
+      buffer_ = std::move(bigger);
+      capacity_ = k;
+    }
+    base_ = pos_;
+    filled_ = kept;
+    const std::size_t want =
+        static_cast<std::size_t>(std::min<unsigned long long>(capacity_, size_ - pos_));
+    while (filled_ < want) {
+      const ssize_t got = ::pread(fd_, buffer_.get() + filled_, want - filled_,
+                                  static_cast<off_t>(base_ + filled_));
+      if (got < 0 && errno == EINTR) continue;
+      if (got < 0) fail(path_, std::string("cannot read file (") + std::strerror(errno) + ")");
+      if (got == 0) fail(path_, "cannot read file (it shrank while being read)");
+      filled_ += static_cast<std::size_t>(got);
+    }
+  }
+
+  const std::string& path_;
+  int fd_;
+  unsigned long long size_;
+  unsigned long long pos_;       // file offset of the cursor
+  unsigned long long base_ = 0;  // file offset of buffer_[0]
+  std::size_t filled_ = 0;       // valid bytes in buffer_
+  std::unique_ptr<char[]> buffer_;
+  std::size_t capacity_;
+};
+
+template <typename Bytes>
+void read_binary_body(const std::string& path, const PlyHeader& h, const PlyLayout& l, Bytes& in,
+                      Soup& soup) {
+  const bool big = h.format == PlyFormat::kBinaryBigEndian;
+  const bool swap = big != (std::endian::native == std::endian::big);
+  const unsigned long long num_vertices = l.vertex->count;
+  for (const PlyElement& e : h.elements) {
+    const bool is_vertex = &e == l.vertex, is_face = &e == l.face;
+    // Elements of fixed-size properties only: one size check for the whole block.
+    unsigned long long item = 0;
+    bool fixed = true;
+    for (const PlyProperty& p : e.properties) {
+      fixed = fixed && p.size == nullptr;
+      item += p.size == nullptr ? p.type->size : 0;
+    }
+    if (fixed && item > 0) {
+      const unsigned long long left = in.left();
+      if (left / item < e.count)  // the file ends in item left / item
+        fail(path, "truncated PLY data: the file ends in " + e.name + " " +
+                       std::to_string(left / item) + " of " + std::to_string(e.count));
+      if (!is_vertex) {
+        in.skip(item * e.count);  // (the face element has its index list: never here)
         continue;
       }
-      for (unsigned long long j = 0; j < e.count; ++j) {
-        auto need_bytes = [&](unsigned long long bytes) {
-          if (static_cast<unsigned long long>(end - at) < bytes)
-            fail(path, "truncated PLY data: the file ends in " + e.name + " " + std::to_string(j) +
-                           " of " + std::to_string(e.count));
-        };
-        double point[3] = {0, 0, 0};
+      std::size_t offset[3];
+      for (int c = 0; c < 3; ++c) {
+        offset[c] = 0;
         for (const PlyProperty& p : e.properties) {
-          if (p.size == nullptr) {
-            need_bytes(p.type->size);
-            if (is_vertex)
-              for (int c = 0; c < 3; ++c)
-                if (&p == xyz[c]) point[c] = read_binary_real(at, *p.type, big);
-            at += p.type->size;
-            continue;
-          }
-          need_bytes(p.size->size);
-          const long long len = read_binary_integer(at, *p.size, big);
-          at += p.size->size;
-          if (len < 0)
-            fail(path, e.name + " " + std::to_string(j) + ": list '" + p.name +
-                           "' has negative length " + std::to_string(len));
-          // Compare by division: len * size could overflow.
-          if (static_cast<unsigned long long>(len) >
-              static_cast<unsigned long long>(end - at) / p.type->size)
-            need_bytes(std::numeric_limits<unsigned long long>::max());
-          if (is_face && &p == indices) {
-            const bool is_signed = p.type->type == PlyType::kInt;
-            for (long long k = 0; k < len; ++k) {
-              const long long v = read_binary_index(at + k * 4, is_signed, swap);
-              if (v < 0)
-                fail(path, "face " + std::to_string(j) + " has a negative vertex index " +
-                               std::to_string(v));
-              if (static_cast<unsigned long long>(v) >= num_vertices)
-                fail(path, "face " + std::to_string(j) + " references vertex " + std::to_string(v) +
-                               ", out of range [0, " + std::to_string(num_vertices) + ")");
-              soup.indices.push_back(static_cast<std::int32_t>(v));
-            }
-          }
-          at += len * p.type->size;
+          if (&p == l.xyz[c]) break;
+          offset[c] += p.type->size;
         }
-        if (is_vertex) soup.xyz.insert(soup.xyz.end(), point, point + 3);
-        if (is_face) soup.end_polygon();
       }
+      const bool doubles = !swap && l.xyz[0]->type->type == PlyType::kDouble &&
+                           l.xyz[1]->type->type == PlyType::kDouble &&
+                           l.xyz[2]->type->type == PlyType::kDouble;
+      const bool packed = doubles && item == 24 && offset[0] == 0 && offset[1] == 8 &&
+                          offset[2] == 16;  // the layout curvbench writes for a plain mesh
+      // Through a small staging block: no zero-filled vertex array before it is overwritten.
+      constexpr std::size_t kStage = 1024;
+      double stage[3 * kStage];
+      const unsigned long long per_block = std::max<unsigned long long>(
+          1, std::min<unsigned long long>(kStage, Bytes::block() / item));
+      for (unsigned long long j = 0; j < e.count;) {
+        const auto items = static_cast<std::size_t>(std::min(per_block, e.count - j));
+        const char* at = in.need(items * item);
+        if (packed) {  // copy the block as it is
+          std::memcpy(stage, at, 24 * items);
+        } else if (doubles) {
+          for (std::size_t i = 0; i < items; ++i)
+            for (int c = 0; c < 3; ++c)
+              std::memcpy(stage + 3 * i + c, at + i * item + offset[c], 8);
+        } else {
+          for (std::size_t i = 0; i < items; ++i)
+            for (int c = 0; c < 3; ++c)
+              stage[3 * i + c] = read_binary_real(at + i * item + offset[c], *l.xyz[c]->type, big);
+        }
+        soup.xyz.append(stage, 3 * items);
+        in.skip(items * item);
+        j += items;
+      }
+      continue;
     }
-    // Trailing blanks (a final newline) are harmless; anything else means wrong counts.
-    const auto extra = std::find_if(at, end, [](char c) { return !is_blank(c) && c != '\n'; });
-    if (extra != end)
-      fail(path, std::to_string(end - at) + " bytes after the last element the header declares (" +
-                     declared + "; wrong counts?)");
+    for (unsigned long long j = 0; j < e.count; ++j) {
+      auto need_bytes = [&](unsigned long long bytes) {
+        if (in.left() < bytes)
+          fail(path, "truncated PLY data: the file ends in " + e.name + " " + std::to_string(j) +
+                         " of " + std::to_string(e.count));
+      };
+      double point[3] = {0, 0, 0};
+      for (const PlyProperty& p : e.properties) {
+        if (p.size == nullptr) {
+          need_bytes(p.type->size);
+          if (is_vertex)
+            for (int c = 0; c < 3; ++c)
+              if (&p == l.xyz[c]) point[c] = read_binary_real(in.need(p.type->size), *p.type, big);
+          in.skip(p.type->size);
+          continue;
+        }
+        need_bytes(p.size->size);
+        const long long len = read_binary_integer(in.need(p.size->size), *p.size, big);
+        in.skip(p.size->size);
+        if (len < 0)
+          fail(path, e.name + " " + std::to_string(j) + ": list '" + p.name +
+                         "' has negative length " + std::to_string(len));
+        // Compare by division: len * size could overflow.
+        if (static_cast<unsigned long long>(len) > in.left() / p.type->size)
+          need_bytes(std::numeric_limits<unsigned long long>::max());
+        if (is_face && &p == l.indices) {
+          const bool is_signed = p.type->type == PlyType::kInt;
+          const char* at = in.need(static_cast<std::size_t>(len) * 4);
+          for (long long k = 0; k < len; ++k) {
+            const long long v = read_binary_index(at + k * 4, is_signed, swap);
+            if (v < 0)
+              fail(path, "face " + std::to_string(j) + " has a negative vertex index " +
+                             std::to_string(v));
+            if (static_cast<unsigned long long>(v) >= num_vertices)
+              fail(path, "face " + std::to_string(j) + " references vertex " + std::to_string(v) +
+                             ", out of range [0, " + std::to_string(num_vertices) + ")");
+            soup.indices.push_back(static_cast<std::int32_t>(v));
+          }
+        }
+        in.skip(static_cast<unsigned long long>(len) * p.type->size);
+      }
+      if (is_vertex) soup.xyz.append(point, 3);
+      if (is_face) soup.end_polygon();
+    }
   }
-  check_not_empty(path, num_vertices, num_faces);
+  // Trailing blanks (a final newline) are harmless; anything else means wrong counts.
+  const unsigned long long extra = in.left();
+  while (in.left() > 0) {
+    const auto k =
+        static_cast<std::size_t>(std::min<unsigned long long>(in.left(), Bytes::block()));
+    const char* at = in.need(k);
+    if (std::any_of(at, at + k, [](char c) { return !is_blank(c) && c != '\n'; }))
+      fail(path, std::to_string(extra) + " bytes after the last element the header declares (" +
+                     l.declared + "; wrong counts?)");
+    in.skip(k);
+  }
+}
+
+}  // namespace
+
+Soup read_ply(const std::string& path, std::string_view text, bool skip_invalid) {
+  const PlyHeader h = parse_ply_header(path, text);
+  const PlyLayout l = check_ply_layout(path, h, text.size());
+  Soup soup = make_soup(h, l, text.size(), skip_invalid);
+  if (h.format == PlyFormat::kAscii) {
+    read_ascii_body(path, text, h, l, soup);
+  } else {
+    MemoryBytes in(text, h.body);
+    read_binary_body(path, h, l, in, soup);
+  }
+  check_not_empty(path, l.vertex->count, l.face->count);
   return soup;
+}
+
+bool read_binary_ply_file(const std::string& path, int fd, unsigned long long size,
+                          bool skip_invalid, Soup* soup) {
+  // The header, if it ends (with its newline) within the first 64 KiB.
+  std::string prefix(static_cast<std::size_t>(std::min<unsigned long long>(size, 1 << 16)), '\0');
+  std::size_t got = 0;
+  while (got < prefix.size()) {
+    const ssize_t r =
+        ::pread(fd, prefix.data() + got, prefix.size() - got, static_cast<off_t>(got));
+    if (r < 0 && errno == EINTR) continue;
+    if (r <= 0) return false;
+    got += static_cast<std::size_t>(r);
+  }
+  if (!prefix.starts_with("ply") || prefix.find("\nformat binary_") == std::string::npos)
+    return false;
+  const std::size_t end_header = prefix.find("\nend_header");
+  if (end_header == std::string::npos || prefix.find('\n', end_header + 1) == std::string::npos)
+    return false;
+  const PlyHeader h = parse_ply_header(path, prefix);
+  if (h.format == PlyFormat::kAscii || h.body > prefix.size() || prefix[h.body - 1] != '\n')
+    return false;
+  const PlyLayout l = check_ply_layout(path, h, size);
+  *soup = make_soup(h, l, size, skip_invalid);
+  FileWindow in(path, fd, size, h.body);
+  read_binary_body(path, h, l, in, *soup);
+  check_not_empty(path, l.vertex->count, l.face->count);
+  return true;
 }
 
 }  // namespace curvbench::io_detail

@@ -8,12 +8,16 @@
 // against the vertex count, so the soup it returns is safe to index.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "core/huge_pages.h"
+#include "core/types.h"
 
 namespace curvbench::io_detail {
 
@@ -23,17 +27,88 @@ constexpr unsigned long long kMaxCount =
 
 constexpr const char* kSkipHint = " (--skip-invalid drops such vertices)";
 
+/// A growable flat array kept in the storage of an m x 3 row-major Eigen matrix (VertexMatrix,
+/// FaceMatrix), so that the Mesh takes it over without a copy (take()). Storage of 4 MiB or more
+/// is advised to huge pages (core/huge_pages.h) and never zero-filled.
+template <typename T>
+class FlatRows {
+ public:
+  using Matrix = Eigen::Matrix<T, Eigen::Dynamic, 3, Eigen::RowMajor>;
+
+  std::size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  const T* data() const { return m_.data(); }
+  const T& operator[](std::size_t i) const { return m_.data()[i]; }
+  T& operator[](std::size_t i) { return m_.data()[i]; }
+
+  void reserve(std::size_t n) {
+    if (n > capacity()) grow_to(n);
+  }
+  void push_back(T x) {
+    if (size_ == capacity()) grow_to(std::max<std::size_t>(2 * capacity(), 48));
+    m_.data()[size_++] = x;
+  }
+  void append(const T* first, std::size_t k) {
+    if (size_ + k > capacity()) grow_to(std::max(size_ + k, 2 * capacity()));
+    std::copy(first, first + k, m_.data() + size_);
+    size_ += k;
+  }
+  /// The first size() / 3 rows as a matrix (without a copy when the storage fits); leaves this
+  /// empty.
+  Matrix take() {
+    const auto rows = static_cast<Eigen::Index>(size_ / 3);
+    if (m_.rows() != rows) m_.conservativeResize(rows, 3);
+    size_ = 0;
+    return std::move(m_);
+  }
+  /// Frees the storage.
+  void release() {
+    m_ = Matrix();
+    size_ = 0;
+  }
+
+ private:
+  std::size_t capacity() const { return static_cast<std::size_t>(m_.size()); }
+  void grow_to(std::size_t n) {
+    Matrix bigger(static_cast<Eigen::Index>((n + 2) / 3), 3);
+    advise_huge_pages(bigger.data(), sizeof(T) * static_cast<std::size_t>(bigger.size()));
+    std::copy(m_.data(), m_.data() + size_, bigger.data());
+    m_.swap(bigger);
+  }
+
+  Matrix m_;
+  std::size_t size_ = 0;
+};
+
 /// Vertices (x, y, z as read) and polygons (vertex indices, each checked < num_vertices()).
 struct Soup {
-  std::vector<double> xyz;                    ///< 3 per vertex
-  std::vector<std::int32_t> indices;          ///< all polygons' indices, in file order
-  std::vector<std::size_t> starts = {0};      ///< polygon f is indices[starts[f], starts[f + 1])
+  FlatRows<double> xyz;            ///< 3 per vertex
+  FlatRows<std::int32_t> indices;  ///< all polygons' indices, in file order
+  /// Polygon f is indices[starts[f], starts[f + 1]); empty while every polygon is a triangle
+  /// (polygon f is then indices[3 f, 3 f + 3)), which saves a word per face on the usual file.
+  std::vector<std::size_t> starts;
+  std::size_t polygons = 0;
   bool skip_invalid = false;                  ///< MeshReadOptions::skip_invalid
   std::vector<unsigned long long> nonfinite;  ///< vertices with a non-finite text token, increasing
 
   std::size_t num_vertices() const { return xyz.size() / 3; }
-  std::size_t num_polygons() const { return starts.size() - 1; }
-  void end_polygon() { starts.push_back(indices.size()); }
+  std::size_t num_polygons() const { return polygons; }
+  bool all_triangles() const { return starts.empty(); }
+  std::size_t polygon_begin(std::size_t f) const { return starts.empty() ? 3 * f : starts[f]; }
+  std::size_t polygon_size(std::size_t f) const {
+    return starts.empty() ? 3 : starts[f + 1] - starts[f];
+  }
+  /// Ends the polygon whose indices were appended since the last call.
+  void end_polygon() {
+    ++polygons;
+    if (starts.empty()) {
+      if (indices.size() == 3 * polygons) return;
+      // The first polygon that is not a triangle: the starts of the triangles before it.
+      starts.reserve(polygons + 1);
+      for (std::size_t f = 0; f < polygons; ++f) starts.push_back(3 * f);
+    }
+    starts.push_back(indices.size());
+  }
 
   /// Records that vertex `v` has a non-finite coordinate token; false if not skipping (the caller
   /// then throws). The coordinate is stored as 0; the vertex is dropped later.
@@ -49,6 +124,13 @@ struct Soup {
 Soup read_off(const std::string& path, std::string_view text, bool skip_invalid);
 Soup read_obj(const std::string& path, std::string_view text, bool skip_invalid);
 Soup read_ply(const std::string& path, std::string_view text, bool skip_invalid);
+
+/// Binary PLY straight from an open file (`fd`, `size` bytes), read in blocks through a small
+/// buffer instead of the whole file in memory; the same soup and the same errors as read_ply on
+/// the file's bytes. Returns false, reading nothing into `soup`, when the file is not binary PLY
+/// with its header in the first 64 KiB: the caller then uses read_ply.
+bool read_binary_ply_file(const std::string& path, int fd, unsigned long long size,
+                          bool skip_invalid, Soup* soup);
 
 // ---- errors ------------------------------------------------------------------------------------
 

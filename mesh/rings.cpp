@@ -21,6 +21,7 @@ void RingCollector::begin(int v) {
     stamp_ = 1;
   }
   center_ = v;
+  assigned_ = false;
   verts_.clear();
   faces_.clear();
   verts_.push_back(v);
@@ -88,6 +89,7 @@ bool RingCollector::half_step() {
 
 // One half ring further: 0 -> 1 (the first step is an integer step), k -> k+½, k+½ -> k+1.
 bool RingCollector::grow() {
+  if (assigned_) collect(center_, ring());  // rebuild the buffers and the layer bookkeeping
   const size_t before = faces_.size();
   if (half_steps_ == 0) {
     integer_step();
@@ -128,6 +130,22 @@ double RingCollector::collect_at_least(int v, double r0, int min_neighbours, dou
     stalled = grow() ? 0 : stalled + 1;
   }
   return ring();
+}
+
+double RingCollector::collect(int v, const NeighbourhoodSpec& spec) {
+  if (spec.adaptive) return collect_at_least(v, spec.ring, spec.min_neighbours, spec.max_ring);
+  collect(v, spec.ring);
+  return ring();
+}
+
+void RingCollector::assign(int v, double ring, std::span<const int> neighbours,
+                           std::span<const int> faces, size_t num_faces) {
+  center_ = v;
+  half_steps_ = static_cast<int>(std::lround(2.0 * ring));
+  assigned_ = true;
+  assigned_neighbours_ = neighbours;
+  assigned_faces_ = faces;
+  assigned_num_faces_ = num_faces;
 }
 
 }  // namespace curvbench

@@ -7,6 +7,9 @@
 // The collector owns scratch buffers sized to the mesh and reuses them, so collecting a ring
 // allocates nothing once the buffers have grown to their working size. Use one collector per
 // thread. Results are deterministic (discovery order depends only on the mesh).
+//
+// A collector can also serve a neighbourhood gathered earlier (assign(), e.g. a row of
+// methods/neighbourhood_table.h) through the same neighbours(), faces() and ring().
 #pragma once
 
 #include <cstdint>
@@ -33,6 +36,23 @@ constexpr int min_neighbours(int degree) {
   return (3 * num_coefficients(degree) + 1) / 2;
 }
 
+/// The starting neighbourhood of a ring-based method (paper §4.1, docs/algorithms.md §1.2):
+/// ring r0; when adaptive, grown by half rings while fewer than min_neighbours neighbours are
+/// found, up to max_ring (the methods use min_neighbours(d) and 2 r0). Non-adaptive specs have
+/// min_neighbours = 0 and max_ring = ring, so that equal neighbourhoods compare equal.
+struct NeighbourhoodSpec {
+  double ring = 1.0;
+  bool adaptive = false;
+  int min_neighbours = 0;
+  double max_ring = 1.0;
+
+  static NeighbourhoodSpec fixed(double ring) { return {ring, false, 0, ring}; }
+  static NeighbourhoodSpec at_least(double ring, int min_neighbours, double max_ring) {
+    return {ring, true, min_neighbours, max_ring};
+  }
+  bool operator==(const NeighbourhoodSpec&) const = default;
+};
+
 class RingCollector {
  public:
   explicit RingCollector(const Mesh& mesh);
@@ -49,17 +69,35 @@ class RingCollector {
   /// found, until max_ring is reached or the ring stops growing (the component is exhausted).
   /// Returns the ring actually collected.
   double collect_at_least(int v, double r0, int min_neighbours, double max_ring);
+  /// collect_at_least or collect, as the spec says. Returns the ring actually collected.
+  double collect(int v, const NeighbourhoodSpec& spec);
+
+  /// Serves a neighbourhood gathered earlier instead of collecting it: afterwards center() is v,
+  /// ring() is `ring`, num_faces() is `num_faces`, and neighbours() and faces() return the given
+  /// spans (which must outlive their use) until the next collect. `faces` may be empty when the
+  /// caller never reads faces() (num_faces is |F_r| all the same). grow() first collects the same
+  /// ring from scratch, so that growing gives what it gives after collect(v, ring).
+  void assign(int v, double ring, std::span<const int> neighbours, std::span<const int> faces,
+              size_t num_faces);
 
   /// Grows the current ring by one half ring. Returns false if nothing new was added.
   bool grow();
 
-  /// Current ring size (after collect/grow).
+  /// Current ring size (after collect/grow/assign).
   double ring() const { return 0.5 * half_steps_; }
   int center() const { return center_; }
   /// Ring vertices, centre excluded, in discovery order.
-  std::span<const int> neighbours() const { return {verts_.data() + 1, verts_.size() - 1}; }
+  std::span<const int> neighbours() const {
+    if (assigned_) return assigned_neighbours_;
+    return {verts_.data() + 1, verts_.size() - 1};
+  }
   /// Ring faces F_r in discovery order.
-  std::span<const int> faces() const { return faces_; }
+  std::span<const int> faces() const {
+    if (assigned_) return assigned_faces_;
+    return faces_;
+  }
+  /// |F_r| (also after assign() without the faces themselves).
+  size_t num_faces() const { return assigned_ ? assigned_num_faces_ : faces_.size(); }
 
  private:
   void begin(int v);
@@ -79,6 +117,10 @@ class RingCollector {
   size_t layer_end_ = 0;
   size_t face_layer_begin_ = 0;  // faces added by the last integer step: [begin, end)
   size_t face_layer_end_ = 0;
+  bool assigned_ = false;  // neighbours()/faces() come from assign(), not from the buffers
+  std::span<const int> assigned_neighbours_;
+  std::span<const int> assigned_faces_;
+  size_t assigned_num_faces_ = 0;
 };
 
 }  // namespace curvbench

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,9 @@
 #include "mesh/rings.h"
 
 namespace curvbench {
+
+class NeighbourhoodTable;  // methods/neighbourhood_table.h
+class NeighbourhoodCache;
 
 /// Per-vertex outcome. New values go at the end (the numbers are stored in PLY output); add
 /// the word to to_string() in estimate_mesh.cpp.
@@ -71,6 +75,12 @@ struct VertexEstimate {
 /// goldfeather; methods/vertex_normals.h): method_default = what the method's authors' code uses.
 enum class VertexNormals : std::uint8_t { method_default, area, angle, max };
 
+/// How a fitting method solves its systems (LHF-d, LOP-d, d = 1..4; the others ignore it):
+/// batched = several vertices at once, one per SIMD lane (methods/batched_fit.h), falling back
+/// to the scalar path for every vertex it cannot finish (safeguard, degree reduction, growth);
+/// scalar = one vertex at a time, the reference. Both give the same results up to rounding.
+enum class Kernel : std::uint8_t { batched, scalar };
+
 /// Options shared by all methods. Defaults follow the paper and docs/algorithms.md.
 struct EstimatorOptions {
   int degree = 0;                ///< fitting degree d (1..6; Xu: 2); 0 = the method's default
@@ -84,6 +94,7 @@ struct EstimatorOptions {
   bool normal_safeguard = true;  ///< gamma_i = max(0, m_i . m_0) of eq. (15)
   bool include_centre = true;    ///< fit c00 with the centre as a row (else interpolate p0)
   int threads = 0;               ///< 0 = OpenMP default
+  Kernel kernel = Kernel::batched;  ///< fitting kernel (see Kernel)
   // Options of single methods (ignored by the others); see each method's file comment.
   VertexNormals vertex_normals = VertexNormals::method_default;  ///< discrete operators
   bool quadric_constant = false;  ///< quadric: 6 coefficients (constant term) instead of
@@ -103,6 +114,17 @@ struct MeshContext {
   const Mesh& mesh;
   const VertexMatrix& approx_normals;  ///< area-weighted vertex normals (docs/algorithms.md §2)
   const MeshData* data = nullptr;      ///< what Estimator::prepare() returned (may be null)
+  /// The estimator's starting neighbourhoods, gathered once (Estimator::neighbourhood_spec(),
+  /// with faces if neighbourhood_use() says so), or null: collect_neighbourhood() then collects.
+  const NeighbourhoodTable* neighbourhoods = nullptr;
+};
+
+/// What a method reads of the starting neighbourhood (Estimator::collect_neighbourhood), so that
+/// MeshEstimation knows whether a table of neighbourhoods serves it, and whether with faces.
+enum class NeighbourhoodUse : std::uint8_t {
+  none,        ///< the method does not call collect_neighbourhood (Xu, the discrete operators)
+  neighbours,  ///< neighbours() and ring() only
+  neighbours_and_faces,  ///< also faces() (e.g. a ring parameterization such as LSCM)
 };
 
 /// Per-thread scratch space; each method derives its own.
@@ -140,6 +162,16 @@ class Estimator {
   /// docs/algorithms.md §1.2): ring r0 = options().ring or default_ring(); when options().adaptive,
   /// grown by half rings until min_neighbours(degree) neighbours or ring 2 r0. Returns r0.
   double collect_neighbourhood(RingCollector& rings, int v) const;
+  /// The same, served from ctx.neighbourhoods when that table holds this neighbourhood (same
+  /// spec, and faces if neighbourhood_use() reads them): identical neighbours, order, faces and
+  /// ring; `rings` can grow() from there as after collecting.
+  double collect_neighbourhood(const MeshContext& ctx, RingCollector& rings, int v) const;
+  /// The spec of that starting neighbourhood: ring r0, and with options().adaptive
+  /// min_neighbours(degree) and max ring 2 r0.
+  NeighbourhoodSpec neighbourhood_spec() const;
+  /// What the method reads of it; default none. A method that calls collect_neighbourhood says
+  /// so, or it is never handed a table.
+  virtual NeighbourhoodUse neighbourhood_use() const { return NeighbourhoodUse::none; }
 
   virtual std::unique_ptr<Workspace> make_workspace(const Mesh& mesh) const = 0;
 
@@ -155,6 +187,14 @@ class Estimator {
   virtual void estimate(const MeshContext& ctx, int v, Workspace& ws,
                         VertexEstimate& out) const = 0;
 
+  /// Estimates vertices first, ..., first + count - 1 into out[0 .. count) (the batch hook of
+  /// the batched kernels). Each vertex's result must be what estimate() gives up to rounding and
+  /// must not depend on the other vertices of the batch. Default: estimate() per vertex, a
+  /// vertex that throws is failed. An override may throw: MeshEstimation then redoes the batch
+  /// vertex by vertex with estimate().
+  virtual void estimate_batch(const MeshContext& ctx, int first, int count, Workspace& ws,
+                              VertexEstimate* out) const;
+
  protected:
   EstimatorOptions options_;
 };
@@ -162,8 +202,9 @@ class Estimator {
 /// Creates an estimator by name: "lhf", "lop", "xu", "lscm", "lscm-fast", "jet", "meyer", ...
 /// (estimator_names()), a fit optionally with the degree attached, "LHF-2" (case-insensitive;
 /// the attached degree overrides options.degree). options.degree == 0 gives a fit its default
-/// degree 2. Throws UsageError for an unknown name, an unsupported degree, or any degree (given
-/// or attached) for a degree-free method.
+/// degree 2. Throws UsageError for an unknown name, an unsupported degree, any degree (given
+/// or attached) for a degree-free method, or an option of single methods (vertex_normals,
+/// quadric_constant, ball_factor) set for a method that does not use it.
 std::unique_ptr<Estimator> make_estimator(const std::string& name, EstimatorOptions options);
 
 /// Names accepted by make_estimator (without degree).
@@ -174,8 +215,43 @@ std::vector<std::string> estimator_names();
 /// name that is not a built-in method (e.g. an outside estimator's label).
 bool scores_interior_only(const std::string& method);
 
-/// Runs the estimator on every vertex, in parallel over vertices (OpenMP). The result is
-/// bit-identical for any number of threads.
-std::vector<VertexEstimate> estimate_mesh(const Mesh& mesh, const Estimator& estimator);
+/// One estimation run of `estimator` over `mesh`, vertex range by vertex range, so that a caller
+/// can stream results in blocks instead of holding one record per vertex. The constructor does
+/// the per-mesh work once (area-weighted normals, Estimator::prepare(), one workspace per
+/// thread); run() estimates a range of vertices in parallel (OpenMP). Results are bit-identical
+/// for any number of threads and any split into ranges. The mesh and estimator must outlive it.
+/// With a NeighbourhoodCache of the same mesh, a method that reads starting neighbourhoods
+/// (Estimator::neighbourhood_use()) takes them from the cache's table of its spec (built now if
+/// the cache has none), with the same results; throws std::invalid_argument for a cache of
+/// another mesh.
+class MeshEstimation {
+ public:
+  MeshEstimation(const Mesh& mesh, const Estimator& estimator,
+                 NeighbourhoodCache* neighbourhoods = nullptr);
+  ~MeshEstimation();
+  MeshEstimation(const MeshEstimation&) = delete;
+  MeshEstimation& operator=(const MeshEstimation&) = delete;
+
+  int num_vertices() const { return mesh_.num_vertices(); }
+  int threads() const { return threads_; }
+  /// Estimates vertices first, ..., first + out.size() - 1 into out (out[i] is vertex first + i).
+  /// Throws std::out_of_range for a range outside the mesh.
+  void run(int first, std::span<VertexEstimate> out);
+
+ private:
+  const Mesh& mesh_;
+  const Estimator& estimator_;
+  VertexMatrix normals_;
+  std::unique_ptr<MeshData> data_;
+  std::shared_ptr<const NeighbourhoodTable> neighbourhoods_;
+  std::vector<std::unique_ptr<Workspace>> workspaces_;
+  int threads_ = 1;
+};
+
+/// Runs the estimator on every vertex (one MeshEstimation over the whole mesh, with the optional
+/// cache of starting neighbourhoods). The result is bit-identical for any number of threads,
+/// with or without the cache.
+std::vector<VertexEstimate> estimate_mesh(const Mesh& mesh, const Estimator& estimator,
+                                          NeighbourhoodCache* neighbourhoods = nullptr);
 
 }  // namespace curvbench

@@ -19,11 +19,19 @@
 // vertices on a sphere, the most accurate of the face-normal averages; with area weights the
 // icosphere's O(h) normal errors stop the convergence), option EstimatorOptions::vertex_normals.
 // The least squares are solved through the normal equations after scaling the coordinates by their
-// RMS distance (same solution as the paper's SVD when the system has full rank; a rank-deficient
-// system fails the vertex), with the residuals in the paper's units: positions in length, normals
-// as slopes (no relative weight). Boundary vertices: the fit needs no closed 1-ring (at least 3
-// neighbours give 9 >= 7 equations): computed on the neighbours they have, status ok; fewer than 3
-// neighbours or a rank-deficient system: failed. Cost: one 7x7 system per vertex over its 1-ring.
+// RMS distance (same solution as the paper's SVD when the system has full rank), with the
+// residuals in the paper's units: positions in length, normals as slopes (no relative weight).
+// Rank-deficient cubic (e.g. a vertex on a fold or a thin handle, where neighbour normals face
+// away and only their position rows remain: fewer than 7 independent rows): the quadratic
+// z = A/2 x^2 + B x y + C/2 y^2 with the same rows, i.e. the paper's cubic with D = E = F = G = 0
+// (their quadratic model extended, like the cubic, by the slopes of the neighbours whose normals
+// are usable; the upper-left 3x3 block of the same normal equations), status degree_reduced. We
+// keep the normal rows rather than fit positions only because the method's premise is that
+// adjacent normals carry the curvature information; where none are usable the two coincide.
+// Failed: fewer than 3 neighbours, or the quadratic rank-deficient too.
+// Boundary vertices: the fit needs no closed 1-ring (at least 3 neighbours give 9 >= 7 equations):
+// computed on the neighbours they have, status ok.
+// Cost: one 7x7 system per vertex over its 1-ring (and a 3x3 one where the 7x7 is singular).
 #include <Eigen/Cholesky>
 #include <cmath>
 #include <memory>
@@ -50,13 +58,20 @@ struct GoldfeatherWorkspace final : Workspace {
 class GoldfeatherEstimator final : public OperatorEstimator {
  public:
   explicit GoldfeatherEstimator(EstimatorOptions options)
-      : OperatorEstimator(options, VertexNormals::max, /*needs_face_geometry=*/false) {}
+      : OperatorEstimator(options, VertexNormals::max) {}
 
   std::string name() const override { return "goldfeather"; }
   std::string display_name() const override { return "Goldfeather"; }
 
   std::unique_ptr<Workspace> make_workspace(const Mesh&) const override {
     return std::make_unique<GoldfeatherWorkspace>();
+  }
+
+  /// Full rank: every pivot of the LDLT clearly positive.
+  template <class D>
+  static bool full_rank(const D& pivots) {
+    const double big = pivots.cwiseAbs().maxCoeff();
+    return big > 0.0 && std::isfinite(big) && pivots.minCoeff() > 1e-12 * big;
   }
 
   void estimate(const MeshContext& ctx, int v, Workspace& base,
@@ -114,17 +129,30 @@ class GoldfeatherEstimator final : public OperatorEstimator {
       row << 0.0, x, y, 0.0, x * x, 2.0 * x * y, 3.0 * y * y;
       add(row, -b / c);
     }
-    const Eigen::LDLT<Mat7> ldlt(ata);
-    const auto piv = ldlt.vectorD();
-    const double big = piv.cwiseAbs().maxCoeff();
-    if (!(big > 0.0) || !std::isfinite(big) || !(piv.minCoeff() > 1e-12 * big)) {
+    Curvature c;
+    VertexStatus status = VertexStatus::ok;
+    if (const Eigen::LDLT<Mat7> ldlt(ata); full_rank(ldlt.vectorD())) {
+      const Vec7 coef = ldlt.solve(atb);
+      c = curvature_from_tangent_tensor(frame.m, coef(0) / s, coef(1) / s, coef(2) / s, frame.t1,
+                                        frame.t2);
+    } else {
+      // The quadratic fallback: the same rows restricted to (A, B, C), i.e. the upper-left 3x3
+      // block of the normal equations (the cubic coefficients set to zero).
+      const Eigen::LDLT<Eigen::Matrix3d> ldlt3(ata.topLeftCorner<3, 3>());
+      if (!full_rank(ldlt3.vectorD())) {
+        set_failed(1.0, points, out);
+        return;
+      }
+      const Eigen::Vector3d coef = ldlt3.solve(atb.head<3>());
+      c = curvature_from_tangent_tensor(frame.m, coef(0) / s, coef(1) / s, coef(2) / s, frame.t1,
+                                        frame.t2);
+      status = VertexStatus::degree_reduced;
+    }
+    if (!set_operator_quantities(c, computes(), points, 1.0, out)) {
       set_failed(1.0, points, out);
       return;
     }
-    const Vec7 coef = ldlt.solve(atb);
-    const double A = coef(0) / s, B = coef(1) / s, C = coef(2) / s;
-    const Curvature c = curvature_from_tangent_tensor(frame.m, A, B, C, frame.t1, frame.t2);
-    if (!set_operator_quantities(c, computes(), points, 1.0, out)) set_failed(1.0, points, out);
+    out.status = status;
   }
 };
 

@@ -76,6 +76,8 @@ class JetEstimator final : public Estimator {
   std::string name() const override { return "jet"; }
   std::string display_name() const override { return "Jet"; }
 
+  NeighbourhoodUse neighbourhood_use() const override { return NeighbourhoodUse::neighbours; }
+
   std::unique_ptr<Workspace> make_workspace(const Mesh& mesh) const override {
     return std::make_unique<JetWorkspace>(mesh);
   }
@@ -85,7 +87,7 @@ class JetEstimator final : public Estimator {
     auto& ws = static_cast<JetWorkspace&>(base);
     const Vec3 m0 = ctx.approx_normals.row(v).transpose();
     const int d = options_.degree;
-    collect_neighbourhood(ws.rings, v);
+    collect_neighbourhood(ctx, ws.rings, v);
     const size_t needed = static_cast<size_t>(num_coefficients(d));
     while (1 + ws.rings.neighbours().size() < needed && ws.rings.grow()) {
     }

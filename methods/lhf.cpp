@@ -14,7 +14,9 @@ namespace {
 class LhfEstimator final : public RingFitEstimator {
  public:
   explicit LhfEstimator(EstimatorOptions options) : RingFitEstimator(options, FitRoute::height) {}
+  bool batchable() const override { return true; }  // the default projection hook
   std::string name() const override { return "lhf"; }
+  NeighbourhoodUse neighbourhood_use() const override { return NeighbourhoodUse::neighbours; }
 };
 
 }  // namespace

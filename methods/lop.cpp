@@ -15,7 +15,9 @@ class LopEstimator final : public RingFitEstimator {
  public:
   explicit LopEstimator(EstimatorOptions options)
       : RingFitEstimator(options, FitRoute::parametric) {}
+  bool batchable() const override { return true; }  // the default projection hook
   std::string name() const override { return "lop"; }
+  NeighbourhoodUse neighbourhood_use() const override { return NeighbourhoodUse::neighbours; }
 };
 
 }  // namespace

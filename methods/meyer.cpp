@@ -2,8 +2,8 @@
 // A. H. Barr, "Discrete differential-geometry operators for triangulated 2-manifolds",
 // Visualization and Mathematics III (2003), 35-57. Degree-free; label "Meyer".
 //
-// Per interior vertex x_i with 1-ring faces f = (x_i, x_j, x_k) (per-face data of
-// face_geometry.h, computed once per mesh), unit vertex normal n (see "Choices"):
+// Per interior vertex x_i with 1-ring faces f = (x_i, x_j, x_k) (cotangents and mixed areas of
+// face_geometry.h), unit vertex normal n (see "Choices"):
 //   A_mixed   = sum_f mixed_area(f, i)                                         (§3.3, Fig. 4)
 //   K(x_i)    = 1/(2 A_mixed) sum_j (cot a_ij + cot b_ij) (x_i - x_j)                 (eq. 8)
 //             (per face: cot(angle at x_k) (x_i - x_j) + cot(angle at x_j) (x_i - x_k))
@@ -36,14 +36,15 @@
 // deficit and cotangent sum measure the boundary curve as well), and it gives no boundary
 // variant: status excluded, values NaN. A vertex whose tensor fit is singular or whose values are
 // not finite (degenerate faces) is failed.
-// Cost: O(1) per face in prepare() (no trigonometry), two passes over the incident faces and
-// one atan2 per vertex.
+// Cost: one pass over the incident faces (each face's cotangents and mixed area computed there,
+// no per-mesh arrays) and one atan2 per vertex.
 #include <cmath>
 #include <memory>
 #include <numbers>
 #include <string>
 
 #include "core/shape_operator.h"
+#include "methods/face_geometry.h"
 #include "methods/local_frame.h"
 #include "methods/operator_estimator.h"
 #include "methods/vertex_result.h"
@@ -55,7 +56,7 @@ namespace {
 class MeyerEstimator final : public OperatorEstimator {
  public:
   explicit MeyerEstimator(EstimatorOptions options)
-      : OperatorEstimator(options, VertexNormals::area, /*needs_face_geometry=*/true) {}
+      : OperatorEstimator(options, VertexNormals::area) {}
 
   std::string name() const override { return "meyer"; }
   std::string display_name() const override { return "Meyer"; }
@@ -66,9 +67,8 @@ class MeyerEstimator final : public OperatorEstimator {
     const Mesh& mesh = ctx.mesh;
     if (!interior_with_faces(mesh, v, out)) return;
     const auto faces = mesh.vertex_faces(v);
-    const OperatorMeshData& data = mesh_data(ctx);
-    const FaceGeometry& g = data.faces;
-    const Vec3 n = data.normal(ctx, v);
+    const Vec3 n = mesh_data(ctx).normal(ctx, v);
+    const LocalFrame frame = make_local_frame(n);
     const Vec3 xi = mesh.position(v);
     double area = 0.0;
     Vec3 k_vec = Vec3::Zero();
@@ -77,18 +77,41 @@ class MeyerEstimator final : public OperatorEstimator {
     // passes of the running argument through pi; the sum is 2 pi turns + arg(z).
     double zr = 1.0, zi = 0.0;
     int turns = 0;
+    // §5.2, B = [a b; b 2H - a]: per edge a (u^2 - v^2) + b (2 u v) = kappa - 2 H v^2 with (u, v)
+    // the unit tangent direction. H is not known before the loop, so the right-hand side is
+    // gathered as two sums, r = rk - 2 H rv.
+    double s11 = 0.0, s12 = 0.0, s22 = 0.0, rk1 = 0.0, rk2 = 0.0, rv1 = 0.0, rv2 = 0.0;
+    const auto add_edge = [&](const Vec3& e, double w) {
+      const double kappa = 2.0 * e.dot(n) / e.squaredNorm();
+      const double u = e.dot(frame.t1), t = e.dot(frame.t2);
+      const double inv = 1.0 / (u * u + t * t);  // (u, t) / |(u, t)| is the unit direction
+      const double p = (u * u - t * t) * inv, q = 2.0 * u * t * inv, wp = w * p, wq = w * q;
+      const double v2 = t * t * inv;
+      s11 += wp * p;
+      s12 += wp * q;
+      s22 += wq * q;
+      rk1 += wp * kappa;
+      rk2 += wq * kappa;
+      rv1 += wp * v2;
+      rv2 += wq * v2;
+    };
     for (int f : faces) {
       const int i = corner_of(mesh, f, v);
-      const int j = (i + 1) % 3, k = (i + 2) % 3;
-      area += g.mixed_area(f, i);
-      const double cot = g.cot(f, i);
+      const CornerGeometry g = corner_geometry(xi, mesh.position(mesh.face_vertex(f, (i + 1) % 3)),
+                                               mesh.position(mesh.face_vertex(f, (i + 2) % 3)));
+      const double corner_area = mixed_area(g, 0);
+      area += corner_area;
+      const double cot = g.cot[0];
       const double r = zr * cot - zi, t = zr + zi * cot;
       const double scale = 1.0 / (std::abs(r) + std::abs(t));  // keeps |z| near 1
       if (zi > 0.0 && t < 0.0) ++turns;
       zr = r * scale;
       zi = t * scale;
-      k_vec += g.cot(f, k) * (xi - mesh.position(mesh.face_vertex(f, j))) +
-               g.cot(f, j) * (xi - mesh.position(mesh.face_vertex(f, k)));
+      // cot(angle at x_k) (x_i - x_j) + cot(angle at x_j) (x_i - x_k), x_j - x_i = a.
+      k_vec -= g.cot[2] * g.a + g.cot[1] * g.b;
+      // Each face's mixed area at x_i, shared by its two edges at x_i.
+      add_edge(g.a, 0.5 * corner_area);
+      add_edge(g.b, 0.5 * corner_area);
     }
     k_vec /= 2.0 * area;
     Curvature c;
@@ -101,37 +124,13 @@ class MeyerEstimator final : public OperatorEstimator {
     c.k1 = c.H + disc;
     c.k2 = c.H - disc;
 
-    // §5.2: B = [a b; b 2H - a]; per edge a (u^2 - v^2) + b (2 u v) = kappa - 2 H v^2.
-    const LocalFrame frame = make_local_frame(n);
-    double s11 = 0.0, s12 = 0.0, s22 = 0.0, r1 = 0.0, r2 = 0.0;
-    const auto add_edge = [&](const Vec3& xj, double w) {
-      const Vec3 e = xj - xi;
-      const double len2 = e.squaredNorm();
-      const double kappa = 2.0 * e.dot(n) / len2;
-      double u = e.dot(frame.t1), t = e.dot(frame.t2);
-      const double len = std::sqrt(u * u + t * t);
-      u /= len;
-      t /= len;
-      const double p = u * u - t * t, q = 2.0 * u * t, r = kappa - 2.0 * c.H * t * t;
-      s11 += w * p * p;
-      s12 += w * p * q;
-      s22 += w * q * q;
-      r1 += w * p * r;
-      r2 += w * q * r;
-    };
-    for (int f : faces) {
-      const int i = corner_of(mesh, f, v);
-      const int j = (i + 1) % 3, k = (i + 2) % 3;
-      const double w = 0.5 * g.mixed_area(f, i);
-      add_edge(mesh.position(mesh.face_vertex(f, j)), w);
-      add_edge(mesh.position(mesh.face_vertex(f, k)), w);
-    }
     const double det = s11 * s22 - s12 * s12;
     const int points = static_cast<int>(faces.size());
     if (!(det > 0.0)) {
       set_failed(1.0, points, out);
       return;
     }
+    const double r1 = rk1 - 2.0 * c.H * rv1, r2 = rk2 - 2.0 * c.H * rv2;
     const double a = (s22 * r1 - s12 * r2) / det;
     const double b = (s11 * r2 - s12 * r1) / det;
     double e1, e2;

@@ -26,7 +26,8 @@
 // al. 2003 ("Anisotropic polygonal remeshing"), the ball one the paper's.
 // Boundary: an edge of B without a second face has no dihedral angle; a vertex whose region
 // reaches the boundary is excluded (values NaN). Non-finite values: failed.
-// Cost: prepare(), one atan2 per face edge; 1-ring, O(1) per incident face; ball, O(faces in
+// Cost: prepare(), one atan2 per interior edge (no per-face normals stored); 1-ring, O(1) per
+// incident face; ball, O(faces in
 // the ball).
 #include <algorithm>
 #include <cmath>
@@ -40,6 +41,7 @@
 #include "core/errors.h"
 #include "core/shape_operator.h"
 #include "core/text.h"
+#include "methods/face_geometry.h"
 #include "methods/local_frame.h"
 #include "methods/operator_estimator.h"
 #include "methods/vertex_result.h"
@@ -60,7 +62,8 @@ struct BallWorkspace final : Workspace {
 /// Per-mesh data: the signed dihedral angle of every face edge, computed once per mesh (each
 /// interior edge is visited from 2 faces at each of 4 vertices by estimate()).
 struct NormalCycleData final : OperatorMeshData {
-  CornerMatrix beta;  ///< m x 3: beta(f, k) of edge k (F(f,k) -> F(f,k+1)); NaN on the boundary
+  /// beta[3 f + k] of edge k of face f (F(f,k) -> F(f,k+1)); NaN on the boundary
+  std::vector<double> beta;
 };
 
 Vec3 face_normal(const Mesh& mesh, int f) {
@@ -70,15 +73,13 @@ Vec3 face_normal(const Mesh& mesh, int f) {
       .normalized();
 }
 
-// Signed dihedral angle of edge k of face f (f's orientation), positive when convex; NaN if the
-// edge has no second face. `normals`: the unit face normals.
-double dihedral(const Mesh& mesh, const VertexMatrix& normals, int f, int k) {
-  const int g = mesh.face_neighbor(f, k);
-  if (g < 0) return std::numeric_limits<double>::quiet_NaN();
+// Signed dihedral angle of edge k of face f (f's orientation) with the face g across it,
+// positive when convex; nf: f's unit normal.
+double dihedral(const Mesh& mesh, int f, int k, int g, const Vec3& nf) {
   const Vec3 a = mesh.position(mesh.face_vertex(f, k));
   const Vec3 e = mesh.position(mesh.face_vertex(f, (k + 1) % 3)) - a;
   const Vec3 edge_unit = e / e.norm();
-  const Vec3 nf = normals.row(f).transpose(), ng = normals.row(g).transpose();
+  const Vec3 ng = face_normal(mesh, g);
   return std::atan2(nf.cross(ng).dot(edge_unit), nf.dot(ng));
 }
 
@@ -100,7 +101,7 @@ double length_in_ball(const Vec3& a, const Vec3& b, const Vec3& c, double r) {
 class NormalCycleEstimator final : public OperatorEstimator {
  public:
   explicit NormalCycleEstimator(EstimatorOptions options)
-      : OperatorEstimator(options, VertexNormals::area, /*needs_face_geometry=*/false) {
+      : OperatorEstimator(options, VertexNormals::area) {
     if (!(options_.ball_factor >= 0.0) || !std::isfinite(options_.ball_factor))
       throw UsageError("normal-cycle: ball factor " + format_g(options_.ball_factor) +
                        " is not supported (valid: 0 = the 1-ring, or c > 0)");
@@ -122,16 +123,34 @@ class NormalCycleEstimator final : public OperatorEstimator {
     auto data = std::make_unique<NormalCycleData>();
     fill_mesh_data(mesh, threads, *data);
     const int m = mesh.num_faces();
-    VertexMatrix normals(m, 3);
-    data->beta.resize(m, 3);
-    const int t = threads > 0 ? threads : 1;
-#pragma omp parallel num_threads(t)
-    {
-#pragma omp for schedule(static)
-      for (int f = 0; f < m; ++f) normals.row(f) = face_normal(mesh, f).transpose();
-#pragma omp for schedule(static)
-      for (int f = 0; f < m; ++f)
-        for (int k = 0; k < 3; ++k) data->beta(f, k) = dihedral(mesh, normals, f, k);
+    data->beta.resize(3 * static_cast<size_t>(m));
+    double* beta = data->beta.data();
+    // Each interior edge once, from its face of smaller index f, written to both faces' slots:
+    // seen from g the edge and the cross product of the normals both change sign (an
+    // inconsistently oriented pair: only the cross product does, so beta does).
+#pragma omp parallel for num_threads(threads > 0 ? threads : 1) schedule(static)
+    for (int f = 0; f < m; ++f) {
+      const Vec3 nf = face_normal(mesh, f);
+      for (int k = 0; k < 3; ++k) {
+        const int g = mesh.face_neighbor(f, k);
+        if (g < 0) {
+          beta[3 * static_cast<size_t>(f) + k] = std::numeric_limits<double>::quiet_NaN();
+          continue;
+        }
+        if (g < f) continue;
+        const double b = dihedral(mesh, f, k, g, nf);
+        beta[3 * static_cast<size_t>(f) + k] = b;
+        // g's copy of the edge (its end points, either way round; it exists since g is f's
+        // neighbour across it).
+        const int a = mesh.face_vertex(f, k), b_end = mesh.face_vertex(f, (k + 1) % 3);
+        int kg = 0;
+        while (kg < 2 && !((mesh.face_vertex(g, kg) == a || mesh.face_vertex(g, kg) == b_end) &&
+                           (mesh.face_vertex(g, (kg + 1) % 3) == a ||
+                            mesh.face_vertex(g, (kg + 1) % 3) == b_end)))
+          ++kg;
+        const bool reversed = mesh.face_vertex(g, kg) == b_end;
+        beta[3 * static_cast<size_t>(g) + kg] = reversed ? b : -b;
+      }
     }
     return data;
   }
@@ -150,13 +169,13 @@ class NormalCycleEstimator final : public OperatorEstimator {
     double t11 = 0.0, t12 = 0.0, t22 = 0.0, area = 0.0;
     bool boundary = false;
     int edges = 0;
-    // beta |e n B| e^ e^^T in the tangent frame.
-    const auto add = [&](const Vec3& e_unit, double beta, double length) {
+    // beta |e n B| e^ e^^T in the tangent frame: e^ = e / |e|, w = beta |e n B| / |e|^2.
+    const auto add = [&](const Vec3& e, double beta, double length, double len2) {
       if (std::isnan(beta)) {
         boundary = true;
         return;
       }
-      const double u = e_unit.dot(frame.t1), t = e_unit.dot(frame.t2), w = beta * length;
+      const double u = e.dot(frame.t1), t = e.dot(frame.t2), w = beta * length / len2;
       t11 += w * u * u;
       t12 += w * u * t;
       t22 += w * t * t;
@@ -171,12 +190,15 @@ class NormalCycleEstimator final : public OperatorEstimator {
         area += 0.5 * (x1 - x0).cross(x2 - x0).norm();
         // The edge v -> x1 (edge i of f): each edge at v is edge "from v" of exactly one face;
         // the edge x2 -> v of a boundary fan has no second face.
-        const double l01 = (x1 - x0).norm();
-        add((x1 - x0) / l01, data.beta(f, i), l01);
+        const Vec3 e01 = x1 - x0;
+        const double len2_01 = e01.squaredNorm();
+        add(e01, data.beta[3 * static_cast<size_t>(f) + i], std::sqrt(len2_01), len2_01);
         if (mesh.face_neighbor(f, (i + 2) % 3) < 0) boundary = true;
         // The link edge x1 -> x2 (edge i+1 of f), half its length.
-        const double l12 = (x2 - x1).norm();
-        add((x2 - x1) / l12, data.beta(f, (i + 1) % 3), 0.5 * l12);
+        const Vec3 e12 = x2 - x1;
+        const double len2_12 = e12.squaredNorm();
+        add(e12, data.beta[3 * static_cast<size_t>(f) + (i + 1) % 3], 0.5 * std::sqrt(len2_12),
+            len2_12);
       }
     } else {
       auto& ws = static_cast<BallWorkspace&>(base);
@@ -201,7 +223,8 @@ class NormalCycleEstimator final : public OperatorEstimator {
             boundary = true;
             continue;
           }
-          if (f < g) add((b - a).normalized(), data.beta(f, k), inside);
+          if (f < g)
+            add(b - a, data.beta[3 * static_cast<size_t>(f) + k], inside, (b - a).squaredNorm());
           if (ws.stamp[static_cast<size_t>(g)] != ws.current) {
             ws.stamp[static_cast<size_t>(g)] = ws.current;
             ws.queue.push_back(g);

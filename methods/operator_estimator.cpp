@@ -11,10 +11,8 @@
 namespace curvbench {
 
 OperatorEstimator::OperatorEstimator(EstimatorOptions options, VertexNormals default_normals,
-                                     bool needs_face_geometry, bool ring_option)
-    : Estimator(options),
-      default_normals_(default_normals),
-      needs_face_geometry_(needs_face_geometry) {
+                                     bool ring_option)
+    : Estimator(options), default_normals_(default_normals) {
   if (options_.degree != 0)
     throw UsageError("a discrete operator takes no degree (got " + std::to_string(options_.degree) +
                      ")");
@@ -34,7 +32,6 @@ std::unique_ptr<Workspace> OperatorEstimator::make_workspace(const Mesh&) const 
 
 void OperatorEstimator::fill_mesh_data(const Mesh& mesh, int threads,
                                        OperatorMeshData& data) const {
-  if (needs_face_geometry_) data.faces = face_geometry(mesh, threads, /*angles=*/false);
   // The area-weighted normals are MeshContext::approx_normals already.
   if (normal_weighting() != VertexNormals::area)
     data.normals = weighted_vertex_normals(mesh, normal_weighting(), threads);

@@ -1,19 +1,17 @@
 // Common base of the degree-free discrete operators (meyer, taubin, rusinkiewicz, quadric, ...):
-// no degree (label "Meyer"), the per-mesh data of prepare() (per-face geometry of
-// face_geometry.h, the method's vertex normals of vertex_normals.h), a trivial workspace.
+// no degree (label "Meyer"), the per-mesh data of prepare() (the method's vertex normals of
+// vertex_normals.h), a trivial workspace.
 #pragma once
 
 #include <memory>
 
 #include "core/types.h"
 #include "methods/estimator.h"
-#include "methods/face_geometry.h"
 
 namespace curvbench {
 
 /// The per-mesh data of an OperatorEstimator (MeshContext::data).
 struct OperatorMeshData : MeshData {
-  FaceGeometry faces;    ///< empty unless the method asked for it
   VertexMatrix normals;  ///< the method's vertex normals; empty = MeshContext::approx_normals
   /// Unit normal of vertex v (zero for a vertex without faces).
   Vec3 normal(const MeshContext& ctx, int v) const {
@@ -36,7 +34,7 @@ class OperatorEstimator : public Estimator {
   /// Throws UsageError for a degree other than 0, negative threads, or (unless
   /// `ring_option`) a ring other than 0 and 1.
   OperatorEstimator(EstimatorOptions options, VertexNormals default_normals,
-                    bool needs_face_geometry, bool ring_option = false);
+                    bool ring_option = false);
   /// Fills the fields of OperatorMeshData (what prepare() returns); for an override of
   /// prepare() that derives its own data from OperatorMeshData.
   void fill_mesh_data(const Mesh& mesh, int threads, OperatorMeshData& data) const;
@@ -49,7 +47,6 @@ class OperatorEstimator : public Estimator {
 
  private:
   VertexNormals default_normals_;
-  bool needs_face_geometry_;
 };
 
 }  // namespace curvbench

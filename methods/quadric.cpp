@@ -23,17 +23,20 @@
 // vertex (option EstimatorOptions::quadric_constant: 6); ring 5 (option ring, `--rings`, any
 // integer >= 1).
 // Boundary vertices: the k-ring is one-sided but the fit is defined (as in libigl): status ok.
-// Cost: O(k^2) points per vertex.
+// Cost: O(k^2) points per vertex; the k-ring by a breadth-first search over per-mesh neighbour
+// lists (prepare()), in the order of mesh/rings.h, without branches on the visited marks.
 #include <Eigen/Cholesky>
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "core/errors.h"
 #include "core/shape_operator.h"
 #include "core/text.h"
-#include "mesh/rings.h"
 #include "methods/local_frame.h"
 #include "methods/operator_estimator.h"
 #include "methods/vertex_result.h"
@@ -45,21 +48,51 @@ namespace {
 constexpr int kMinPoints = 6;  // libigl: at least 6 points, centre included
 constexpr double kDefaultRing = 5.0;
 
+/// Per-mesh data: the edge neighbours of every vertex, in the order in which a k-ring search
+/// through the faces (mesh/rings.h) meets them (faces in increasing index, corners 0, 1, 2), so
+/// that a breadth-first search over these lists finds the k-ring in RingCollector's order.
+struct QuadricData final : OperatorMeshData {
+  std::vector<int> offsets;  ///< n + 1
+  std::vector<int> adjacent;
+  std::span<const int> neighbours(int v) const {
+    return {adjacent.data() + offsets[static_cast<size_t>(v)],
+            adjacent.data() + offsets[static_cast<size_t>(v) + 1]};
+  }
+};
+
 struct QuadricWorkspace final : Workspace {
-  explicit QuadricWorkspace(const Mesh& mesh) : rings(mesh) {
+  explicit QuadricWorkspace(const Mesh& mesh)
+      : stamp(static_cast<size_t>(mesh.num_vertices()), 0),
+        ring(static_cast<size_t>(mesh.num_vertices()) + 1) {
     keep.reserve(256);
     local.reserve(3 * 256);
   }
-  RingCollector rings;
+  std::vector<std::uint32_t> stamp;  ///< == current: in the ring being collected
+  std::uint32_t current = 0;
+  /// The centre, then the k-ring in discovery order (room for every vertex, so that the search
+  /// can write without a branch)
+  std::vector<int> ring;
   std::vector<int> keep;
   std::vector<double> local;  ///< (u, v, w) of each kept point, 3 per point
 };
 
+/// Appends to `out` the neighbours of v (see QuadricData), each once; returns how many.
+int list_neighbours(const Mesh& mesh, int v, int* out) {
+  int count = 0;
+  for (int f : mesh.vertex_faces(v))
+    for (int k = 0; k < 3; ++k) {
+      const int w = mesh.face_vertex(f, k);
+      bool seen = w == v;
+      for (int i = 0; i < count && !seen; ++i) seen = out[i] == w;
+      if (!seen) out[count++] = w;
+    }
+  return count;
+}
+
 class QuadricEstimator final : public OperatorEstimator {
  public:
   explicit QuadricEstimator(EstimatorOptions options)
-      : OperatorEstimator(options, VertexNormals::area, /*needs_face_geometry=*/false,
-                          /*ring_option=*/true) {
+      : OperatorEstimator(options, VertexNormals::area, /*ring_option=*/true) {
     const double r = options_.ring;
     if (!(r == 0.0 || (std::isfinite(r) && r >= 1.0 && r == std::round(r) && r <= 64.0)))
       throw UsageError("quadric: ring " + format_g(r) +
@@ -74,14 +107,66 @@ class QuadricEstimator final : public OperatorEstimator {
     return std::make_unique<QuadricWorkspace>(mesh);
   }
 
+  std::unique_ptr<MeshData> prepare(const Mesh& mesh, const VertexMatrix&,
+                                    int threads) const override {
+    auto data = std::make_unique<QuadricData>();
+    fill_mesh_data(mesh, threads, *data);
+    const int n = mesh.num_vertices();
+    data->offsets.assign(static_cast<size_t>(n) + 1, 0);
+    // Counts, offsets, then the lists (a vertex has at most 2 neighbours per face).
+    int max_valence = 0;
+    for (int v = 0; v < n; ++v)
+      max_valence = std::max(max_valence, static_cast<int>(mesh.vertex_faces(v).size()));
+    const int t = std::max(1, threads);
+#pragma omp parallel num_threads(t)
+    {
+      std::vector<int> buffer(2 * static_cast<size_t>(max_valence) + 1);
+#pragma omp for schedule(static)
+      for (int v = 0; v < n; ++v)
+        data->offsets[static_cast<size_t>(v) + 1] = list_neighbours(mesh, v, buffer.data());
+#pragma omp single
+      {
+        for (int v = 0; v < n; ++v)
+          data->offsets[static_cast<size_t>(v) + 1] += data->offsets[static_cast<size_t>(v)];
+        data->adjacent.resize(static_cast<size_t>(data->offsets.back()));
+      }
+#pragma omp for schedule(static)
+      for (int v = 0; v < n; ++v)
+        list_neighbours(mesh, v, data->adjacent.data() + data->offsets[static_cast<size_t>(v)]);
+    }
+    return data;
+  }
+
   void estimate(const MeshContext& ctx, int v, Workspace& base,
                 VertexEstimate& out) const override {
     auto& ws = static_cast<QuadricWorkspace&>(base);
     const Mesh& mesh = ctx.mesh;
-    const OperatorMeshData& data = mesh_data(ctx);
+    const auto& data = static_cast<const QuadricData&>(*ctx.data);
     const double ring = options_.ring > 0.0 ? options_.ring : kDefaultRing;
-    ws.rings.collect_integer(v, static_cast<int>(ring));
-    const auto nb = ws.rings.neighbours();
+    // The integer k-ring (the vertices within k edges of v), breadth first.
+    if (++ws.current == 0) {  // stamps wrapped: clear
+      std::fill(ws.stamp.begin(), ws.stamp.end(), 0);
+      ws.current = 1;
+    }
+    int* found = ws.ring.data();
+    std::uint32_t* stamp = ws.stamp.data();
+    const std::uint32_t current = ws.current;
+    found[0] = v;
+    stamp[v] = current;
+    size_t size = 1, layer_begin = 0;
+    for (int step = 0; step < static_cast<int>(ring); ++step) {
+      const size_t layer_end = size;
+      for (size_t i = layer_begin; i < layer_end; ++i)
+        for (int w : data.neighbours(found[i])) {
+          // Always written, kept only if new (size grows by 0 or 1): no mispredicted branch.
+          const size_t fresh = stamp[w] != current ? 1 : 0;
+          stamp[w] = current;
+          found[size] = w;
+          size += fresh;
+        }
+      layer_begin = layer_end;
+    }
+    const std::span<const int> nb(found + 1, size - 1);
     if (1 + static_cast<int>(nb.size()) < kMinPoints) {
       set_failed(ring, 1 + static_cast<int>(nb.size()), out);
       return;
@@ -153,14 +238,41 @@ class QuadricEstimator final : public OperatorEstimator {
                                Eigen::Matrix<double, 6, 6>& ata, Eigen::Matrix<double, 6, 1>& atb) {
     double a[N * (N + 1) / 2] = {};
     double b[N] = {};
+    // The products written out (a row array here made GCC store and reload it every point).
+    // Upper-triangle index of (r, c): row r starts at r N - r (r - 1) / 2.
     for (size_t i = 0; i < local.size(); i += 3) {
       const double u = local[i] * inv, t = local[i + 1] * inv, w = local[i + 2] * inv;
-      const double row[6] = {u * u, u * t, t * t, u, t, 1.0};
-      int k = 0;
-      for (int r = 0; r < N; ++r) {
-        for (int c = r; c < N; ++c) a[k++] += row[r] * row[c];
-        b[r] += w * row[r];
+      const double uu = u * u, ut = u * t, tt = t * t;
+      constexpr int r1 = N, r2 = 2 * N - 1, r3 = 3 * N - 3, r4 = 4 * N - 6;
+      a[0] += uu * uu;
+      a[1] += uu * ut;
+      a[2] += uu * tt;
+      a[3] += uu * u;
+      a[4] += uu * t;
+      a[r1] += ut * ut;
+      a[r1 + 1] += ut * tt;
+      a[r1 + 2] += ut * u;
+      a[r1 + 3] += ut * t;
+      a[r2] += tt * tt;
+      a[r2 + 1] += tt * u;
+      a[r2 + 2] += tt * t;
+      a[r3] += u * u;
+      a[r3 + 1] += u * t;
+      a[r4] += t * t;
+      if constexpr (N == 6) {  // the column of the constant term: row[5] = 1
+        a[5] += uu;
+        a[r1 + 4] += ut;
+        a[r2 + 3] += tt;
+        a[r3 + 2] += u;
+        a[r4 + 1] += t;
+        a[r4 + 2] += 1.0;
+        b[5] += w;
       }
+      b[0] += w * uu;
+      b[1] += w * ut;
+      b[2] += w * tt;
+      b[3] += w * u;
+      b[4] += w * t;
     }
     if (N == 6) a[N * (N + 1) / 2 - 1] += 1.0;  // the centre row (0, 0, 0, 0, 0, 1), w = 0
     ata.setZero();

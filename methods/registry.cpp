@@ -66,6 +66,23 @@ std::string valid_names() {
   return s;
 }
 
+// Options of single methods (EstimatorOptions: vertex_normals, quadric_constant, ball_factor)
+// given to a method that does not use them: an error rather than silently ignored.
+std::unique_ptr<Estimator> checked(std::unique_ptr<Estimator> est) {
+  const EstimatorOptions& o = est->options();
+  const std::string name = est->name();
+  if (o.vertex_normals != VertexNormals::method_default && est->takes_degree())
+    throw UsageError(
+        "vertex-normals applies to the discrete operators only (meyer, taubin, "
+        "rusinkiewicz, quadric, goldfeather, normal-cycle), not to '" +
+        name + "'");
+  if (o.quadric_constant && name != "quadric")
+    throw UsageError("quadric-constant applies to method 'quadric' only, not to '" + name + "'");
+  if (o.ball_factor != 0.0 && name != "normal-cycle")
+    throw UsageError("ball-factor applies to method 'normal-cycle' only, not to '" + name + "'");
+  return est;
+}
+
 const Registration* find(const std::string& name) {
   for (const Registration& r : kRegistry)
     if (name == r.name) return &r;
@@ -102,7 +119,7 @@ std::unique_ptr<Estimator> make_estimator(const std::string& name, EstimatorOpti
     if (options.degree != 0)
       throw UsageError("method '" + std::string(reg->name) + "' takes no degree (got degree " +
                        std::to_string(options.degree) + "; it is not a polynomial fit)");
-    return reg->make(options);
+    return checked(reg->make(options));
   }
   if (options.degree == 0 && !attached)
     options.degree = std::clamp(2, reg->min_degree, reg->max_degree);
@@ -114,7 +131,7 @@ std::unique_ptr<Estimator> make_estimator(const std::string& name, EstimatorOpti
     throw UsageError("method '" + std::string(reg->name) + "' does not support degree " +
                      std::to_string(options.degree) + " (valid: " + range + ")");
   }
-  return reg->make(options);
+  return checked(reg->make(options));
 }
 
 std::vector<std::string> estimator_names() {

@@ -97,6 +97,20 @@ class RingFitEstimator : public Estimator {
  public:
   std::unique_ptr<Workspace> make_workspace(const Mesh& mesh) const final;
   void estimate(const MeshContext& ctx, int v, Workspace& ws, VertexEstimate& out) const final;
+  /// The batched kernel (methods/batched_fit.h) when uses_batched_kernel(), else estimate() per
+  /// vertex. Per vertex: the same neighbourhood, rows, weights and formulas as estimate(); a
+  /// vertex the batch cannot finish at the requested degree (too few rows, a column failing the
+  /// safeguard, so degree reduction or adaptive growth) goes through estimate().
+  void estimate_batch(const MeshContext& ctx, int first, int count, Workspace& ws,
+                      VertexEstimate* out) const final;
+  /// options().kernel is batched, the method is batchable(), the solver is the safeguarded QR,
+  /// degree <= kBatchMaxDegree and the weight exponent is one the batch computes (d/4).
+  bool uses_batched_kernel() const;
+  /// Neighbours and faces: a parameterization hook may read the ring faces. A method whose hook
+  /// does not (LHF, LOP) overrides this with NeighbourhoodUse::neighbours.
+  NeighbourhoodUse neighbourhood_use() const override {
+    return NeighbourhoodUse::neighbours_and_faces;
+  }
 
   FitRoute route() const { return route_; }
   /// Least-squares settings used for every fit (degree, centre row, solver, QR tolerance).
@@ -128,6 +142,10 @@ class RingFitEstimator : public Estimator {
                             ParamScratch* scratch) const;
   virtual std::unique_ptr<ParamScratch> make_param_scratch(const Mesh& mesh) const;
   virtual bool use_normal_safeguard() const { return options().normal_safeguard; }
+  /// Whether the batched kernel may fit this method. It computes the default projection of
+  /// parameterize() inline, so only a method that keeps that hook may return true (LHF, LOP); a
+  /// method that overrides parameterize() keeps the default false.
+  virtual bool batchable() const { return false; }
 
  private:
   FitRoute route_;

@@ -25,6 +25,7 @@
 #include <string>
 
 #include "core/shape_operator.h"
+#include "methods/face_geometry.h"
 #include "methods/local_frame.h"
 #include "methods/operator_estimator.h"
 #include "methods/vertex_result.h"
@@ -36,7 +37,7 @@ namespace {
 class TaubinEstimator final : public OperatorEstimator {
  public:
   explicit TaubinEstimator(EstimatorOptions options)
-      : OperatorEstimator(options, VertexNormals::area, /*needs_face_geometry=*/false) {}
+      : OperatorEstimator(options, VertexNormals::area) {}
 
   std::string name() const override { return "taubin"; }
   std::string display_name() const override { return "Taubin"; }

@@ -1,9 +1,11 @@
 // Weighted vertex normals; see vertex_normals.h.
 #include "methods/vertex_normals.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/errors.h"
+#include "methods/face_geometry.h"
 
 namespace curvbench {
 
@@ -11,41 +13,66 @@ VertexMatrix weighted_vertex_normals(const Mesh& mesh, VertexNormals weighting, 
   if (weighting == VertexNormals::method_default)
     throw UsageError("weighted_vertex_normals: no weighting given");
   const int n = mesh.num_vertices();
-  VertexMatrix N(n, 3);
-#pragma omp parallel for num_threads(threads > 0 ? threads : 1) schedule(static)
-  for (int v = 0; v < n; ++v) {
-    Vec3 sum = Vec3::Zero();
-    for (int f : mesh.vertex_faces(v)) {
-      int k = 0;
-      while (mesh.face_vertex(f, k) != v) ++k;
-      const Vec3 x0 = mesh.position(v);
-      const Vec3 a = mesh.position(mesh.face_vertex(f, (k + 1) % 3)) - x0;
-      const Vec3 b = mesh.position(mesh.face_vertex(f, (k + 2) % 3)) - x0;
-      const Vec3 cross = a.cross(b);  // 2 area(f) times the unit face normal
-      if (!(cross.squaredNorm() > 0.0)) continue;
-      // w / |cross| times cross; area and max need no square root.
-      double w_over_len = 0.0;
-      switch (weighting) {
-        case VertexNormals::area:
-          w_over_len = 0.5;
-          break;
-        case VertexNormals::angle: {
-          const double len = cross.norm();
-          w_over_len = std::atan2(len, a.dot(b)) / len;
-          break;
+  VertexMatrix N = VertexMatrix::Zero(n, 3);
+  // One pass over the faces, each adding its corners' weighted normals (in a fixed order for
+  // any thread count: for_each_vertex_range, methods/face_geometry.h).
+  for_each_vertex_range(n, threads, [&](int lo, int hi) {
+    for_each_face_touching(mesh, lo, hi, [&](int, const int(&vs)[3]) {
+      const Vec3 x[3] = {mesh.position(vs[0]), mesh.position(vs[1]), mesh.position(vs[2])};
+      for (int k = 0; k < 3; ++k) {
+        if (vs[k] < lo || vs[k] >= hi) continue;
+        const Vec3 a = x[(k + 1) % 3] - x[k];
+        const Vec3 b = x[(k + 2) % 3] - x[k];
+        const Vec3 cross = a.cross(b);  // 2 area(f) times the unit face normal
+        if (!(cross.squaredNorm() > 0.0)) continue;
+        // w / |cross| times cross; area and max need no square root.
+        double w_over_len = 0.0;
+        switch (weighting) {
+          case VertexNormals::area:
+            w_over_len = 0.5;
+            break;
+          case VertexNormals::angle: {
+            const double len = cross.norm();
+            w_over_len = std::atan2(len, a.dot(b)) / len;
+            break;
+          }
+          case VertexNormals::max:
+            w_over_len = 1.0 / (a.squaredNorm() * b.squaredNorm());
+            break;
+          case VertexNormals::method_default:
+            break;
         }
-        case VertexNormals::max:
-          w_over_len = 1.0 / (a.squaredNorm() * b.squaredNorm());
-          break;
-        case VertexNormals::method_default:
-          break;
+        N.row(vs[k]) += (w_over_len * cross).transpose();
       }
-      sum += w_over_len * cross;
+    });
+    for (int v = lo; v < hi; ++v) {
+      const Vec3 sum = N.row(v).transpose();
+      const double len = sum.norm();
+      N.row(v) = (len > 0.0 && std::isfinite(len) ? Vec3(sum / len) : Vec3::Zero()).transpose();
     }
-    const double len = sum.norm();
-    N.row(v) = (len > 0.0 && std::isfinite(len) ? Vec3(sum / len) : Vec3::Zero()).transpose();
-  }
+  });
   return N;
+}
+
+VertexNormals parse_vertex_normals(const std::string& name) {
+  for (VertexNormals w : {VertexNormals::method_default, VertexNormals::area, VertexNormals::angle,
+                          VertexNormals::max})
+    if (name == to_string(w)) return w;
+  throw UsageError("vertex normals '" + name + "' unknown (valid: default, area, angle, max)");
+}
+
+const char* to_string(VertexNormals weighting) {
+  switch (weighting) {
+    case VertexNormals::method_default:
+      return "default";
+    case VertexNormals::area:
+      return "area";
+    case VertexNormals::angle:
+      return "angle";
+    case VertexNormals::max:
+      return "max";
+  }
+  return "unknown";
 }
 
 }  // namespace curvbench

@@ -8,8 +8,14 @@
 //   max    w = |a x b| / (|a|^2 |b|^2) = sin(theta) / (|a| |b|), a, b the edges of f at v
 //          (Max 1999; trimesh2's choice, used by Rusinkiewicz 2004)
 // A vertex without faces, or whose weighted sum vanishes, gets the zero vector. n x 3.
-// Deterministic: each vertex sums its faces in increasing face order.
+// Deterministic: each vertex sums its faces in increasing face order (one pass over the faces;
+// each thread owns a range of vertices), whatever the number of threads.
+//
+// Names (the command line's --vertex-normals, the experiment option vertex-normals=): "default"
+// (method_default), "area", "angle", "max".
 #pragma once
+
+#include <string>
 
 #include "core/types.h"
 #include "mesh/mesh.h"
@@ -19,5 +25,11 @@ namespace curvbench {
 
 /// Normals with the given weighting (not VertexNormals::method_default) and `threads` threads.
 VertexMatrix weighted_vertex_normals(const Mesh& mesh, VertexNormals weighting, int threads);
+
+/// The weighting named `name` (see above); throws UsageError naming the valid names.
+VertexNormals parse_vertex_normals(const std::string& name);
+
+/// The name of a weighting ("default", "area", "angle", "max").
+const char* to_string(VertexNormals weighting);
 
 }  // namespace curvbench

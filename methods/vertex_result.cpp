@@ -73,8 +73,8 @@ bool set_operator_quantities(const Curvature& c, const ComputedQuantities& compu
   return true;
 }
 
-void mark_sign_undetermined(const std::vector<unsigned char>& undetermined,
-                            std::vector<VertexEstimate>& estimates) {
+void mark_sign_undetermined(std::span<const unsigned char> undetermined,
+                            std::span<VertexEstimate> estimates) {
   for (size_t v = 0; v < estimates.size() && v < undetermined.size(); ++v) {
     VertexStatus& s = estimates[v].status;
     if (undetermined[v] && s != VertexStatus::failed && s != VertexStatus::excluded)

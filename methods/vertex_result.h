@@ -2,6 +2,7 @@
 // Shared by every estimator so that the status conventions live in one place.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "core/shape_operator.h"
@@ -35,7 +36,8 @@ bool set_operator_quantities(const Curvature& c, const ComputedQuantities& compu
 
 /// Marks every vertex v with undetermined[v] != 0 and finite values (ok, degree_reduced,
 /// disk_cut) as sign_undetermined (mesh/orientation.h); failed and excluded rows stay as they are.
-void mark_sign_undetermined(const std::vector<unsigned char>& undetermined,
-                            std::vector<VertexEstimate>& estimates);
+/// `undetermined` and `estimates` start at the same vertex (a block: both subspans).
+void mark_sign_undetermined(std::span<const unsigned char> undetermined,
+                            std::span<VertexEstimate> estimates);
 
 }  // namespace curvbench

@@ -1,6 +1,7 @@
 // The Python module `curvbench` (pybind11): numpy arrays in and out over the library.
 //
-//   estimate(V, F, method="lhf", degree=None, rings=None, noisy=False, threads=None) -> Estimate
+//   estimate(V, F, method="lhf", degree=None, rings=None, noisy=False, threads=None,
+//            vertex_normals="default", quadric_constant=False, ball_factor=0.0) -> Estimate
 //   read_mesh(path) -> (V, F)
 //   mesh(family, level, noise_order=0, seed=1) -> (V, F, Exact)
 //   score(exact_or_mesh, estimate, vertex_set="all") -> {quantity: {"L2", "Linf", ...}}
@@ -173,7 +174,8 @@ py::array numpy_status_names(const py::array_t<std::uint8_t>& codes) {
 
 PyEstimate py_estimate(const py::handle& V, const py::handle& F, const std::string& method,
                        std::optional<int> degree, std::optional<double> rings, bool noisy,
-                       std::optional<int> threads) {
+                       std::optional<int> threads, const std::string& vertex_normals,
+                       bool quadric_constant, double ball_factor) {
   EstimateOptions o;
   o.method = method;
   o.degree = degree.value_or(0);
@@ -183,6 +185,9 @@ PyEstimate py_estimate(const py::handle& V, const py::handle& F, const std::stri
   if (rings && !(*rings > 0)) throw UsageError("rings: must be > 0 (None = the method's default)");
   o.threads = threads.value_or(0);
   o.noisy = noisy;
+  o.vertex_normals = vertex_normals;
+  o.quadric_constant = quadric_constant;
+  o.ball_factor = ball_factor;
   if (threads && *threads < 1) throw UsageError("threads: must be >= 1 (None = all cores)");
   const std::unique_ptr<Estimator> est = make_api_estimator(o);
   VertexMatrix Vm = to_vertices(V);
@@ -190,8 +195,8 @@ PyEstimate py_estimate(const py::handle& V, const py::handle& F, const std::stri
   PyEstimate r;
   {
     py::gil_scoped_release unlocked;
-    const Mesh mesh(std::move(Vm), std::move(Fm), "mesh");
-    r.estimates = estimate_oriented(mesh, *est).estimates;
+    Mesh mesh(std::move(Vm), std::move(Fm), "mesh");
+    r.estimates = estimate_oriented(std::move(mesh), *est).estimates;
   }
   const auto& e = r.estimates;
   const size_t n = e.size();
@@ -369,7 +374,8 @@ PYBIND11_MODULE(curvbench, m) {
 
   m.def("estimate", &py_estimate, py::arg("V"), py::arg("F"), py::arg("method") = "lhf",
         py::arg("degree") = py::none(), py::arg("rings") = py::none(), py::arg("noisy") = false,
-        py::arg("threads") = py::none(),
+        py::arg("threads") = py::none(), py::arg("vertex_normals") = "default",
+        py::arg("quadric_constant") = false, py::arg("ball_factor") = 0.0,
         (std::string(R"(Estimate normals, principal curvatures and directions at every vertex.
 
 V: (n, 3) vertex positions, float64 or float32 (int32/int64 accepted), any strides.
@@ -379,6 +385,9 @@ degree: fitting degree (None: the one attached to method, else 2).
 rings: ring size 1, 1.5, 2, ... (None: the method's default, (degree+1)/2; Xu 1).
 noisy: noisy input, default ring + 0.5 (paper §5.3).
 threads: OpenMP threads (None: all cores); results are bit-identical for any count.
+vertex_normals: discrete operators only: 'area', 'angle' or 'max' ('default': the method's own).
+quadric_constant: quadric only: 6 coefficients (a constant term) instead of libigl's 5.
+ball_factor: normal-cycle only: the ball of radius c times the mean edge length (0: the 1-ring).
 
 Returns a curvbench.Estimate: normal (n,3), k1, k2, H, K (n,), d1, d2 (n,3), degree, points,
 ring (n,), status (n,) str and status_code (n,) uint8, method (label). Identical, bit for bit,
@@ -386,7 +395,7 @@ to `curvbench estimate` on the same mesh. The GIL is released while estimating.
 
 Raises MeshError (a ValueError) for a wrong shape or dtype, an index out of range, a face
 repeating a vertex or a NaN/Inf coordinate; UsageError for an unknown method, an unsupported
-degree or a degree contradicting the method name.)") +
+degree, a degree contradicting the method name, or an option of another method.)") +
          kConventions)
             .c_str());
 

@@ -14,6 +14,7 @@ packages=(
   libgtest-dev libgmock-dev  # GoogleTest
   libbenchmark-dev         # Google Benchmark
   libcli11-dev             # command line
+  libhwy-dev               # Google Highway: SIMD with run-time dispatch (batched fitting kernels)
   pybind11-dev python3-dev python3-numpy python3-pytest  # Python module (for /usr/bin/python3);
                            # numpy also runs the outside-estimator example (experiments/examples/)
   gnuplot-nox              # convergence plots (PNG and SVG)

@@ -45,6 +45,10 @@ struct EstimateOptions {
   double rings = 0.0;          ///< ring size 1, 1.5, 2, ...; 0 = the method's default
   bool noisy = false;          ///< noisy input: default ring + 0.5 (paper §5.3)
   int threads = 0;             ///< OpenMP threads; 0 = all cores (results do not depend on it)
+  // Options of single methods (an error for any other method):
+  std::string vertex_normals = "default";  ///< discrete operators: "area", "angle" or "max"
+  bool quadric_constant = false;           ///< quadric: 6 coefficients instead of 5
+  double ball_factor = 0.0;  ///< normal-cycle: ball of radius c x mean edge; 0 = the 1-ring
 };
 
 /// Per-vertex estimates; row/entry i belongs to vertex i.

@@ -221,6 +221,29 @@ def test_bad_options_raise_usage_error_with_the_command_line_message(torus, tmp_
         curvbench.mesh("torus-structured", 99)
 
 
+def test_options_of_single_methods_match_the_command_line(torus, tmp_path):
+    V, F = curvbench.read_mesh(torus)
+    for method, cli_args, kwargs in (
+            ("meyer", ["--vertex-normals", "angle"], {"vertex_normals": "angle"}),
+            ("quadric", ["--quadric-constant"], {"quadric_constant": True}),
+            ("normal-cycle", ["--ball-factor", "2"], {"ball_factor": 2.0})):
+        out = tmp_path / f"{method}.csv"
+        r = cli("estimate", torus, "--method", method, *cli_args, "--output", out)
+        assert r.returncode == 0, r.stderr
+        want = np.array([float(row["H"]) for row in read_cli_csv(out)])
+        got = curvbench.estimate(V, F, method=method, **kwargs).H
+        assert np.array_equal(got, want, equal_nan=True), method
+        assert not np.array_equal(curvbench.estimate(V, F, method=method).H, got), method
+    want = error_line("estimate", torus, "--method", "lhf", "--vertex-normals", "max", "--output",
+                      tmp_path / "x.csv")
+    with pytest.raises(curvbench.UsageError) as e:
+        curvbench.estimate(V, F, method="lhf", vertex_normals="max")
+    assert str(e.value) == want
+    for kwargs in ({"vertex_normals": "cot"}, {"quadric_constant": True}, {"ball_factor": 1.0}):
+        with pytest.raises(curvbench.UsageError):
+            curvbench.estimate(V, F, method="meyer", **kwargs)
+
+
 def test_read_mesh_errors_and_warnings_match_the_command_line():
     corpus = os.path.join(os.environ["CURVBENCH_SOURCE_DIR"], "tests", "corpus", "off")
     for name in ("broken_nan.off", "broken_index_out_of_range.off", "broken_truncated.off"):

@@ -8,6 +8,7 @@
 #include "core/errors.h"
 #include "harness/experiment.h"
 #include "harness/results_table.h"
+#include "harness/runner.h"
 #include "meshgen/generate.h"
 #include "methods/estimator.h"
 #include "tests/harness/cli_runner.h"
@@ -80,6 +81,62 @@ TEST(Experiment, ErrorsNameFileAndLine) {
   expect_error("mesh bump-48 levels=1\nmethod lhf-2\npanel p c H L2\n", "missing 'name'");
   expect_error("name x\nmethod lhf-2\npanel p c H L2\n", "no 'mesh' line");
   EXPECT_THROW(parse_experiment("/nonexistent/x.exp"), InputError);
+}
+
+// The options of single methods: parsed onto the method line, and checked there against the
+// method (make_estimator) so that a misplaced or bad option names the file and line.
+TEST(Experiment, SingleMethodOptions) {
+  const std::string head = "name x\nmesh bump-48 levels=1\npanel p c H L2\n";
+  const Experiment e =
+      parse_experiment_text(head +
+                                "method meyer vertex-normals=angle\n"
+                                "method quadric quadric-constant=yes\n"
+                                "method normal-cycle ball-factor=2.5 label=\"NC ball\"\n"
+                                "method normal-cycle\n",
+                            "opts.exp");
+  ASSERT_EQ(e.methods.size(), 4u);
+  EXPECT_EQ(e.methods[0].vertex_normals, VertexNormals::angle);
+  EXPECT_TRUE(e.methods[1].quadric_constant);
+  EXPECT_DOUBLE_EQ(e.methods[2].ball_factor, 2.5);
+  EXPECT_EQ(e.methods[3].vertex_normals, VertexNormals::method_default);  // the defaults
+  EXPECT_FALSE(e.methods[3].quadric_constant);
+  EXPECT_EQ(e.methods[3].ball_factor, 0.0);
+  const auto expect_error = [&](const std::string& line, const std::string& needle) {
+    try {
+      parse_experiment_text(head + line, "bad.exp");
+      ADD_FAILURE() << "expected InputError for: " << line;
+    } catch (const InputError& err) {
+      EXPECT_NE(std::string(err.what()).find(needle), std::string::npos) << err.what();
+    }
+  };
+  expect_error("method lhf-2 vertex-normals=area\n",
+               "bad.exp:4: vertex-normals applies to the discrete operators only");
+  expect_error("method meyer vertex-normals=cot\n", "bad.exp:4: vertex normals 'cot' unknown");
+  expect_error("method meyer quadric-constant=yes\n",
+               "bad.exp:4: quadric-constant applies to method 'quadric' only");
+  expect_error("method quadric quadric-constant=maybe\n", "bad.exp:4: expected yes or no");
+  expect_error("method taubin ball-factor=1\n",
+               "bad.exp:4: ball-factor applies to method 'normal-cycle' only");
+  expect_error("method normal-cycle ball-factor=-1\n", "bad.exp:4: normal-cycle: ball factor -1");
+}
+
+// The runner hands the options of single methods to the estimator: each variant's errors differ
+// from its method's default on the same mesh.
+TEST(Experiment, SingleMethodOptionsReachTheRunner) {
+  const Experiment e = parse_experiment_text(
+      "name opts\nmesh torus-structured levels=1\npanel p c H L2\n"
+      "method normal-cycle\nmethod normal-cycle ball-factor=2 label=NC-ball\n"
+      "method quadric\nmethod quadric quadric-constant=yes label=Q6\n"
+      "method meyer\nmethod meyer vertex-normals=angle label=Meyer-angle\n",
+      "opts.exp");
+  RunOptions o;
+  o.threads = 1;
+  const RunSummary run = run_experiments({e}, o);
+  ASSERT_EQ(run.rows.size(), 6u);
+  for (size_t i = 0; i < 6; i += 2) {
+    EXPECT_NE(run.rows[i].method, run.rows[i + 1].method);
+    EXPECT_NE(run.rows[i].error, run.rows[i + 1].error) << run.rows[i + 1].method;
+  }
 }
 
 // Every shipped experiment parses, names valid families, levels and methods, and has a unique

@@ -117,7 +117,7 @@ inline std::string compare(const io_detail::Soup& ours, const CgalSoup& cgal) {
         return "vertex " + std::to_string(v) + " coordinate " + std::to_string(c);
   for (std::size_t f = 0; f < cgal.polygons.size(); ++f) {
     const Polygon& p = cgal.polygons[f];
-    const std::size_t begin = ours.starts[f], size = ours.starts[f + 1] - begin;
+    const std::size_t begin = ours.polygon_begin(f), size = ours.polygon_size(f);
     bool equal = p.size() == size;
     for (std::size_t i = 0; equal && i < size; ++i)
       equal = p[i] == static_cast<std::size_t>(ours.indices[begin + i]);

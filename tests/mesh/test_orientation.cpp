@@ -1,6 +1,7 @@
 // Consistent orientation before estimating (mesh/orientation.h, issue 16).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -184,6 +185,82 @@ TEST(Orientation, NonManifoldEdgeVerticesAreUndetermined) {
   EXPECT_EQ(r.patches, 3);
   EXPECT_TRUE(r.sign_undetermined[0] && r.sign_undetermined[1]);
   EXPECT_FALSE(r.sign_undetermined[2] || r.sign_undetermined[3] || r.sign_undetermined[4]);
+}
+
+// Mesh::reorient_faces updates the adjacency in place: the same mesh as one built from the
+// reoriented faces, edge by edge.
+void expect_same_mesh(const Mesh& a, const Mesh& b) {
+  ASSERT_EQ(a.faces(), b.faces());
+  EXPECT_EQ(a.vertices(), b.vertices());
+  EXPECT_EQ(a.num_edges(), b.num_edges());
+  EXPECT_EQ(a.num_boundary_edges(), b.num_boundary_edges());
+  EXPECT_EQ(a.num_nonmanifold_edges(), b.num_nonmanifold_edges());
+  EXPECT_EQ(a.num_inconsistent_edges(), b.num_inconsistent_edges());
+  EXPECT_EQ(a.mean_edge_length(), b.mean_edge_length());
+  for (int f = 0; f < a.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(a.face_neighbor(f, k), b.face_neighbor(f, k)) << f << " " << k;
+      EXPECT_EQ(a.is_boundary_edge(f, k), b.is_boundary_edge(f, k));
+      EXPECT_EQ(a.is_nonmanifold_edge(f, k), b.is_nonmanifold_edge(f, k));
+    }
+  for (int v = 0; v < a.num_vertices(); ++v) {
+    const auto x = a.vertex_faces(v), y = b.vertex_faces(v);
+    EXPECT_TRUE(std::equal(x.begin(), x.end(), y.begin(), y.end()));
+  }
+}
+
+TEST(Orientation, InPlaceReorientationEqualsARebuiltMesh) {
+  const Mesh t = torus(24, 12);
+  int flipped = 0;
+  // Flipped faces, rotated rows, and a cut (an open patch) so that boundary edges move too.
+  FaceMatrix G = flip_some(t.faces(), 0.3, 11, flipped);
+  for (int f = 0; f < G.rows(); f += 5) {
+    const int a = G(f, 0), b = G(f, 1), c = G(f, 2);
+    G.row(f) << b, c, a;
+  }
+  const FaceMatrix open = G.topRows(G.rows() - 40);
+  for (const FaceMatrix& faces : {G, open}) {
+    const OrientationResult r = orient_mesh(Mesh(t.vertices(), faces));
+    expect_same_mesh(r.mesh, Mesh(r.mesh.vertices(), r.mesh.faces()));
+    EXPECT_TRUE(r.mesh.is_consistently_oriented());
+    const OrientationResult copy = orient_mesh(static_cast<const Mesh&>(Mesh(t.vertices(), faces)));
+    expect_same_mesh(copy.mesh, r.mesh);
+    EXPECT_EQ(copy.faces_flipped, r.faces_flipped);
+    EXPECT_EQ(copy.sign_undetermined, r.sign_undetermined);
+  }
+  // A whole band of faces reversed (a closed loop of inconsistent edges either side of it).
+  FaceMatrix seam = t.faces();
+  for (int f = 0; f < 2 * 24; ++f) std::swap(seam(f, 1), seam(f, 2));
+  Mesh twisted(t.vertices(), seam);
+  const OrientationResult s = orient_mesh(std::move(twisted));
+  expect_same_mesh(s.mesh, Mesh(s.mesh.vertices(), s.mesh.faces()));
+}
+
+// The usual input, already consistently oriented outward with every row starting at its smallest
+// index: moved in, nothing copied (the same arrays), nothing changed, the same result as the copy.
+TEST(Orientation, AlreadyOrientedMeshIsNotCopied) {
+  const Mesh t = torus(24, 12);
+  FaceMatrix rows = t.faces();
+  for (int f = 0; f < rows.rows(); ++f) {  // smallest index first, same orientation
+    int k = 0;
+    for (int j = 1; j < 3; ++j)
+      if (rows(f, j) < rows(f, k)) k = j;
+    const int a = rows(f, k), b = rows(f, (k + 1) % 3), c = rows(f, (k + 2) % 3);
+    rows.row(f) << a, b, c;
+  }
+  Mesh m(t.vertices(), rows);
+  const double* vertices = m.vertices().data();
+  const int* faces = m.faces().data();
+  const OrientationResult copy = orient_mesh(static_cast<const Mesh&>(m));
+  const OrientationResult r = orient_mesh(std::move(m));
+  EXPECT_EQ(r.mesh.vertices().data(), vertices);
+  EXPECT_EQ(r.mesh.faces().data(), faces);
+  EXPECT_EQ(r.mesh.faces(), rows);
+  EXPECT_EQ(r.faces_flipped, 0);
+  EXPECT_EQ(r.vertices_undetermined, 0);
+  EXPECT_TRUE(orientation_warnings(r).empty());
+  expect_same_mesh(r.mesh, copy.mesh);
+  EXPECT_EQ(r.sign_undetermined, copy.sign_undetermined);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <map>
 #include <utility>
@@ -13,8 +14,19 @@
 #include "core/types.h"
 #include "mesh/mesh.h"
 #include "meshgen/random.h"
+#include "methods/estimator.h"
 
 namespace curvbench::testing {
+
+/// Every field of the two estimates has the same bits (NaN included).
+inline bool bitwise_equal(const VertexEstimate& a, const VertexEstimate& b) {
+  auto eq = [](double x, double y) { return std::memcmp(&x, &y, sizeof(double)) == 0; };
+  for (int i = 0; i < 3; ++i)
+    if (!eq(a.normal(i), b.normal(i)) || !eq(a.d1(i), b.d1(i)) || !eq(a.d2(i), b.d2(i)))
+      return false;
+  return eq(a.k1, b.k1) && eq(a.k2, b.k2) && eq(a.H, b.H) && eq(a.K, b.K) && a.degree == b.degree &&
+         a.points == b.points && eq(a.ring, b.ring) && a.status == b.status;
+}
 
 /// (N+1) x (N+1) grid of the square [0, N h]^2, vertex (i, j) at index j (N+1) + i.
 ///   four_eight = false: every square split along (i,j)-(i+1,j+1): interior valence 6.

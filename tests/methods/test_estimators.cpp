@@ -23,6 +23,7 @@
 namespace curvbench {
 namespace {
 
+using testing::bitwise_equal;
 using testing::direction_error;
 using testing::grid_mesh;
 using testing::icosphere;
@@ -216,7 +217,8 @@ TEST(Sphere, EveryMethodGivesMinusHalfAndConverges) {
   }
 }
 
-// ---- LOP-d = LHF-d (docs/algorithms.md §3 [D]) ---------------------------------------------------
+// ---- LOP-d = LHF-d (docs/algorithms.md §3 [D])
+// ---------------------------------------------------
 
 void expect_same_results(const Mesh& mesh, int degree, const std::string& what) {
   EstimatorOptions o;
@@ -477,15 +479,6 @@ TEST(Xu, OnlyDegreeTwoAndRingOne) {
 }
 
 // ---- determinism ------------------------------------------------------------------------------
-
-bool bitwise_equal(const VertexEstimate& a, const VertexEstimate& b) {
-  auto eq = [](double x, double y) { return std::memcmp(&x, &y, sizeof(double)) == 0; };
-  for (int i = 0; i < 3; ++i)
-    if (!eq(a.normal(i), b.normal(i)) || !eq(a.d1(i), b.d1(i)) || !eq(a.d2(i), b.d2(i)))
-      return false;
-  return eq(a.k1, b.k1) && eq(a.k2, b.k2) && eq(a.H, b.H) && eq(a.K, b.K) && a.degree == b.degree &&
-         a.points == b.points && eq(a.ring, b.ring) && a.status == b.status;
-}
 
 TEST(EstimateMesh, BitIdenticalForOneAndTwoThreads) {
   const Mesh sphere = icosphere(4, 2.0);

@@ -65,6 +65,54 @@ TEST(Goldfeather, ConeApexMatchesTheFormula) {
   EXPECT_NEAR((q.normal - Vec3::UnitZ()).norm(), 0.0, 1e-12);
 }
 
+// A fan whose neighbours all sit on folds: each neighbour j of fan(n, ...) gets a tiny flap
+// triangle (j, w + eps t, w + eps r) (r radial, t tangential at w) facing -z, whose Max weight
+// ~ 1/eps^2 dominates its normal, so every neighbour normal faces away from the centre's (+z by
+// the symmetry x -> -x, y -> -y) and only the n position rows remain.
+Mesh folded_fan(int n, double rho, double a, double b) {
+  const Mesh fan_mesh =
+      fan(n, rho, Vec3::Zero(), [a, b](double x, double y) { return a * x * x + b * y * y; });
+  const double eps = 0.01 * rho;
+  VertexMatrix V(1 + 3 * n, 3);
+  V.topRows(1 + n) = fan_mesh.vertices();
+  FaceMatrix F(2 * n, 3);
+  F.topRows(n) = fan_mesh.faces();
+  for (int j = 0; j < n; ++j) {
+    const Vec3 w = fan_mesh.position(1 + j);
+    const Vec3 r = Vec3(w.x(), w.y(), 0.0).normalized(), t = Vec3::UnitZ().cross(r);
+    V.row(1 + n + 2 * j) = (w + eps * t).transpose();
+    V.row(2 + n + 2 * j) = (w + eps * r).transpose();
+    F.row(n + j) << 1 + j, 1 + n + 2 * j, 2 + n + 2 * j;  // (eps t) x (eps r) = -eps^2 z
+  }
+  return Mesh(V, F, "folded fan");
+}
+
+// Six neighbours, all normals facing away: 6 position rows for the cubic's 7 unknowns (rank
+// deficient), so the quadratic fallback fits z = A/2 x^2 + B x y + C/2 y^2 to the 6 points of
+// z = a x^2 + b y^2 exactly: A = 2a, B = 0, C = 2b, status degree_reduced.
+TEST(Goldfeather, FoldFallsBackToTheQuadratic) {
+  const double a = 0.5, b = -0.25;
+  const Mesh m = folded_fan(6, 0.1, a, b);
+  const VertexEstimate q = estimate_mesh(m, *make_estimator("goldfeather", {}))[0];
+  ASSERT_EQ(q.status, VertexStatus::degree_reduced);
+  EXPECT_NEAR((q.normal - Vec3::UnitZ()).norm(), 0.0, 1e-12);
+  EXPECT_NEAR(q.k1, 2.0 * a, 1e-9);
+  EXPECT_NEAR(q.k2, 2.0 * b, 1e-9);
+  EXPECT_NEAR(q.H, a + b, 1e-9);
+  EXPECT_NEAR(q.K, 4.0 * a * b, 1e-9);
+  EXPECT_NEAR(std::abs(q.d1.x()), 1.0, 1e-9);
+  EXPECT_NEAR(std::abs(q.d2.y()), 1.0, 1e-9);
+}
+
+// Four neighbours on the axes, all normals facing away: every position row has x y = 0, so
+// even the quadratic cannot determine B: failed, values NaN.
+TEST(Goldfeather, FoldWithoutQuadraticRankFails) {
+  const Mesh m = folded_fan(4, 0.1, 0.5, -0.25);
+  const VertexEstimate q = estimate_mesh(m, *make_estimator("goldfeather", {}))[0];
+  EXPECT_EQ(q.status, VertexStatus::failed);
+  EXPECT_TRUE(std::isnan(q.H));
+}
+
 TEST(Goldfeather, Conventions) {
   const auto est = make_estimator("goldfeather", {});
   expect_bent_fan_directions(*est);

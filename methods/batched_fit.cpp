@@ -1,0 +1,251 @@
+// Batched fits, one vertex per SIMD lane; see batched_fit.h. Compiled once per Highway target
+// (foreach_target.h re-includes this file); batched_fit() dispatches to the best one at run time.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "methods/batched_fit.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+// Highway must come after foreach_target.h.
+#include <hwy/highway.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "methods/batched_fit.h"
+#include "methods/polynomial_fit.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace curvbench {
+namespace HWY_NAMESPACE {
+namespace {
+
+namespace hn = hwy::HWY_NAMESPACE;
+using D = hn::CappedTag<double, kBatchLanes>;
+using V = hn::Vec<D>;
+constexpr int L = kBatchLanes;  // row stride of the structure-of-arrays buffers
+
+// Householder update of C columns by the reflector v in x[j..m) (lane-wise):
+// col -= (beta v . col) v. The dot products run side by side, each in two halves (even and odd
+// rows), so 2 C independent chains hide the latency of the fused multiply-adds.
+template <int C>
+HWY_INLINE void reflect_columns(D d, const double* x, double* const* cols, int j, int m, V beta) {
+  V even[C], odd[C];
+  for (int q = 0; q < C; ++q) even[q] = odd[q] = hn::Zero(d);
+  int i = j;
+  for (; i + 1 < m; i += 2) {
+    const V x0 = hn::LoadU(d, x + i * L), x1 = hn::LoadU(d, x + (i + 1) * L);
+    for (int q = 0; q < C; ++q) {
+      even[q] = hn::MulAdd(x0, hn::LoadU(d, cols[q] + i * L), even[q]);
+      odd[q] = hn::MulAdd(x1, hn::LoadU(d, cols[q] + (i + 1) * L), odd[q]);
+    }
+  }
+  if (i < m) {
+    const V x0 = hn::LoadU(d, x + i * L);
+    for (int q = 0; q < C; ++q) even[q] = hn::MulAdd(x0, hn::LoadU(d, cols[q] + i * L), even[q]);
+  }
+  for (int q = 0; q < C; ++q) even[q] = hn::Mul(beta, hn::Add(even[q], odd[q]));
+  for (i = j; i < m; ++i) {
+    const V xi = hn::LoadU(d, x + i * L);
+    for (int q = 0; q < C; ++q) {
+      double* const p = cols[q] + i * L;
+      hn::StoreU(hn::NegMulAdd(even[q], xi, hn::LoadU(d, p)), d, p);
+    }
+  }
+}
+
+// x^(-q/4) as inverse_power() in weights.h (same correctly rounded operations).
+HWY_INLINE V inverse_power_q(V x, int q) {
+  const D d;
+  const V one = hn::Set(d, 1.0);
+  switch (q) {
+    case 1:
+      return hn::Div(one, hn::Sqrt(hn::Sqrt(x)));
+    case 2:
+      return hn::Div(one, hn::Sqrt(x));
+    case 3: {
+      const V s = hn::Sqrt(x);
+      return hn::Div(one, hn::Mul(s, hn::Sqrt(s)));
+    }
+    default:
+      return hn::Div(one, x);
+  }
+}
+
+void BatchedFitKernel(BatchedSystems& s) {
+  const D d;
+  const int N = static_cast<int>(hn::Lanes(d));
+  const bool ic = s.include_constant;
+  const int deg = s.degree;
+  const int n = num_columns(deg, ic);
+  const int k = s.rhs;
+  const int m = std::min(s.max_rows, kMaxRows);
+  const int q = static_cast<int>(std::lround(4.0 * s.power));
+  double* const work = s.work.data();
+  // Column c of [A B] for the lanes from o: m rows, stride L (compact, so the columns of a small
+  // system share cache lines instead of aliasing at a fixed large stride).
+  const auto column = [&](int c, int o) { return work + c * m * L + o; };
+  alignas(64) double rows_d[L], solved[L];
+  for (int l = 0; l < L; ++l) rows_d[l] = std::max(s.rows[static_cast<size_t>(l)], 1);
+  const V zero = hn::Zero(d);
+  const V one = hn::Set(d, 1.0);
+  const V tol = hn::Set(d, s.tol);
+  const V inf = hn::Set(d, std::numeric_limits<double>::infinity());
+
+  for (int o = 0; o < L; o += N) {
+    const double* const u = s.u.data() + o;
+    const double* const v = s.v.data() + o;
+    double* const w = s.gamma.data() + o;  // gamma, overwritten with the weights
+
+    // Eq. (15) weights, as compute_weights(): the padding rows add 0 to the sum.
+    V sum = zero;
+    for (int i = 0; i < m; ++i) {
+      const V uu = hn::LoadU(d, u + i * L), vv = hn::LoadU(d, v + i * L);
+      sum = hn::Add(sum, hn::Add(hn::Mul(uu, uu), hn::Mul(vv, vv)));
+    }
+    const V mean = hn::Div(sum, hn::LoadU(d, rows_d + o));
+    const V eps = hn::Mul(hn::Set(d, 0.01), mean);
+    const auto positive = hn::Gt(mean, zero);
+    for (int i = 0; i < m; ++i) {
+      const V uu = hn::LoadU(d, u + i * L), vv = hn::LoadU(d, v + i * L);
+      const V g = hn::LoadU(d, w + i * L);
+      const V x = hn::Add(hn::Add(hn::Mul(uu, uu), hn::Mul(vv, vv)), eps);
+      hn::StoreU(hn::IfThenElse(positive, hn::Mul(g, inverse_power_q(x, q)), g), d, w + i * L);
+    }
+
+    // Eq. (13): Omega V in the column order of vandermonde.h, then Omega f.
+    int first = 0;
+    if (ic) {
+      for (int i = 0; i < m; ++i) hn::StoreU(hn::LoadU(d, w + i * L), d, column(0, o) + i * L);
+      first = 1;
+    }
+    for (int i = 0; i < m; ++i) {
+      const V wi = hn::LoadU(d, w + i * L);
+      hn::StoreU(hn::Mul(wi, hn::LoadU(d, u + i * L)), d, column(first, o) + i * L);
+      hn::StoreU(hn::Mul(wi, hn::LoadU(d, v + i * L)), d, column(first + 1, o) + i * L);
+    }
+    for (int p = 2; p <= deg; ++p) {
+      const int block = num_columns(p - 1, ic), prev = num_columns(p - 2, ic);
+      for (int i = 0; i < m; ++i) {
+        const V uu = hn::LoadU(d, u + i * L), vv = hn::LoadU(d, v + i * L);
+        for (int c = 0; c < p; ++c)
+          hn::StoreU(hn::Mul(hn::LoadU(d, column(prev + c, o) + i * L), uu), d,
+                     column(block + c, o) + i * L);
+        hn::StoreU(hn::Mul(hn::LoadU(d, column(prev + p - 1, o) + i * L), vv), d,
+                   column(block + p, o) + i * L);
+      }
+    }
+    for (int c = 0; c < k; ++c) {
+      const double* const fc = s.f.data() + c * kMaxRows * L + o;
+      for (int i = 0; i < m; ++i)
+        hn::StoreU(hn::Mul(hn::LoadU(d, fc + i * L), hn::LoadU(d, w + i * L)), d,
+                   column(n + c, o) + i * L);
+    }
+
+    // Eq. (14): 2-norm column scaling (a zero or non-finite norm scales by 1).
+    V inv_s[kBatchCols];
+    for (int c = 0; c < n; ++c) {
+      double* const a = column(c, o);
+      V ss = zero;
+      for (int i = 0; i < m; ++i) {
+        const V ai = hn::LoadU(d, a + i * L);
+        ss = hn::MulAdd(ai, ai, ss);
+      }
+      const V norm = hn::Sqrt(ss);
+      const V scale = hn::IfThenElse(hn::And(hn::Gt(norm, zero), hn::Lt(norm, inf)), norm, one);
+      inv_s[c] = hn::Div(one, scale);
+      for (int i = 0; i < m; ++i)
+        hn::StoreU(hn::Mul(hn::LoadU(d, a + i * L), inv_s[c]), d, a + i * L);
+    }
+
+    // Householder QR of [A B], left to right; a lane is solved if every |R_jj| >= tol.
+    auto ok = hn::FirstN(d, static_cast<size_t>(N));
+    V rdiag[kBatchCols];
+    for (int j = 0; j < n; ++j) {
+      double* const x = column(j, o);
+      V sigma = zero;
+      for (int i = j; i < m; ++i) {
+        const V xi = hn::LoadU(d, x + i * L);
+        sigma = hn::MulAdd(xi, xi, sigma);
+      }
+      const V norm = hn::Sqrt(sigma);
+      ok = hn::And(ok, hn::And(hn::Ge(norm, tol), hn::Gt(norm, zero)));
+      const V xj = hn::LoadU(d, x + j * L);
+      const V alpha = hn::IfThenElse(hn::Gt(xj, zero), hn::Neg(norm), norm);  // R_jj
+      const V v0 = hn::Sub(xj, alpha);
+      hn::StoreU(v0, d, x + j * L);
+      const V vnorm2 = hn::Mul(hn::Add(norm, norm), hn::Abs(v0));  // |v|^2
+      const V beta =
+          hn::IfThenElseZero(hn::And(ok, hn::Gt(vnorm2, zero)), hn::Div(hn::Set(d, 2.0), vnorm2));
+      rdiag[j] = hn::IfThenElse(ok, alpha, one);
+      double* cols[kBatchCols + kMaxRhs];
+      const int rest = n + k - j - 1;
+      for (int c = 0; c < rest; ++c) cols[c] = column(j + 1 + c, o);
+      int c = 0;
+      for (; c + 4 <= rest; c += 4) reflect_columns<4>(d, x, cols + c, j, m, beta);
+      switch (rest - c) {
+        case 3:
+          reflect_columns<3>(d, x, cols + c, j, m, beta);
+          break;
+        case 2:
+          reflect_columns<2>(d, x, cols + c, j, m, beta);
+          break;
+        case 1:
+          reflect_columns<1>(d, x, cols + c, j, m, beta);
+          break;
+        default:
+          break;
+      }
+    }
+    hn::StoreU(hn::IfThenElseZero(ok, one), d, solved + o);
+
+    // Back substitution R y = (Q^T B)(0:n), monomial coefficients c_j = y_j / s_j, then the
+    // Taylor derivatives c_jk = j! k! coefficient (polynomial_fit.h).
+    V inv_r[kBatchCols];
+    for (int i = 0; i < n; ++i) inv_r[i] = hn::Div(one, rdiag[i]);
+    static constexpr int kPowers[5][2] = {{1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}};
+    for (int c = 0; c < k; ++c) {
+      V y[kBatchCols], coef[kBatchCols];
+      const double* const b = column(n + c, o);
+      for (int i = 0; i < n; ++i) y[i] = hn::LoadU(d, b + i * L);
+      for (int i = n - 1; i >= 0; --i) {
+        const V xi = hn::Mul(y[i], inv_r[i]);
+        const double* const r = column(i, o);  // R(0:i, i)
+        for (int jj = 0; jj < i; ++jj) y[jj] = hn::NegMulAdd(hn::LoadU(d, r + jj * L), xi, y[jj]);
+        coef[i] = hn::Mul(xi, inv_s[i]);
+      }
+      double* const t = s.taylor.data() + o;
+      hn::StoreU(ic ? coef[0] : zero, d, t + (kF * kMaxRhs + c) * L);
+      for (int e = 0; e < 5; ++e) {
+        const int pj = kPowers[e][0], pk = kPowers[e][1];
+        const V value = pj + pk > deg ? zero
+                                      : hn::Mul(hn::Set(d, taylor_factor(pj, pk)),
+                                                coef[monomial_index(pj, pk, ic)]);
+        hn::StoreU(value, d, t + ((1 + e) * kMaxRhs + c) * L);
+      }
+    }
+  }
+  for (int l = 0; l < L; ++l)
+    s.solved[static_cast<size_t>(l)] = solved[l] != 0.0 && s.rows[static_cast<size_t>(l)] > 0;
+}
+
+}  // namespace
+// NOLINTNEXTLINE(google-readability-namespace-comments)
+}  // namespace HWY_NAMESPACE
+}  // namespace curvbench
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace curvbench {
+
+HWY_EXPORT(BatchedFitKernel);
+
+bool batched_weight_power_supported(double power) {
+  const double q = 4.0 * power;
+  return q == 1.0 || q == 2.0 || q == 3.0 || q == 4.0;
+}
+
+void batched_fit(BatchedSystems& s) {
+  HWY_DYNAMIC_DISPATCH(BatchedFitKernel)(s);
+}
+
+}  // namespace curvbench
+#endif  // HWY_ONCE

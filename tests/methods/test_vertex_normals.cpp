@@ -1,0 +1,56 @@
+// Vertex normal weightings (methods/vertex_normals.h) by name, and the options of single methods
+// (EstimatorOptions: vertex_normals, quadric_constant, ball_factor) checked by make_estimator.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/errors.h"
+#include "methods/estimator.h"
+#include "methods/vertex_normals.h"
+
+namespace curvbench {
+namespace {
+
+TEST(VertexNormals, NamesRoundTrip) {
+  for (VertexNormals w : {VertexNormals::method_default, VertexNormals::area, VertexNormals::angle,
+                          VertexNormals::max})
+    EXPECT_EQ(parse_vertex_normals(to_string(w)), w);
+  EXPECT_EQ(parse_vertex_normals("max"), VertexNormals::max);
+  try {
+    parse_vertex_normals("Area ");
+    ADD_FAILURE() << "expected UsageError";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("valid: default, area, angle, max"), std::string::npos)
+        << e.what();
+  }
+}
+
+// An option of one method given to another is an error naming the option, not ignored.
+TEST(VertexNormals, SingleMethodOptionsOnOtherMethodsAreErrors) {
+  const auto expect_error = [](const std::string& method, const EstimatorOptions& o,
+                               const std::string& needle) {
+    try {
+      make_estimator(method, o);
+      ADD_FAILURE() << "expected UsageError for " << method;
+    } catch (const UsageError& e) {
+      EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+    }
+  };
+  EstimatorOptions normals;
+  normals.vertex_normals = VertexNormals::angle;
+  expect_error("lhf-2", normals, "vertex-normals applies to the discrete operators only");
+  for (const char* op :
+       {"meyer", "taubin", "rusinkiewicz", "quadric", "goldfeather", "normal-cycle"})
+    EXPECT_EQ(make_estimator(op, normals)->options().vertex_normals, VertexNormals::angle) << op;
+  EstimatorOptions constant;
+  constant.quadric_constant = true;
+  expect_error("meyer", constant, "quadric-constant applies to method 'quadric' only");
+  EXPECT_TRUE(make_estimator("quadric", constant)->options().quadric_constant);
+  EstimatorOptions ball;
+  ball.ball_factor = 2.0;
+  expect_error("jet-3", ball, "ball-factor applies to method 'normal-cycle' only");
+  EXPECT_EQ(make_estimator("normal-cycle", ball)->options().ball_factor, 2.0);
+}
+
+}  // namespace
+}  // namespace curvbench
