@@ -65,11 +65,11 @@ TEST(Goldfeather, ConeApexMatchesTheFormula) {
   EXPECT_NEAR((q.normal - Vec3::UnitZ()).norm(), 0.0, 1e-12);
 }
 
-// A fan whose neighbours all sit on folds: each neighbour j of fan(n, ...) gets a tiny flap
-// triangle (j, w + eps t, w + eps r) (r radial, t tangential at w) facing -z, whose Max weight
-// ~ 1/eps^2 dominates its normal, so every neighbour normal faces away from the centre's (+z by
-// the symmetry x -> -x, y -> -y) and only the n position rows remain.
-Mesh folded_fan(int n, double rho, double a, double b) {
+// A fan with a tiny flap triangle (j, w + eps t, w + eps e(r)) at each neighbour j (r radial, t
+// tangential at w, e a direction given by the test); its Max weight ~ 1/eps^2 dominates the
+// neighbour's normal, which is then t x e(r) normalised.
+template <class Edge>
+Mesh flapped_fan(int n, double rho, double a, double b, Edge edge) {
   const Mesh fan_mesh =
       fan(n, rho, Vec3::Zero(), [a, b](double x, double y) { return a * x * x + b * y * y; });
   const double eps = 0.01 * rho;
@@ -81,10 +81,16 @@ Mesh folded_fan(int n, double rho, double a, double b) {
     const Vec3 w = fan_mesh.position(1 + j);
     const Vec3 r = Vec3(w.x(), w.y(), 0.0).normalized(), t = Vec3::UnitZ().cross(r);
     V.row(1 + n + 2 * j) = (w + eps * t).transpose();
-    V.row(2 + n + 2 * j) = (w + eps * r).transpose();
-    F.row(n + j) << 1 + j, 1 + n + 2 * j, 2 + n + 2 * j;  // (eps t) x (eps r) = -eps^2 z
+    V.row(2 + n + 2 * j) = (w + eps * edge(r)).transpose();
+    F.row(n + j) << 1 + j, 1 + n + 2 * j, 2 + n + 2 * j;
   }
-  return Mesh(V, F, "folded fan");
+  return Mesh(V, F, "flapped fan");
+}
+
+// Every neighbour on a fold: e(r) = r, so its normal is t x r = -z, facing away from the
+// centre's (+z by the symmetry x -> -x, y -> -y); only the n position rows remain.
+Mesh folded_fan(int n, double rho, double a, double b) {
+  return flapped_fan(n, rho, a, b, [](const Vec3& r) { return r; });
 }
 
 // Six neighbours, all normals facing away: 6 position rows for the cubic's 7 unknowns (rank
@@ -131,4 +137,19 @@ TEST(Goldfeather, BoundaryVerticesComputed) {
 }
 
 }  // namespace
+// Every neighbour on a crease of (almost exactly) 90 degrees: e(r) = z - 1e-9 r gives the normal
+// t x e = r + 1e-9 z, so c_j = 1e-9 > 0 and the slope -a_j/c_j ~ 1e9. Such normals carry no
+// information about a smooth surface and must not enter the fit (kMinNormalCosine): the result
+// is the quadratic through the 6 positions, exact for z = a x^2 + b y^2 (as on the fold), where
+// the slope rows would have driven H to about 1e9.
+TEST(Goldfeather, NormalsAcrossACreaseAreNotUsed) {
+  const double a = 0.5, b = -0.25;
+  const Mesh m = flapped_fan(6, 0.1, a, b, [](const Vec3& r) { return Vec3::UnitZ() - 1e-9 * r; });
+  const VertexEstimate q = estimate_mesh(m, *make_estimator("goldfeather", {}))[0];
+  ASSERT_EQ(q.status, VertexStatus::degree_reduced);
+  EXPECT_NEAR(q.k1, 2.0 * a, 1e-9);
+  EXPECT_NEAR(q.k2, 2.0 * b, 1e-9);
+  EXPECT_NEAR(q.H, a + b, 1e-9);
+}
+
 }  // namespace curvbench
