@@ -177,19 +177,20 @@ double Mesh::signed_volume() const {
   return vol / 6.0;
 }
 
+Vec3 Mesh::area_weighted_normal(int v) const {
+  Vec3 sum = Vec3::Zero();
+  for (int f : vertex_faces(v)) {
+    const Vec3 a = position(F_(f, 0)), b = position(F_(f, 1)), c = position(F_(f, 2));
+    sum += (b - a).cross(c - a);
+  }
+  const double len = sum.norm();
+  return len > 0.0 ? Vec3(sum / len) : sum;
+}
+
 VertexMatrix Mesh::area_weighted_normals() const {
   VertexMatrix N(num_vertices(), 3);
   advise_huge_pages(N.data(), sizeof(double) * static_cast<size_t>(N.size()));
-  N.setZero();
-  for (int f = 0; f < num_faces(); ++f) {
-    const Vec3 a = position(F_(f, 0)), b = position(F_(f, 1)), c = position(F_(f, 2));
-    const Vec3 cr = (b - a).cross(c - a);
-    for (int k = 0; k < 3; ++k) N.row(F_(f, k)) += cr.transpose();
-  }
-  for (int v = 0; v < num_vertices(); ++v) {
-    const double len = N.row(v).norm();
-    if (len > 0.0) N.row(v) /= len;
-  }
+  for (int v = 0; v < num_vertices(); ++v) N.row(v) = area_weighted_normal(v).transpose();
   return N;
 }
 

@@ -78,6 +78,9 @@ class Mesh {
   /// cross products (x2-x1)x(x3-x1). n x 3. A vertex without faces or with zero total area gets
   /// the zero vector.
   VertexMatrix area_weighted_normals() const;
+  /// Row v of area_weighted_normals(): the cross products of v's faces summed in increasing face
+  /// order (the order of the whole-mesh loop, so the bits agree), normalised.
+  Vec3 area_weighted_normal(int v) const;
 
  private:
   static constexpr int kBoundary = -1;     // ff_ entry of a boundary edge
