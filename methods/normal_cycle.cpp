@@ -39,6 +39,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/huge_pages.h"
 #include "core/shape_operator.h"
 #include "core/text.h"
 #include "methods/face_geometry.h"
@@ -123,6 +124,7 @@ class NormalCycleEstimator final : public OperatorEstimator {
     auto data = std::make_unique<NormalCycleData>();
     fill_mesh_data(mesh, threads, *data);
     const int m = mesh.num_faces();
+    reserve_huge(data->beta, 3 * static_cast<size_t>(m));
     data->beta.resize(3 * static_cast<size_t>(m));
     double* beta = data->beta.data();
     // Each interior edge once, from its face of smaller index f, written to both faces' slots:

@@ -11,6 +11,7 @@
 #include "core/shape_operator.h"
 #include "core/text.h"
 #include "mesh/rings.h"
+#include "methods/batched_curvature.h"
 #include "methods/batched_fit.h"
 #include "methods/vertex_result.h"
 #include "methods/weights.h"
@@ -161,6 +162,15 @@ bool fit_current_ring(const RingFitEstimator& est, bool hook_ok, const MeshConte
   return true;
 }
 
+// The quantities c of a fit of degree >= 1 with `rows` rows, and the status.
+void set_fit_curvature(const Curvature& c, int degree, int rows, int requested, double ring,
+                       bool partial, VertexEstimate& out) {
+  if (!set_quantities(c, degree, requested, rows, ring, out))
+    set_failed(ring, rows, out);
+  else if (partial && out.status == VertexStatus::ok)
+    out.status = VertexStatus::disk_cut;
+}
+
 // The quantities of a fit of degree >= 1 (core/shape_operator.h) and the status.
 void set_fit_quantities(FitRoute route, const LocalFrame& frame, const FitResult& fit,
                         int requested, double ring, bool partial, VertexEstimate& out) {
@@ -172,10 +182,7 @@ void set_fit_quantities(FitRoute route, const LocalFrame& frame, const FitResult
           : curvature_from_parametric(t.row(kFu).transpose(), t.row(kFv).transpose(),
                                       t.row(kFuu).transpose(), t.row(kFuv).transpose(),
                                       t.row(kFvv).transpose());
-  if (!set_quantities(c, fit.degree, requested, fit.rows, ring, out))
-    set_failed(ring, fit.rows, out);
-  else if (partial && out.status == VertexStatus::ok)
-    out.status = VertexStatus::disk_cut;
+  set_fit_curvature(c, fit.degree, fit.rows, requested, ring, partial, out);
 }
 
 }  // namespace
@@ -249,15 +256,25 @@ void RingFitEstimator::estimate_batch(const MeshContext& ctx, int first, int cou
   constexpr int L = kBatchLanes;
   LocalFrame frames[L];
   double rings[L];
+  alignas(64) double normals[3 * L] = {};
+  BatchedFrames batch_frames;
+  BatchedCurvature batch_curvature;
   for (int b = 0; b < count; b += L) {
     const int lanes = std::min(L, count - b);
+    // The frames of the batch lane-wise (the same bits as make_local_frame, which takes the
+    // lanes the batched code leaves out).
+    for (int l = 0; l < lanes; ++l)
+      for (int c = 0; c < 3; ++c) normals[c * L + l] = ctx.approx_normals(first + b + l, c);
+    batched_local_frames(normals, batch_frames);
     // Gather: lane l holds vertex first + b + l, or nothing (rows 0) if it goes the scalar way.
     s.max_rows = 0;
     for (int l = 0; l < L; ++l) {
       int rows = 0;
       if (l < lanes) {
         const int v = first + b + l;
-        frames[l] = make_local_frame(ctx.approx_normals.row(v).transpose());
+        frames[l] = batch_frames.regular[static_cast<size_t>(l)]
+                        ? batch_frames.frame(l)
+                        : make_local_frame(ctx.approx_normals.row(v).transpose());
         collect_neighbourhood(ctx, ws.rings, v);
         rings[l] = ws.rings.ring();
         bool partial = false;
@@ -294,11 +311,21 @@ void RingFitEstimator::estimate_batch(const MeshContext& ctx, int first, int cou
         for (int c = 0; c < k; ++c) s.f[static_cast<size_t>((c * kMaxRows + r) * L + l)] = 0.0;
       }
     if (s.max_rows > 0) batched_fit(s);
+    // The height route's formulas lane-wise (the same bits as curvature_from_height, which takes
+    // the lanes the batched code leaves out).
+    const bool lane_formulas = k == 1 && s.max_rows > 0;
+    if (lane_formulas)
+      batched_curvature_from_height(batch_frames, s.taylor.data(), kMaxRhs * L, batch_curvature);
     for (int l = 0; l < lanes; ++l) {
       VertexEstimate& o = out[b + l];
       if (s.max_rows == 0 || !s.solved[static_cast<size_t>(l)]) {
         // The safeguard fired (degree reduction, adaptive growth) or the lane was not batched.
         estimate(ctx, first + b + l, base, o);
+        continue;
+      }
+      const auto i = static_cast<size_t>(l);
+      if (lane_formulas && batch_frames.regular[i] && batch_curvature.regular[i]) {
+        set_fit_curvature(batch_curvature.curvature(l), d, s.rows[i], d, rings[l], false, o);
         continue;
       }
       FitResult fit;

@@ -35,6 +35,7 @@
 #include <string>
 #include <vector>
 
+#include "core/huge_pages.h"
 #include "core/shape_operator.h"
 #include "methods/face_geometry.h"
 #include "methods/local_frame.h"
@@ -138,6 +139,7 @@ class RusinkiewiczEstimator final : public OperatorEstimator {
     fill_mesh_data(mesh, threads, *data);
     const VertexMatrix& normals = data->normals.rows() > 0 ? data->normals : approx_normals;
     const int n = mesh.num_vertices();
+    reserve_huge(data->sums, static_cast<size_t>(n));
     data->sums.resize(static_cast<size_t>(n));
     VertexSums* sums = data->sums.data();
     // One pass over the faces (as trimesh2 does): each face's tensor is computed once and added

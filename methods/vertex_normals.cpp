@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/errors.h"
+#include "core/huge_pages.h"
 #include "methods/face_geometry.h"
 
 namespace curvbench {
@@ -13,7 +14,9 @@ VertexMatrix weighted_vertex_normals(const Mesh& mesh, VertexNormals weighting, 
   if (weighting == VertexNormals::method_default)
     throw UsageError("weighted_vertex_normals: no weighting given");
   const int n = mesh.num_vertices();
-  VertexMatrix N = VertexMatrix::Zero(n, 3);
+  VertexMatrix N(n, 3);
+  advise_huge_pages(N.data(), sizeof(double) * static_cast<size_t>(N.size()));
+  N.setZero();
   // One pass over the faces, each adding its corners' weighted normals (in a fixed order for
   // any thread count: for_each_vertex_range, methods/face_geometry.h).
   for_each_vertex_range(n, threads, [&](int lo, int hi) {
