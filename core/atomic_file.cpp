@@ -52,16 +52,33 @@ AtomicFile::AtomicFile(const std::string& path, bool create_directories) : path_
 }
 
 AtomicFile::~AtomicFile() {
+  if (in_flight_done_.valid()) in_flight_done_.wait();  // its error no longer matters
   if (fd_ >= 0) ::close(fd_);
   if (!committed_) ::unlink(tmp_.c_str());
 }
 
+void AtomicFile::wait_in_flight() {
+  if (in_flight_done_.valid()) in_flight_done_.get();
+}
+
+std::string AtomicFile::append_in_background(std::string block, std::size_t size) {
+  wait_in_flight();
+  flush();  // what is pending goes first
+  std::string done = std::move(in_flight_);
+  in_flight_ = std::move(block);
+  in_flight_done_ =
+      std::async(std::launch::async, [this, size] { write_all(in_flight_.data(), size); });
+  return done;
+}
+
 std::string& AtomicFile::buffer() {
+  wait_in_flight();
   if (buffer_.size() > kFlushBytes) flush();
   return buffer_;
 }
 
 void AtomicFile::append(std::string_view bytes) {
+  wait_in_flight();
   if (buffer_.size() + bytes.size() <= kFlushBytes) {
     buffer_.append(bytes);
     return;
@@ -71,6 +88,7 @@ void AtomicFile::append(std::string_view bytes) {
 }
 
 void AtomicFile::commit() {
+  wait_in_flight();
   flush();
   const int fd = fd_;
   fd_ = -1;

@@ -3,6 +3,8 @@
 // once complete, so a reader, a failure or a killed run never sees a truncated file.
 #pragma once
 
+#include <cstddef>
+#include <future>
 #include <string>
 #include <string_view>
 
@@ -31,6 +33,12 @@ class AtomicFile {
   std::string& buffer();
   /// Appends a block (written straight through when it is large).
   void append(std::string_view bytes);
+  /// Appends the first `size` bytes of `block` from a background thread and returns at once,
+  /// so that the caller prepares the next block while the kernel copies this one (the write of
+  /// a large CSV is half its cost). One block is in flight at a time: every other call first
+  /// waits for it and reports its error. Returns the buffer of the previous block (empty the
+  /// first time) to be filled again, so two buffers take turns.
+  std::string append_in_background(std::string block, std::size_t size);
 
   const std::string& temporary() const { return tmp_; }
 
@@ -41,12 +49,16 @@ class AtomicFile {
   [[noreturn]] void fail_errno(const char* what) const;
   void write_all(const char* p, std::size_t n);
   void flush();
+  /// Waits for the block in flight, if any; rethrows its error.
+  void wait_in_flight();
 
   std::string path_;
   std::string tmp_;
   std::string buffer_;
   int fd_ = -1;
   bool committed_ = false;
+  std::string in_flight_;  // the block being written in the background
+  std::future<void> in_flight_done_;
 };
 
 /// Writes `content` to `path` atomically (AtomicFile), creating the folder if needed.

@@ -130,13 +130,13 @@ EstimateCsvWriter::EstimateCsvWriter(const std::string& path, std::span<const in
   file_.append(estimate_csv_header() + "\n");
 }
 
+// The rows of this block are formatted while the previous block is still being written (the
+// file's background write); the buffer that block used comes back for the next one.
 void EstimateCsvWriter::write(int first, std::span<const VertexEstimate> estimates) {
-  if (estimates.size() * kMaxRow + 1 > capacity_) {
-    capacity_ = estimates.size() * kMaxRow + 1;
-    scratch_.reset(new char[capacity_]);
-  }
-  const std::size_t bytes = format_csv_block(scratch_.get(), first, estimates, source_, threads_);
-  file_.append(std::string_view(scratch_.get(), bytes));
+  const std::size_t room = estimates.size() * kMaxRow + 1;
+  if (scratch_.size() < room) scratch_.resize(room);
+  const std::size_t bytes = format_csv_block(scratch_.data(), first, estimates, source_, threads_);
+  scratch_ = file_.append_in_background(std::move(scratch_), bytes);
 }
 
 void EstimateCsvWriter::commit() {

@@ -59,8 +59,7 @@ class EstimateCsvWriter {
   AtomicFile file_;
   std::span<const int> source_;
   int threads_;
-  std::unique_ptr<char[]> scratch_;  ///< formatted rows of one block
-  std::size_t capacity_ = 0;
+  std::string scratch_;  ///< formatted rows of one block (two take turns, see write())
 };
 
 /// Writes the whole CSV at once (EstimateCsvWriter with one block).

@@ -65,6 +65,36 @@ TEST_F(AtomicFileTest, ContentAppearsOnlyAtCommitAndReplacesTheOldFile) {
   EXPECT_EQ(listing(), std::vector<std::string>{"out.csv"});
 }
 
+TEST_F(AtomicFileTest, BackgroundBlocksKeepTheirPlaceAndComeBackForReuse) {
+  const std::string path = (dir_ / "blocks.csv").string();
+  {
+    AtomicFile file(path);
+    file.buffer() += "header\n";
+    std::string block(4u << 20, 'a');
+    std::string back = file.append_in_background(std::move(block), 3);  // "aaa"
+    EXPECT_TRUE(back.empty());
+    file.buffer() += "|";  // waits for the block in flight, then goes after it
+    back = file.append_in_background(std::string(2u << 20, 'b'), 2u << 20);
+    EXPECT_EQ(back.size(), 4u << 20);  // the first block's buffer, whole, for the next one
+    EXPECT_EQ(back.front(), 'a');
+    back.assign("cc-not-this");
+    file.append_in_background(std::move(back), 2);  // "cc"
+    EXPECT_EQ(slurp(path), "");
+    file.commit();
+  }
+  EXPECT_EQ(slurp(path), "header\naaa|" + std::string(2u << 20, 'b') + "cc");
+  EXPECT_EQ(listing(), std::vector<std::string>{"blocks.csv"});
+}
+
+TEST_F(AtomicFileTest, AWriterDestroyedWithABlockInFlightLeavesNothing) {
+  const std::string path = (dir_ / "inflight.csv").string();
+  {
+    AtomicFile file(path);
+    file.append_in_background(std::string(8u << 20, 'x'), 8u << 20);
+  }
+  EXPECT_TRUE(listing().empty());
+}
+
 TEST_F(AtomicFileTest, AnUncommittedWriterLeavesNothing) {
   const std::string path = (dir_ / "out.ply").string();
   try {
