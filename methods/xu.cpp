@@ -11,7 +11,10 @@
 // Valence-3 and valence-4 vertices give fewer rows than unknowns: the eigen threshold returns the
 // minimum-norm solution in the scaled variables. Such a vertex keeps status ok and degree 2 (no
 // degree is dropped; Xu's solver has no degree safeguard), which is exactly the behaviour the
-// paper blames for Xu-2's failures (§5.1-5.2).
+// paper blames for Xu-2's failures (§5.1-5.2). Their minimum-norm solution is not invariant
+// under a rotation of (u, v) (the columns are scaled per axis), so it depends on which neighbour
+// is p_1, i.e. on the mesh's numbering: a randomly renumbered copy of the level-3 unstructured
+// torus changes H at 238 of its 21155 vertices (all of valence 4), by up to 31 where |H| ~ 2.
 // Boundary vertices (and vertices whose incident faces do not form one closed fan) are not
 // computed: status excluded, values NaN (paper §5.2 excludes them from Xu's errors).
 // Degree 2 and ring 1 only.
