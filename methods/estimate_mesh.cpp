@@ -111,7 +111,9 @@ MeshEstimation::MeshEstimation(const Mesh& mesh, const Estimator& estimator,
                                NeighbourhoodCache* neighbourhoods)
     : mesh_(mesh),
       estimator_(estimator),
-      normals_(area_weighted_normals(mesh, thread_count(estimator))) {
+      normals_(estimator.uses_approx_normals()
+                   ? area_weighted_normals(mesh, thread_count(estimator))
+                   : VertexMatrix()) {
   if (neighbourhoods != nullptr && &neighbourhoods->mesh() != &mesh)
     throw std::invalid_argument("MeshEstimation: the neighbourhood cache is of another mesh");
   const int n = mesh.num_vertices();

@@ -173,6 +173,10 @@ class Estimator {
   /// so, or it is never handed a table.
   virtual NeighbourhoodUse neighbourhood_use() const { return NeighbourhoodUse::none; }
 
+  /// Whether prepare() or estimate() reads MeshContext::approx_normals (the area-weighted vertex
+  /// normals). If not, MeshEstimation does not compute them and hands over an empty matrix.
+  virtual bool uses_approx_normals() const { return true; }
+
   virtual std::unique_ptr<Workspace> make_workspace(const Mesh& mesh) const = 0;
 
   /// Per-mesh precomputation (per-face tensors, cotangent weights, mixed areas ...), run once

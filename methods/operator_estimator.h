@@ -29,6 +29,8 @@ class OperatorEstimator : public Estimator {
                                     int threads) const override;
   /// The vertex normal weighting in use (options().vertex_normals, or the method's default).
   VertexNormals normal_weighting() const;
+  /// Only the area weighting uses MeshContext::approx_normals (they are those normals).
+  bool uses_approx_normals() const override { return normal_weighting() == VertexNormals::area; }
 
  protected:
   /// Throws UsageError for a degree other than 0, negative threads, or (unless
