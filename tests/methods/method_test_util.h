@@ -18,14 +18,20 @@
 
 namespace curvbench::testing {
 
+/// The same bits (NaN included; +0 and -0 differ).
+inline bool same_bits(double x, double y) {
+  return std::memcmp(&x, &y, sizeof(double)) == 0;
+}
+inline bool same_bits(const Vec3& a, const Vec3& b) {
+  return same_bits(a.x(), b.x()) && same_bits(a.y(), b.y()) && same_bits(a.z(), b.z());
+}
+
 /// Every field of the two estimates has the same bits (NaN included).
 inline bool bitwise_equal(const VertexEstimate& a, const VertexEstimate& b) {
-  auto eq = [](double x, double y) { return std::memcmp(&x, &y, sizeof(double)) == 0; };
-  for (int i = 0; i < 3; ++i)
-    if (!eq(a.normal(i), b.normal(i)) || !eq(a.d1(i), b.d1(i)) || !eq(a.d2(i), b.d2(i)))
-      return false;
-  return eq(a.k1, b.k1) && eq(a.k2, b.k2) && eq(a.H, b.H) && eq(a.K, b.K) && a.degree == b.degree &&
-         a.points == b.points && eq(a.ring, b.ring) && a.status == b.status;
+  return same_bits(a.normal, b.normal) && same_bits(a.d1, b.d1) && same_bits(a.d2, b.d2) &&
+         same_bits(a.k1, b.k1) && same_bits(a.k2, b.k2) && same_bits(a.H, b.H) &&
+         same_bits(a.K, b.K) && a.degree == b.degree && a.points == b.points &&
+         same_bits(a.ring, b.ring) && a.status == b.status;
 }
 
 /// (N+1) x (N+1) grid of the square [0, N h]^2, vertex (i, j) at index j (N+1) + i.

@@ -5,10 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <random>
 
+#include "method_test_util.h"
 #include "methods/batched_curvature.h"
 
 namespace curvbench {
@@ -17,12 +17,7 @@ namespace {
 constexpr int L = kBatchLanes;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-bool same_bits(double a, double b) {
-  return std::memcmp(&a, &b, sizeof a) == 0;
-}
-bool same_bits(const Vec3& a, const Vec3& b) {
-  return same_bits(a.x(), b.x()) && same_bits(a.y(), b.y()) && same_bits(a.z(), b.z());
-}
+using testing::same_bits;
 
 TEST(BatchedCurvature, FramesHaveTheBitsOfMakeLocalFrame) {
   std::mt19937 rng(7);
