@@ -14,8 +14,8 @@ RingCollector::RingCollector(const Mesh& mesh) : mesh_(&mesh) {
   vert_stamp_.resize(static_cast<size_t>(mesh.num_vertices()), 0);
   reserve_huge(face_stamp_, static_cast<size_t>(mesh.num_faces()));
   face_stamp_.resize(static_cast<size_t>(mesh.num_faces()), 0);
-  verts_.reserve(128);
-  faces_.reserve(256);
+  verts_.resize(128);
+  faces_.resize(256);
 }
 
 void RingCollector::begin(int v) {
@@ -26,9 +26,9 @@ void RingCollector::begin(int v) {
   }
   center_ = v;
   assigned_ = false;
-  verts_.clear();
-  faces_.clear();
-  verts_.push_back(v);
+  verts_[0] = v;
+  num_verts_ = 1;
+  num_faces_ = 0;
   vert_stamp_[v] = stamp_;
   half_steps_ = 0;
   layer_begin_ = 0;
@@ -36,66 +36,87 @@ void RingCollector::begin(int v) {
   face_layer_begin_ = face_layer_end_ = 0;
 }
 
-// Inlined into the steps below: it runs a dozen times per vertex and per ring step.
-[[gnu::always_inline]] inline bool RingCollector::add_face(int f) {
-  if (face_stamp_[f] == stamp_) return false;
-  face_stamp_[f] = stamp_;
-  faces_.push_back(f);
-  for (int k = 0; k < 3; ++k) {
-    const int w = mesh_->face_vertex(f, k);
-    if (vert_stamp_[w] != stamp_) {
-      vert_stamp_[w] = stamp_;
-      verts_.push_back(w);
-    }
-  }
-  return true;
+// Room for up to new_faces more faces and their vertices (3 each), plus the one slot that
+// add_face and add_vertex write past the end.
+void RingCollector::reserve(size_t new_faces) {
+  if (faces_.size() < num_faces_ + new_faces + 1) faces_.resize(2 * (num_faces_ + new_faces + 1));
+  if (verts_.size() < num_verts_ + 3 * new_faces + 1)
+    verts_.resize(2 * (num_verts_ + 3 * new_faces + 1));
+}
+
+// Written unconditionally, kept (the count advanced) only if new: which neighbours are new
+// follows the mesh, not a pattern a branch predictor learns.
+[[gnu::always_inline]] inline void RingCollector::add_vertex(int w, std::uint32_t stamp) {
+  verts_[num_verts_] = w;
+  num_verts_ += vert_stamp_[w] != stamp ? 1 : 0;
+  vert_stamp_[w] = stamp;
+}
+
+// Inlined into the steps below: it runs a dozen times per vertex and per ring step. The face's
+// vertices are offered whether or not the face is new: the vertices of a face already in the
+// ring are all in it, so they are not added again. `stamp` is stamp_, passed by value: a store
+// to a stamp array could otherwise alias the member and force a reload after every store.
+[[gnu::always_inline]] inline void RingCollector::add_face(int f, std::uint32_t stamp) {
+  faces_[num_faces_] = f;
+  num_faces_ += face_stamp_[f] != stamp ? 1 : 0;
+  face_stamp_[f] = stamp;
+  for (int k = 0; k < 3; ++k) add_vertex(mesh_->face_vertex(f, k), stamp);
 }
 
 // F_{k+1} = F_k plus the faces of the vertices V_k \ V_{k-1} (the faces of older vertices are
 // already in). After a half step, the half-step vertices are in V_{k+1} \ V_k and become part of
 // the next layer automatically, because they are appended after layer_end_.
 bool RingCollector::integer_step() {
-  const size_t first_new_face = faces_.size();
+  size_t incident = 0;
   for (size_t i = layer_begin_; i < layer_end_; ++i)
-    for (int f : mesh_->vertex_faces(verts_[i])) add_face(f);
+    incident += mesh_->vertex_faces(verts_[i]).size();
+  reserve(incident);
+  const size_t first_new_face = num_faces_;
+  const std::uint32_t stamp = stamp_;
+  for (size_t i = layer_begin_; i < layer_end_; ++i)
+    for (int f : mesh_->vertex_faces(verts_[i])) add_face(f, stamp);
   layer_begin_ = layer_end_;
-  layer_end_ = verts_.size();
+  layer_end_ = num_verts_;
   face_layer_begin_ = first_new_face;
-  face_layer_end_ = faces_.size();
-  return faces_.size() > first_new_face;
+  face_layer_end_ = num_faces_;
+  return num_faces_ > first_new_face;
 }
 
 // Adds every face sharing an edge with a face of F_k. Only faces added by the last integer step
 // can have such neighbours outside F_k (docs/algorithms.md §1.1). Edges are matched through the
 // vertex-face lists, so non-manifold edges contribute all their faces.
 bool RingCollector::half_step() {
-  const size_t before = faces_.size();
+  const size_t before = num_faces_;
+  reserve(3 * (face_layer_end_ - face_layer_begin_));
+  const std::uint32_t stamp = stamp_;
   for (size_t i = face_layer_begin_; i < face_layer_end_; ++i) {
     const int f = faces_[i];
     for (int k = 0; k < 3; ++k) {
-      const int a = mesh_->face_vertex(f, k);
-      const int b = mesh_->face_vertex(f, (k + 1) % 3);
       const int g = mesh_->face_neighbor(f, k);
       if (g >= 0) {
-        add_face(g);
+        add_face(g, stamp);
         continue;
       }
       // Boundary or non-manifold edge: scan the faces of a for faces that also contain b.
-      for (int h : mesh_->vertex_faces(a)) {
-        if (h == f || face_stamp_[h] == stamp_) continue;
+      const int a = mesh_->face_vertex(f, k);
+      const int b = mesh_->face_vertex(f, (k + 1) % 3);
+      const auto around_a = mesh_->vertex_faces(a);
+      reserve(3 * (face_layer_end_ - i) + around_a.size());
+      for (int h : around_a) {
+        if (h == f || face_stamp_[h] == stamp) continue;
         if (mesh_->face_vertex(h, 0) == b || mesh_->face_vertex(h, 1) == b ||
             mesh_->face_vertex(h, 2) == b)
-          add_face(h);
+          add_face(h, stamp);
       }
     }
   }
-  return faces_.size() > before;
+  return num_faces_ > before;
 }
 
 // One half ring further: 0 -> 1 (the first step is an integer step), k -> k+½, k+½ -> k+1.
 bool RingCollector::grow() {
   if (assigned_) collect(center_, ring());  // rebuild the buffers and the layer bookkeeping
-  const size_t before = faces_.size();
+  const size_t before = num_faces_;
   if (half_steps_ == 0) {
     integer_step();
     half_steps_ = 2;
@@ -106,7 +127,7 @@ bool RingCollector::grow() {
     integer_step();
     ++half_steps_;
   }
-  return faces_.size() > before;
+  return num_faces_ > before;
 }
 
 void RingCollector::collect(int v, double ring) {
@@ -130,7 +151,7 @@ double RingCollector::collect_at_least(int v, double r0, int min_neighbours, dou
   collect(v, r0);
   const long max_steps = std::lround(2.0 * max_ring);
   int stalled = 0;  // two half steps in a row that add nothing: the component is exhausted
-  while (static_cast<int>(verts_.size()) - 1 < min_neighbours && half_steps_ < max_steps &&
+  while (static_cast<int>(num_verts_) - 1 < min_neighbours && half_steps_ < max_steps &&
          stalled < 2) {
     stalled = grow() ? 0 : stalled + 1;
   }

@@ -89,28 +89,35 @@ class RingCollector {
   /// Ring vertices, centre excluded, in discovery order.
   std::span<const int> neighbours() const {
     if (assigned_) return assigned_neighbours_;
-    return {verts_.data() + 1, verts_.size() - 1};
+    return {verts_.data() + 1, num_verts_ - 1};
   }
   /// Ring faces F_r in discovery order.
   std::span<const int> faces() const {
     if (assigned_) return assigned_faces_;
-    return faces_;
+    return {faces_.data(), num_faces_};
   }
   /// |F_r| (also after assign() without the faces themselves).
-  size_t num_faces() const { return assigned_ ? assigned_num_faces_ : faces_.size(); }
+  size_t num_faces() const { return assigned_ ? assigned_num_faces_ : num_faces_; }
 
  private:
   void begin(int v);
   bool integer_step();
   bool half_step();
-  bool add_face(int f);
+  void reserve(size_t new_faces);
+  void add_vertex(int w, std::uint32_t stamp);
+  void add_face(int f, std::uint32_t stamp);
 
   const Mesh* mesh_;
   std::vector<std::uint32_t> vert_stamp_;
   std::vector<std::uint32_t> face_stamp_;
   std::uint32_t stamp_ = 0;
-  std::vector<int> verts_;  // verts_[0] = centre
+  // The ring in discovery order: verts_[0, num_verts_) (verts_[0] = centre) and
+  // faces_[0, num_faces_). The buffers are longer (reserve()), so that an element can be written
+  // before it is known to be new and kept by advancing the count: no branch on the stamps.
+  std::vector<int> verts_;
   std::vector<int> faces_;
+  size_t num_verts_ = 0;
+  size_t num_faces_ = 0;
   int center_ = -1;
   int half_steps_ = 0;      // ring = half_steps_ / 2
   size_t layer_begin_ = 0;  // vertices V_k \ V_{k-1} of the last integer step: [begin, end)
