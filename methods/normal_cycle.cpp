@@ -26,9 +26,8 @@
 // al. 2003 ("Anisotropic polygonal remeshing"), the ball one the paper's.
 // Boundary: an edge of B without a second face has no dihedral angle; a vertex whose region
 // reaches the boundary is excluded (values NaN). Non-finite values: failed.
-// Cost: prepare(), one atan2 per interior edge (no per-face normals stored); 1-ring, O(1) per
-// incident face; ball, O(faces in
-// the ball).
+// Cost: prepare(), one unit normal per face and one atan2 per interior edge; estimate(), 1-ring,
+// O(1) per incident face; ball, O(faces in the ball).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -74,13 +73,12 @@ Vec3 face_normal(const Mesh& mesh, int f) {
       .normalized();
 }
 
-// Signed dihedral angle of edge k of face f (f's orientation) with the face g across it,
-// positive when convex; nf: f's unit normal.
-double dihedral(const Mesh& mesh, int f, int k, int g, const Vec3& nf) {
+// Signed dihedral angle of edge k of face f (f's orientation) with the face of unit normal ng
+// across it, positive when convex; nf: f's unit normal.
+double dihedral(const Mesh& mesh, int f, int k, const Vec3& nf, const Vec3& ng) {
   const Vec3 a = mesh.position(mesh.face_vertex(f, k));
   const Vec3 e = mesh.position(mesh.face_vertex(f, (k + 1) % 3)) - a;
   const Vec3 edge_unit = e / e.norm();
-  const Vec3 ng = face_normal(mesh, g);
   return std::atan2(nf.cross(ng).dot(edge_unit), nf.dot(ng));
 }
 
@@ -130,28 +128,42 @@ class NormalCycleEstimator final : public OperatorEstimator {
     // Each interior edge once, from its face of smaller index f, written to both faces' slots:
     // seen from g the edge and the cross product of the normals both change sign (an
     // inconsistently oriented pair: only the cross product does, so beta does).
-#pragma omp parallel for num_threads(threads > 0 ? threads : 1) schedule(static)
-    for (int f = 0; f < m; ++f) {
-      const Vec3 nf = face_normal(mesh, f);
-      for (int k = 0; k < 3; ++k) {
-        const int g = mesh.face_neighbor(f, k);
-        if (g < 0) {
-          beta[3 * static_cast<size_t>(f) + k] = std::numeric_limits<double>::quiet_NaN();
-          continue;
+    // The unit face normals first, once each (an edge needs both of its faces' normals).
+    std::vector<double> normals;
+    reserve_huge(normals, 3 * static_cast<size_t>(m));
+    normals.resize(3 * static_cast<size_t>(m));
+    const auto normal_of = [&normals](int f) {
+      return Vec3(Eigen::Map<const Vec3>(normals.data() + 3 * static_cast<size_t>(f)));
+    };
+    const int t = threads > 0 ? threads : 1;
+#pragma omp parallel num_threads(t)
+    {
+#pragma omp for schedule(static)
+      for (int f = 0; f < m; ++f)
+        Eigen::Map<Vec3>(normals.data() + 3 * static_cast<size_t>(f)) = face_normal(mesh, f);
+#pragma omp for schedule(static)
+      for (int f = 0; f < m; ++f) {
+        const Vec3 nf = normal_of(f);
+        for (int k = 0; k < 3; ++k) {
+          const int g = mesh.face_neighbor(f, k);
+          if (g < 0) {
+            beta[3 * static_cast<size_t>(f) + k] = std::numeric_limits<double>::quiet_NaN();
+            continue;
+          }
+          if (g < f) continue;
+          const double b = dihedral(mesh, f, k, nf, normal_of(g));
+          beta[3 * static_cast<size_t>(f) + k] = b;
+          // g's copy of the edge (its end points, either way round; it exists since g is f's
+          // neighbour across it).
+          const int a = mesh.face_vertex(f, k), b_end = mesh.face_vertex(f, (k + 1) % 3);
+          int kg = 0;
+          while (kg < 2 && !((mesh.face_vertex(g, kg) == a || mesh.face_vertex(g, kg) == b_end) &&
+                             (mesh.face_vertex(g, (kg + 1) % 3) == a ||
+                              mesh.face_vertex(g, (kg + 1) % 3) == b_end)))
+            ++kg;
+          const bool reversed = mesh.face_vertex(g, kg) == b_end;
+          beta[3 * static_cast<size_t>(g) + kg] = reversed ? b : -b;
         }
-        if (g < f) continue;
-        const double b = dihedral(mesh, f, k, g, nf);
-        beta[3 * static_cast<size_t>(f) + k] = b;
-        // g's copy of the edge (its end points, either way round; it exists since g is f's
-        // neighbour across it).
-        const int a = mesh.face_vertex(f, k), b_end = mesh.face_vertex(f, (k + 1) % 3);
-        int kg = 0;
-        while (kg < 2 && !((mesh.face_vertex(g, kg) == a || mesh.face_vertex(g, kg) == b_end) &&
-                           (mesh.face_vertex(g, (kg + 1) % 3) == a ||
-                            mesh.face_vertex(g, (kg + 1) % 3) == b_end)))
-          ++kg;
-        const bool reversed = mesh.face_vertex(g, kg) == b_end;
-        beta[3 * static_cast<size_t>(g) + kg] = reversed ? b : -b;
       }
     }
     return data;
