@@ -112,7 +112,8 @@ void add_face_tensor(const FaceTensor& ft, double weight, const Vec3& n, VertexS
     u2 = -frame.t2.dot(ft.t);
     v2 = -frame.t2.dot(ft.b);
   } else {
-    const double nt = n.dot(ft.t) / (1.0 + c), nb = n.dot(ft.b) / (1.0 + c);
+    const double inv = 1.0 / (1.0 + c);  // one division per corner
+    const double nt = n.dot(ft.t) * inv, nb = n.dot(ft.b) * inv;
     const double m1 = frame.t1.dot(ft.m), m2 = frame.t2.dot(ft.m);
     u1 = frame.t1.dot(ft.t) - m1 * nt;
     v1 = frame.t1.dot(ft.b) - m1 * nb;
