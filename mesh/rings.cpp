@@ -89,9 +89,20 @@ bool RingCollector::half_step() {
   const size_t before = num_faces_;
   reserve(3 * (face_layer_end_ - face_layer_begin_));
   const std::uint32_t stamp = stamp_;
+  // From F_1, only the edge of each face opposite the centre can lead out of F_1: a face across
+  // an edge at the centre contains the centre, so it is in F_1 already (for boundary and
+  // non-manifold edges too). Those edges are skipped; the rest is the same walk in the same order.
+  const bool first = half_steps_ == 2;
   for (size_t i = face_layer_begin_; i < face_layer_end_; ++i) {
     const int f = faces_[i];
-    for (int k = 0; k < 3; ++k) {
+    int k_begin = 0, k_end = 3;
+    if (first) {
+      k_begin = mesh_->face_vertex(f, 0) == center_   ? 1
+                : mesh_->face_vertex(f, 1) == center_ ? 2
+                                                      : 0;
+      k_end = k_begin + 1;
+    }
+    for (int k = k_begin; k < k_end; ++k) {
       const int g = mesh_->face_neighbor(f, k);
       if (g >= 0) {
         add_face(g, stamp);
