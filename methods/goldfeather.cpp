@@ -22,6 +22,8 @@
 // The least squares are solved through the normal equations after scaling the coordinates by their
 // RMS distance (same solution as the paper's SVD when the system has full rank), with the
 // residuals in the paper's units: positions in length, normals as slopes (no relative weight).
+// Their entries are sums over the neighbours of monomials x^a y^b (times z or a slope on the
+// right-hand side), accumulated once per monomial; LDL^T with Eigen::LDLT's diagonal pivoting.
 // Rank-deficient cubic (by the safeguard of the project's QR, |R_ii| < 1e-3 max |R_jj|: see
 // kCubicTolerance2; e.g. a vertex on a fold, a CAD corner or a thin handle, where few neighbour
 // normals are usable and the position rows alone cannot fix 7 unknowns): the quadratic
@@ -33,8 +35,10 @@
 // Failed: fewer than 3 neighbours, or the quadratic numerically singular too.
 // Boundary vertices: the fit needs no closed 1-ring (at least 3 neighbours give 9 >= 7 equations):
 // computed on the neighbours they have, status ok (degree_reduced as above).
-// Cost: one 7x7 system per vertex over its 1-ring (and a 3x3 one where the 7x7 is ill-conditioned).
-#include <Eigen/Cholesky>
+// Cost: per neighbour 47 monomial sums; per vertex one 7x7 system (and a 3x3 one where the 7x7 is
+// ill-conditioned).
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -49,9 +53,6 @@ namespace curvbench {
 
 namespace {
 
-using Mat7 = Eigen::Matrix<double, 7, 7>;
-using Vec7 = Eigen::Matrix<double, 7, 1>;
-
 /// A neighbour's normal enters the fit (its two slope equations) only within 60 degrees of the
 /// vertex normal: the slope -a/c grows without bound as c = n_j . n -> 0 (on a CAD crease of 90
 /// degrees c is 0 up to rounding and one slope of 1e16 decides the fit), while on a smooth surface
@@ -59,14 +60,157 @@ using Vec7 = Eigen::Matrix<double, 7, 1>;
 constexpr double kMinNormalCosine = 0.5;
 
 /// The cubic is trusted when |R_ii| >= 1e-3 max |R_jj| (the safeguard of the project's polynomial
-/// fits, docs/algorithms.md §5.4), in squares for the LDLT pivots; the quadratic, the last model,
-/// only needs to be numerically nonsingular (|R_ii| >= 1e-6 max |R_jj|).
+/// fits, docs/algorithms.md §5.4), in squares for the LDL^T pivots (see Ldlt); the quadratic, the
+/// last model, only needs to be numerically nonsingular (|R_ii| >= 1e-6 max |R_jj|).
 constexpr double kCubicTolerance2 = 1e-6;
 constexpr double kQuadraticTolerance2 = 1e-12;
 
+/// The monomials x^a y^b of degree a + b <= 6, indexed by degree, then by b: x^a y^b is at
+/// (a + b)(a + b + 1)/2 + b.
+constexpr int kMonomials = 28;
+constexpr int monomial(int a, int b) {
+  return (a + b) * (a + b + 1) / 2 + b;
+}
+
+/// The position row of eq. (9), r_i = kCoef[i] x^kPowX[i] y^kPowY[i] for the unknowns
+/// (A, B, C, D, E, F, G); the slope rows of eqs. (10)-(11) are its derivatives d/dx and d/dy.
+constexpr double kCoef[7] = {0.5, 1.0, 0.5, 1.0, 1.0, 1.0, 1.0};
+constexpr int kPowX[7] = {2, 1, 0, 3, 2, 1, 0};
+constexpr int kPowY[7] = {0, 1, 2, 0, 1, 2, 3};
+
+/// An entry of the normal equations as a combination of monomial sums,
+///   pos_coef s^2 pos[pos] + x_coef slope[x] + y_coef slope[y]
+/// (matrix) or pos_coef s^2 pos_z[pos] + x_coef slope_x[x] + y_coef slope_y[y] (right-hand side),
+/// with the sums of GoldfeatherEstimator::estimate; an absent term has coefficient 0.
+struct Entry {
+  int pos = 0;
+  double pos_coef = 0.0;
+  int x = 0;
+  double x_coef = 0.0;
+  int y = 0;
+  double y_coef = 0.0;
+};
+
+/// The 28 entries (i, j), j >= i, of the upper triangle, row by row: r_i r_j, plus the products
+/// of the slope rows, (d r_i/dx)(d r_j/dx) + (d r_i/dy)(d r_j/dy).
+constexpr std::array<Entry, 28> kMatrixEntries = [] {
+  std::array<Entry, 28> e{};
+  for (int i = 0, k = 0; i < 7; ++i)
+    for (int j = i; j < 7; ++j, ++k) {
+      const int a = kPowX[i] + kPowX[j], b = kPowY[i] + kPowY[j];
+      const double c = kCoef[i] * kCoef[j];
+      e[k].pos = monomial(a, b);
+      e[k].pos_coef = c;
+      if (kPowX[i] > 0 && kPowX[j] > 0) {
+        e[k].x = monomial(a - 2, b);
+        e[k].x_coef = c * kPowX[i] * kPowX[j];
+      }
+      if (kPowY[i] > 0 && kPowY[j] > 0) {
+        e[k].y = monomial(a, b - 2);
+        e[k].y_coef = c * kPowY[i] * kPowY[j];
+      }
+    }
+  return e;
+}();
+
+/// The right-hand side: r_i z, plus the slope rows times the slopes, (d r_i/dx) z_x +
+/// (d r_i/dy) z_y.
+constexpr std::array<Entry, 7> kRhsEntries = [] {
+  std::array<Entry, 7> e{};
+  for (int i = 0; i < 7; ++i) {
+    const int a = kPowX[i], b = kPowY[i];
+    e[i].pos = monomial(a, b);
+    e[i].pos_coef = kCoef[i];
+    if (a > 0) {
+      e[i].x = monomial(a - 1, b);
+      e[i].x_coef = kCoef[i] * a;
+    }
+    if (b > 0) {
+      e[i].y = monomial(a, b - 1);
+      e[i].y_coef = kCoef[i] * b;
+    }
+  }
+  return e;
+}();
+
 struct GoldfeatherWorkspace final : Workspace {
-  GoldfeatherWorkspace() { neighbours.reserve(32); }
+  GoldfeatherWorkspace() {
+    neighbours.reserve(32);
+    local.reserve(32);
+  }
   std::vector<int> neighbours;
+  std::vector<Vec3> local;  ///< q_j - p in the frame (t1, t2, n), unscaled
+};
+
+/// LDL^T = P G P^T of the leading N x N block of the symmetric matrix G with Eigen::LDLT's
+/// symmetric pivoting: the pivot order is that of G's diagonal, largest magnitude first (the
+/// first of equal ones in Eigen's swapping order), so the pivots D_kk are the R_kk^2 of the QR of
+/// the least squares with their columns in that order.
+template <int N>
+struct Ldlt {
+  explicit Ldlt(const double (&g)[7][7]) {
+    double diag[N];
+    for (int k = 0; k < N; ++k) {
+      perm[k] = k;
+      diag[k] = std::abs(g[k][k]);
+    }
+    for (int k = 0; k < N; ++k) {
+      int big = k;
+#pragma GCC unroll 7
+      for (int i = k + 1; i < N; ++i)
+        if (diag[i] > diag[big]) big = i;
+      std::swap(perm[k], perm[big]);
+      std::swap(diag[k], diag[big]);
+    }
+    // The unpivoted factorisation of P G P^T in the upper triangle: D_kk on the diagonal,
+    // L_ik (i > k) in a[k][i].
+    for (int k = 0; k < N; ++k)
+#pragma GCC unroll 7
+      for (int i = k; i < N; ++i) a[k][i] = g[perm[k]][perm[i]];
+#pragma GCC unroll 7
+    for (int k = 0; k < N; ++k) {
+      inverse[k] = 1.0 / a[k][k];
+#pragma GCC unroll 7
+      for (int i = k + 1; i < N; ++i) {
+        const double l = a[k][i] * inverse[k];
+#pragma GCC unroll 7
+        for (int j = i; j < N; ++j) a[i][j] -= l * a[k][j];
+        a[k][i] = l;
+      }
+    }
+  }
+
+  /// Whether every pivot (an R_kk^2) exceeds tolerance2 times the largest.
+  bool full_rank(double tolerance2) const {
+    double big = 0.0;
+    for (int k = 0; k < N; ++k) big = std::max(big, std::abs(a[k][k]));
+    if (!(big > 0.0) || !std::isfinite(big)) return false;
+    for (int k = 0; k < N; ++k)
+      if (!(a[k][k] > tolerance2 * big)) return false;
+    return true;
+  }
+
+  /// The solution x of G x = b (first N entries).
+  void solve(const double (&b)[7], double (&x)[7]) const {
+    double y[N];
+#pragma GCC unroll 7
+    for (int i = 0; i < N; ++i) {
+      y[i] = b[perm[i]];
+#pragma GCC unroll 7
+      for (int k = 0; k < i; ++k) y[i] -= a[k][i] * y[k];
+    }
+#pragma GCC unroll 7
+    for (int i = N - 1; i >= 0; --i) {
+      y[i] *= inverse[i];
+#pragma GCC unroll 7
+      for (int j = i + 1; j < N; ++j) y[i] -= a[i][j] * y[j];
+      x[perm[i]] = y[i];
+    }
+  }
+
+  int perm[N];
+  double a[N][N];
+  double inverse[N];  ///< 1 / D_kk
 };
 
 class GoldfeatherEstimator final : public OperatorEstimator {
@@ -81,14 +225,6 @@ class GoldfeatherEstimator final : public OperatorEstimator {
     return std::make_unique<GoldfeatherWorkspace>();
   }
 
-  /// Whether every LDLT pivot of the normal equations R^T R (the R_ii^2) exceeds tolerance2
-  /// times the largest.
-  template <class D>
-  static bool full_rank(const D& pivots, double tolerance2) {
-    const double big = pivots.cwiseAbs().maxCoeff();
-    return big > 0.0 && std::isfinite(big) && pivots.minCoeff() > tolerance2 * big;
-  }
-
   void estimate(const MeshContext& ctx, int v, Workspace& base,
                 VertexEstimate& out) const override {
     auto& ws = static_cast<GoldfeatherWorkspace&>(base);
@@ -99,9 +235,9 @@ class GoldfeatherEstimator final : public OperatorEstimator {
     for (int f : mesh.vertex_faces(v))
       for (int k = 0; k < 3; ++k) {
         const int w = mesh.face_vertex(f, k);
-        bool seen = w == v;
-        for (int u : ws.neighbours) seen = seen || u == w;
-        if (!seen) ws.neighbours.push_back(w);
+        if (w != v &&
+            std::find(ws.neighbours.begin(), ws.neighbours.end(), w) == ws.neighbours.end())
+          ws.neighbours.push_back(w);
       }
     const int points = static_cast<int>(ws.neighbours.size());
     if (points < 3) {
@@ -111,10 +247,13 @@ class GoldfeatherEstimator final : public OperatorEstimator {
     const Vec3 n = data.normal(ctx, v);
     const LocalFrame frame = make_local_frame(n);
     const Vec3 p = mesh.position(v);
+    ws.local.clear();
     double s2 = 0.0;
     for (int w : ws.neighbours) {
       const Vec3 d = mesh.position(w) - p;
-      s2 += d.dot(frame.t1) * d.dot(frame.t1) + d.dot(frame.t2) * d.dot(frame.t2);
+      const Vec3 q(d.dot(frame.t1), d.dot(frame.t2), d.dot(frame.m));
+      ws.local.push_back(q);
+      s2 += q.x() * q.x() + q.y() * q.y();
     }
     const double s = std::sqrt(s2 / points);
     if (!(s > 0.0) || !std::isfinite(s)) {
@@ -123,46 +262,68 @@ class GoldfeatherEstimator final : public OperatorEstimator {
     }
     // Scaled coordinates X = x/s, Z = z/s: unknowns (A s, B s, C s, D s^2, E s^2, F s^2, G s^2);
     // a position residual in length units is s times its scaled residual, a slope residual is
-    // the same in both.
-    Mat7 ata = Mat7::Zero();
-    Vec7 atb = Vec7::Zero();
-    const auto add = [&](const Vec7& row, double rhs) {
-      ata.noalias() += row * row.transpose();
-      atb.noalias() += rhs * row;
-    };
-    for (int w : ws.neighbours) {
-      const Vec3 d = (mesh.position(w) - p) / s;
-      const double x = d.dot(frame.t1), y = d.dot(frame.t2), z = d.dot(frame.m);
-      Vec7 row;
-      row << 0.5 * x * x, x * y, 0.5 * y * y, x * x * x, x * x * y, x * y * y, y * y * y;
-      add(s * row, s * z);  // the position residual in length units, as in the paper
-      const Vec3 nw = data.normal(ctx, w);
+    // the same in both. Every entry of the normal equations is a sum over the neighbours of a
+    // monomial X^a Y^b (times Z or a slope on the right-hand side), so the sums are accumulated
+    // once per monomial: pos over all neighbours (eq. 9), pos_z its right-hand sides, slope over
+    // the neighbours whose normals are used (eqs. 10-11), slope_x and slope_y their right-hand
+    // sides with the slopes -a/c and -b/c.
+    const double inv_s = 1.0 / s;
+    double pos[kMonomials] = {}, pos_z[kMonomials] = {}, slope[kMonomials] = {},
+           slope_x[kMonomials] = {}, slope_y[kMonomials] = {};
+    for (int j = 0; j < points; ++j) {
+      const Vec3 q = ws.local[static_cast<size_t>(j)] * inv_s;
+      const double x = q.x(), y = q.y(), z = q.z();
+      // X^a Y^b at monomial(a, b), degrees 1 to 6: degree d is X times degree d - 1, and Y^d.
+      double m[kMonomials];
+      m[1] = x;
+      m[2] = y;
+#pragma GCC unroll 7
+      for (int d = 2, i = 3; d <= 6; ++d, ++i) {
+        for (int b = 0; b < d; ++b, ++i) m[i] = x * m[i - d];
+        m[i] = y * m[i - d - 1];
+      }
+      for (int i = monomial(4, 0); i < kMonomials; ++i) pos[i] += m[i];
+      for (int i = monomial(2, 0); i < monomial(4, 0); ++i) pos_z[i] += z * m[i];
+      const Vec3 nw = data.normal(ctx, ws.neighbours[static_cast<size_t>(j)]);
       const double a = nw.dot(frame.t1), b = nw.dot(frame.t2), c = nw.dot(frame.m);
       if (!(c >= kMinNormalCosine)) continue;  // across a crease or facing away: position only
-      row << x, y, 0.0, 3.0 * x * x, 2.0 * x * y, y * y, 0.0;
-      add(row, -a / c);
-      row << 0.0, x, y, 0.0, x * x, 2.0 * x * y, 3.0 * y * y;
-      add(row, -b / c);
+      const double inv_c = -1.0 / c, zx = a * inv_c, zy = b * inv_c;
+      for (int i = monomial(2, 0); i < monomial(5, 0); ++i) slope[i] += m[i];
+      for (int i = monomial(1, 0); i < monomial(3, 0); ++i) {
+        slope_x[i] += zx * m[i];
+        slope_y[i] += zy * m[i];
+      }
     }
-    Curvature c;
+    double ata[7][7], atb[7];
+    const double ss = s * s;
+#pragma GCC unroll 7
+    for (int i = 0, k = 0; i < 7; ++i) {
+#pragma GCC unroll 7
+      for (int j = i; j < 7; ++j, ++k) {
+        const Entry& e = kMatrixEntries[static_cast<size_t>(k)];
+        ata[i][j] = ata[j][i] =
+            e.pos_coef * ss * pos[e.pos] + e.x_coef * slope[e.x] + e.y_coef * slope[e.y];
+      }
+      const Entry& e = kRhsEntries[static_cast<size_t>(i)];
+      atb[i] = e.pos_coef * ss * pos_z[e.pos] + e.x_coef * slope_x[e.x] + e.y_coef * slope_y[e.y];
+    }
+    double coef[7];
     VertexStatus status = VertexStatus::ok;
-    if (const Eigen::LDLT<Mat7> ldlt(ata); full_rank(ldlt.vectorD(), kCubicTolerance2)) {
-      const Vec7 coef = ldlt.solve(atb);
-      c = curvature_from_tangent_tensor(frame.m, coef(0) / s, coef(1) / s, coef(2) / s, frame.t1,
-                                        frame.t2);
+    if (const Ldlt<7> ldlt(ata); ldlt.full_rank(kCubicTolerance2)) {
+      ldlt.solve(atb, coef);
     } else {
       // The quadratic fallback: the same rows restricted to (A, B, C), i.e. the upper-left 3x3
       // block of the normal equations (the cubic coefficients set to zero).
-      const Eigen::LDLT<Eigen::Matrix3d> ldlt3(ata.topLeftCorner<3, 3>());
-      if (!full_rank(ldlt3.vectorD(), kQuadraticTolerance2)) {
+      const Ldlt<3> ldlt3(ata);
+      if (!ldlt3.full_rank(kQuadraticTolerance2)) {
         set_failed(1.0, points, out);
         return;
       }
-      const Eigen::Vector3d coef = ldlt3.solve(atb.head<3>());
-      c = curvature_from_tangent_tensor(frame.m, coef(0) / s, coef(1) / s, coef(2) / s, frame.t1,
-                                        frame.t2);
+      ldlt3.solve(atb, coef);
       status = VertexStatus::degree_reduced;
     }
+    const Curvature c = curvature_from_tangent_tensor(frame.m, coef[0] / s, coef[1] / s,
+                                                      coef[2] / s, frame.t1, frame.t2);
     if (!set_operator_quantities(c, computes(), points, 1.0, out)) {
       set_failed(1.0, points, out);
       return;
