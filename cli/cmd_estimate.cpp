@@ -181,9 +181,9 @@ int run_estimate(const EstimateOptions& o, bool degree_given) {
   if (o.timing) {
     // Per-stage wall times. Estimation and writing alternate block by block; each line is the sum
     // of its own parts: neighbourhoods+fit = normals, neighbourhoods and fits (MeshEstimation);
-    // write = formatting the output and waiting for it to be written (a CSV block is written in
-    // the background while the next one is estimated: AtomicFile::append_in_background), faces
-    // of a PLY included.
+    // write = the time the estimation waited for the output: a CSV block is formatted and then
+    // written by two background threads while the next ones are estimated (EstimateCsvWriter),
+    // so only what does not overlap counts; a PLY is written in the foreground, faces included.
     std::fprintf(stderr, "timing: read %.6f s\n", read_seconds);
     std::fprintf(stderr, "timing: orientation %.6f s\n", orient_seconds);
     std::fprintf(stderr, "timing: neighbourhoods+fit %.6f s\n", seconds);

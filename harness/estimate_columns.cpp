@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/huge_pages.h"
 #include "harness/results_table.h"
 
 namespace curvbench {
@@ -130,16 +131,36 @@ EstimateCsvWriter::EstimateCsvWriter(const std::string& path, std::span<const in
   file_.append(estimate_csv_header() + "\n");
 }
 
-// The rows of this block are formatted while the previous block is still being written (the
-// file's background write); the buffer that block used comes back for the next one.
+EstimateCsvWriter::~EstimateCsvWriter() {
+  if (in_flight_.valid()) in_flight_.wait();
+}
+
+void EstimateCsvWriter::wait_in_flight() {
+  if (in_flight_.valid()) in_flight_.get();
+}
+
 void EstimateCsvWriter::write(int first, std::span<const VertexEstimate> estimates) {
-  const std::size_t room = estimates.size() * kMaxRow + 1;
-  if (scratch_.size() < room) scratch_.resize(room);
-  const std::size_t bytes = format_csv_block(scratch_.data(), first, estimates, source_, threads_);
-  scratch_ = file_.append_in_background(std::move(scratch_), bytes);
+  wait_in_flight();
+  // The copy and the two formatting buffers (28 MB each for a block of 65536) on huge pages:
+  // one first-touch fault per 2 MiB instead of per 4 KiB (core/huge_pages.h).
+  reserve_huge(block_, estimates.size());
+  block_.assign(estimates.begin(), estimates.end());
+  in_flight_ = std::async(std::launch::async, [this, first] {
+    const std::size_t room = block_.size() * kMaxRow + 1;
+    if (scratch_.size() < room) {
+      scratch_.reserve(room);
+      advise_huge_pages(scratch_.data(), room);
+      scratch_.resize(room);
+    }
+    const std::size_t bytes = format_csv_block(scratch_.data(), first, block_, source_, threads_);
+    // Written by a thread of its own while this one formats the next block; the buffer of the
+    // block before comes back for it.
+    scratch_ = file_.append_in_background(std::move(scratch_), bytes);
+  });
 }
 
 void EstimateCsvWriter::commit() {
+  wait_in_flight();
   file_.commit();
 }
 

@@ -11,6 +11,7 @@
 // estimate_ply_types / estimate_ply_row), or at once from a whole vector (the same bytes).
 #pragma once
 
+#include <future>
 #include <memory>
 #include <span>
 #include <string>
@@ -47,19 +48,32 @@ void append_estimate_csv_rows(std::string& out, int first,
 
 /// The estimate CSV written block by block (the header first), through the project's atomic
 /// file writer: a failure leaves no file. `source` as above; it must outlive the writer.
+/// A pipeline of three stages, each on a thread of its own: the caller estimates block k + 2
+/// while block k + 1 is formatted (16 numbers per vertex cost more than a fast fit) and block k
+/// is written (AtomicFile::append_in_background). write() copies the block and returns; one
+/// block is being formatted at a time, and the next write() or commit() waits for it and
+/// reports its error.
 class EstimateCsvWriter {
  public:
   EstimateCsvWriter(const std::string& path, std::span<const int> source, int threads = 1);
+  EstimateCsvWriter(const EstimateCsvWriter&) = delete;
+  EstimateCsvWriter& operator=(const EstimateCsvWriter&) = delete;
+  /// Waits for the block in flight (its error no longer matters); uncommitted, no file is left.
+  ~EstimateCsvWriter();
   /// Appends the rows of vertices [first, first + estimates.size()).
   void write(int first, std::span<const VertexEstimate> estimates);
-  /// Closes the file and renames it into place.
+  /// Waits for the last block, closes the file and renames it into place.
   void commit();
 
  private:
+  void wait_in_flight();
+
   AtomicFile file_;
   std::span<const int> source_;
   int threads_;
-  std::string scratch_;  ///< formatted rows of one block (two take turns, see write())
+  std::vector<VertexEstimate> block_;  ///< the block in flight (a copy)
+  std::string scratch_;                ///< its formatted rows (two buffers take turns)
+  std::future<void> in_flight_;
 };
 
 /// Writes the whole CSV at once (EstimateCsvWriter with one block).

@@ -133,6 +133,37 @@ TEST(EstimateCsvRows, SameBytesForAnyThreadsAndBlocks) {
   }
 }
 
+// The writer formats and writes each block on a background thread while the caller fills the
+// next one: the caller's buffer may change as soon as write() returns, the blocks keep their
+// order, and a writer destroyed with a block in flight leaves no file.
+TEST(EstimateCsvWriter, BlocksInFlightKeepTheirOrderAndAreCopies) {
+  const fs::path dir = fresh_dir("estimate_csv_writer");
+  const std::vector<VertexEstimate> e = odd_estimates(30011);
+  std::string expected = estimate_csv_header() + "\n";
+  append_estimate_csv_rows(expected, 0, e, {}, 1);
+  const std::string path = (dir / "blocks.csv").string();
+  {
+    EstimateCsvWriter writer(path, {}, 2);
+    std::vector<VertexEstimate> buffer;
+    for (size_t first = 0; first < e.size(); first += 7000) {
+      buffer.assign(e.begin() + static_cast<std::ptrdiff_t>(first),
+                    e.begin() + static_cast<std::ptrdiff_t>(std::min(first + 7000, e.size())));
+      writer.write(static_cast<int>(first), buffer);
+      std::fill(buffer.begin(), buffer.end(), VertexEstimate{});  // reused at once
+    }
+    EXPECT_FALSE(fs::exists(path));
+    writer.commit();
+  }
+  EXPECT_EQ(slurp(path), expected);
+  {
+    EstimateCsvWriter writer((dir / "inflight.csv").string(), {}, 1);
+    writer.write(0, e);
+  }
+  EXPECT_FALSE(fs::exists(dir / "inflight.csv"));
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+  fs::remove_all(dir);
+}
+
 TEST(PlyWriterBlocks, SameBytesAsWritePly) {
   const fs::path dir = fresh_dir("ply_writer_blocks");
   VertexMatrix V(5, 3);
