@@ -1,5 +1,6 @@
 #include "mesh/rings.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/errors.h"
@@ -141,10 +142,21 @@ bool RingCollector::grow() {
   return num_faces_ > before;
 }
 
+namespace {
+
+constexpr double kLargestRing = 1e6;
+
+// 2 r rounded to the nearest integer for r in [0, kLargestRing] (no libm call: once per vertex).
+long half_steps_of(double ring) {
+  return static_cast<long>(2.0 * ring + 0.5);
+}
+
+}  // namespace
+
 void RingCollector::collect(int v, double ring) {
-  const long target = std::lround(2.0 * ring);
-  if (!(ring >= 1.0) || std::abs(0.5 * static_cast<double>(target) - ring) > 1e-9)
-    throw UsageError("ring size must be a multiple of 0.5 and at least 1, got " +
+  const long target = ring >= 1.0 && ring <= kLargestRing ? half_steps_of(ring) : 0;
+  if (target == 0 || std::abs(0.5 * static_cast<double>(target) - ring) > 1e-9)
+    throw UsageError("ring size must be a multiple of 0.5, at least 1 and at most 1e6, got " +
                      std::to_string(ring));
   begin(v);
   while (half_steps_ < target) grow();
@@ -160,7 +172,7 @@ void RingCollector::collect_integer(int v, int k) {
 
 double RingCollector::collect_at_least(int v, double r0, int min_neighbours, double max_ring) {
   collect(v, r0);
-  const long max_steps = std::lround(2.0 * max_ring);
+  const long max_steps = half_steps_of(max_ring >= 0.0 ? std::min(max_ring, kLargestRing) : 0.0);
   int stalled = 0;  // two half steps in a row that add nothing: the component is exhausted
   while (static_cast<int>(num_verts_) - 1 < min_neighbours && half_steps_ < max_steps &&
          stalled < 2) {

@@ -57,7 +57,7 @@ class RingCollector {
  public:
   explicit RingCollector(const Mesh& mesh);
 
-  /// Collects the r-ring of v, r in {1, 1.5, 2, 2.5, ...}. Throws UsageError otherwise.
+  /// Collects the r-ring of v, r in {1, 1.5, 2, 2.5, ..., 1e6}. Throws UsageError otherwise.
   /// Afterwards neighbours() holds V_r without v, faces() holds F_r.
   void collect(int v, double ring);
 
