@@ -1,6 +1,8 @@
 // k-ring and half-ring neighbourhoods against the paper's Table 2 and docs/algorithms.md §1.1.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <algorithm>
 #include <set>
 #include <vector>
@@ -209,6 +211,10 @@ TEST(Rings, RejectsInvalidRingSizes) {
   EXPECT_THROW(rc.collect(0, 0.5), UsageError);
   EXPECT_THROW(rc.collect(0, 1.25), UsageError);
   EXPECT_THROW(rc.collect(0, -1.0), UsageError);
+  EXPECT_THROW(rc.collect(0, std::nan("")), UsageError);
+  EXPECT_THROW(rc.collect(0, 2e6), UsageError);  // above the largest ring, 1e6
+  EXPECT_NO_THROW(rc.collect(0, 1e6));            // saturates at once on this small mesh
+  EXPECT_EQ(rc.ring(), 1e6);
 }
 
 }  // namespace
