@@ -10,8 +10,8 @@
 #include "core/huge_pages.h"
 #include "mesh/rings.h"
 #include "methods/estimator.h"
-#include "methods/face_geometry.h"
 #include "methods/neighbourhood_table.h"
+#include "methods/vertex_normals.h"
 #include "methods/vertex_result.h"
 
 namespace curvbench {
@@ -100,7 +100,6 @@ double Estimator::collect_neighbourhood(const MeshContext& ctx, RingCollector& r
 }
 
 namespace {
-VertexMatrix area_weighted_normals(const Mesh& mesh, int threads);
 int thread_count(const Estimator& estimator) {
   const int threads =
       estimator.options().threads > 0 ? estimator.options().threads : omp_get_max_threads();
@@ -113,7 +112,7 @@ MeshEstimation::MeshEstimation(const Mesh& mesh, const Estimator& estimator,
     : mesh_(mesh),
       estimator_(estimator),
       normals_(estimator.uses_approx_normals()
-                   ? area_weighted_normals(mesh, thread_count(estimator))
+                   ? weighted_vertex_normals(mesh, VertexNormals::area, thread_count(estimator))
                    : VertexMatrix()) {
   if (neighbourhoods != nullptr && &neighbourhoods->mesh() != &mesh)
     throw std::invalid_argument("MeshEstimation: the neighbourhood cache is of another mesh");
@@ -159,35 +158,6 @@ void MeshEstimation::run(int first, std::span<VertexEstimate> out) {
     }
   }
 }
-
-namespace {
-
-// Mesh::area_weighted_normals with `threads` threads and one cross product per face instead of
-// one per corner: the same bits, since each vertex adds the same face cross products
-// (x2 - x1) x (x3 - x1) in the same order, increasing face index (for_each_face_touching), to a
-// zero start, and is normalised the same way.
-VertexMatrix area_weighted_normals(const Mesh& mesh, int threads) {
-  const int n = mesh.num_vertices();
-  VertexMatrix N(n, 3);
-  advise_huge_pages(N.data(), sizeof(double) * static_cast<size_t>(N.size()));
-  for_each_vertex_range(n, threads, [&](int lo, int hi) {
-    N.middleRows(lo, hi - lo).setZero();
-    for_each_face_touching(mesh, lo, hi, [&](int, const int(&vs)[3]) {
-      const Vec3 a = mesh.position(vs[0]);
-      const Vec3 cross = (mesh.position(vs[1]) - a).cross(mesh.position(vs[2]) - a);
-      for (int k = 0; k < 3; ++k)
-        if (vs[k] >= lo && vs[k] < hi) N.row(vs[k]) += cross.transpose();
-    });
-    for (int v = lo; v < hi; ++v) {
-      const Vec3 sum = N.row(v).transpose();
-      const double len = sum.norm();
-      if (len > 0.0) N.row(v) = (sum / len).transpose();
-    }
-  });
-  return N;
-}
-
-}  // namespace
 
 std::vector<VertexEstimate> estimate_mesh(const Mesh& mesh, const Estimator& estimator,
                                           NeighbourhoodCache* neighbourhoods) {

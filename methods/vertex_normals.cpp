@@ -22,18 +22,24 @@ VertexMatrix weighted_vertex_normals(const Mesh& mesh, VertexNormals weighting, 
   for_each_vertex_range(n, threads, [&](int lo, int hi) {
     for_each_face_touching(mesh, lo, hi, [&](int, const int(&vs)[3]) {
       const Vec3 x[3] = {mesh.position(vs[0]), mesh.position(vs[1]), mesh.position(vs[2])};
+      if (weighting == VertexNormals::area) {
+        // Weight area(f) = |cross|/2 on the unit normal: the cross product itself (the 1/2 goes
+        // in the normalisation), once per face and computed as Mesh::area_weighted_normal does,
+        // so that the normals have its bits.
+        const Vec3 cross = (x[1] - x[0]).cross(x[2] - x[0]);
+        for (int k = 0; k < 3; ++k)
+          if (vs[k] >= lo && vs[k] < hi) N.row(vs[k]) += cross.transpose();
+        return;
+      }
       for (int k = 0; k < 3; ++k) {
         if (vs[k] < lo || vs[k] >= hi) continue;
         const Vec3 a = x[(k + 1) % 3] - x[k];
         const Vec3 b = x[(k + 2) % 3] - x[k];
         const Vec3 cross = a.cross(b);  // 2 area(f) times the unit face normal
         if (!(cross.squaredNorm() > 0.0)) continue;
-        // w / |cross| times cross; area and max need no square root.
+        // w / |cross| times cross; max needs no square root.
         double w_over_len = 0.0;
         switch (weighting) {
-          case VertexNormals::area:
-            w_over_len = 0.5;
-            break;
           case VertexNormals::angle: {
             const double len = cross.norm();
             w_over_len = std::atan2(len, a.dot(b)) / len;
@@ -42,6 +48,7 @@ VertexMatrix weighted_vertex_normals(const Mesh& mesh, VertexNormals weighting, 
           case VertexNormals::max:
             w_over_len = 1.0 / (a.squaredNorm() * b.squaredNorm());
             break;
+          case VertexNormals::area:  // above
           case VertexNormals::method_default:
             break;
         }

@@ -2,8 +2,9 @@
 // code uses is selectable (EstimatorOptions::vertex_normals).
 //
 //   n_v = normalize( sum over the faces f of v of  w_f(v) (x1 - x0) x (x2 - x0) / |...| )
-//   area   w = area of f                      (libigl's per_vertex_normals default; equals
-//                                              Mesh::area_weighted_normals)
+//   area   w = area of f                      (libigl's per_vertex_normals default; the bits
+//                                              of Mesh::area_weighted_normals, with one cross
+//                                              product per face; MeshContext::approx_normals)
 //   angle  w = angle of f at v                (Thürmer & Wüthrich 1998)
 //   max    w = |a x b| / (|a|^2 |b|^2) = sin(theta) / (|a| |b|), a, b the edges of f at v
 //          (Max 1999; trimesh2's choice, used by Rusinkiewicz 2004)
