@@ -129,21 +129,17 @@ class NormalCycleEstimator final : public OperatorEstimator {
     // seen from g the edge and the cross product of the normals both change sign (an
     // inconsistently oriented pair: only the cross product does, so beta does).
     // The unit face normals first, once each (an edge needs both of its faces' normals).
-    std::vector<double> normals;
-    reserve_huge(normals, 3 * static_cast<size_t>(m));
-    normals.resize(3 * static_cast<size_t>(m));
-    const auto normal_of = [&normals](int f) {
-      return Vec3(Eigen::Map<const Vec3>(normals.data() + 3 * static_cast<size_t>(f)));
-    };
+    std::vector<Vec3> normals;
+    reserve_huge(normals, static_cast<size_t>(m));
+    normals.resize(static_cast<size_t>(m));  // Eigen leaves the entries uninitialised
     const int t = threads > 0 ? threads : 1;
 #pragma omp parallel num_threads(t)
     {
 #pragma omp for schedule(static)
-      for (int f = 0; f < m; ++f)
-        Eigen::Map<Vec3>(normals.data() + 3 * static_cast<size_t>(f)) = face_normal(mesh, f);
+      for (int f = 0; f < m; ++f) normals[static_cast<size_t>(f)] = face_normal(mesh, f);
 #pragma omp for schedule(static)
       for (int f = 0; f < m; ++f) {
-        const Vec3 nf = normal_of(f);
+        const Vec3& nf = normals[static_cast<size_t>(f)];
         for (int k = 0; k < 3; ++k) {
           const int g = mesh.face_neighbor(f, k);
           if (g < 0) {
@@ -151,7 +147,7 @@ class NormalCycleEstimator final : public OperatorEstimator {
             continue;
           }
           if (g < f) continue;
-          const double b = dihedral(mesh, f, k, nf, normal_of(g));
+          const double b = dihedral(mesh, f, k, nf, normals[static_cast<size_t>(g)]);
           beta[3 * static_cast<size_t>(f) + k] = b;
           // g's copy of the edge (its end points, either way round; it exists since g is f's
           // neighbour across it).

@@ -1,9 +1,8 @@
 // k-ring and half-ring neighbourhoods against the paper's Table 2 and docs/algorithms.md §1.1.
 #include <gtest/gtest.h>
 
-#include <cmath>
-
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <vector>
 
