@@ -239,6 +239,7 @@ void register_all() {
 int main(int argc, char** argv) {
   using namespace curvbench;
   using namespace curvbench::bench;
+  keep_freed_memory();
   const std::string rows_file = take_flag(argc, argv, "table5_rows");
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;

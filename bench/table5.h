@@ -1,6 +1,6 @@
 // Shared helpers of the benchmark suites (bench_estimators, bench_solvers) for the paper's
 // Table 5 (§5.4): timing samples recorded by the benchmark bodies, the rows of
-// results/table5_timing.csv and atomic file writes.
+// results/table5_timing.csv, atomic file writes and the process's memory policy.
 //
 // CSV columns: mesh,level,verts,tris,method,degree,threads,seconds,tris_per_second
 //   seconds          median over every timed whole-mesh pass (all iterations of all repetitions)
@@ -8,6 +8,7 @@
 // Header-only: each bench/*.cpp is its own executable.
 #pragma once
 
+#include <malloc.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -26,6 +27,19 @@
 #include "harness/results_table.h"
 
 namespace curvbench::bench {
+
+/// Keeps the memory freed by one pass in the process for the next (glibc: no mmap for large
+/// blocks, no trimming of the heap), so that every pass after the first reuses memory that is
+/// already mapped. Called first thing in main(). Without it a pass paid for page faults that
+/// depended on which benchmark ran before it: on the project's virtual machine, after CGAL's
+/// LSCM had run, LHF-2 passes at 1.44 million vertices took 0.56-0.85 s instead of 0.36 s at
+/// random (memory given back to the kernel is faulted in again through the hypervisor), which
+/// random interleaving spread over the medians. The first pass of a run (and the end-to-end
+/// row, a separate process) still pays for its first touches; the median does not see them.
+inline void keep_freed_memory() {
+  mallopt(M_MMAP_MAX, 0);
+  mallopt(M_TRIM_THRESHOLD, -1);  // no trimming (the largest value)
+}
 
 /// The settings every per-level sweep shares: mesh levels 1..levels as the argument, wall time,
 /// 9 repetitions (the median resists the bursts of load of a shared machine) of at least 0.1 s,
