@@ -2,6 +2,11 @@
 // weights, the weighted Vandermonde system of eq. (13), 2-norm column scaling (eq. 14), the
 // Householder QR of the safeguarded solver (safeguarded_qr.h, steps 2, 3 and 5), back
 // substitution and the Taylor derivatives of polynomial_fit.h, for kBatchLanes systems at once.
+// Two rearrangements that change only rounding: the column scaling is folded into the
+// safeguard's test and the back substitution instead of being applied to the matrix (a
+// Householder reflector is the same for a scaled column), and the reflectors are applied to the
+// columns right of each panel of four as one block reflector (each column is written once per
+// four reflectors: the unblocked update was bound by its stores).
 //
 // Layout (structure of arrays): value of row i of lane l at [i * kBatchLanes + l]; right-hand
 // side c of row i at f[(c * kMaxRows + i) * kBatchLanes + l]. Rows rows[l] .. max_rows - 1 of a
