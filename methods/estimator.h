@@ -127,8 +127,9 @@ enum class NeighbourhoodUse : std::uint8_t {
   neighbours_and_faces,  ///< also faces() (e.g. a ring parameterization such as LSCM)
 };
 
-/// Per-thread scratch space; each method derives its own.
-class Workspace {
+/// Per-thread scratch space; each method derives its own. Aligned to a cache line, so that two
+/// threads' workspaces never share one.
+class alignas(64) Workspace {
  public:
   virtual ~Workspace() = default;
 };
