@@ -95,11 +95,58 @@ void BatchedLocalFrames(const double* normals, BatchedFrames& out) {
   }
 }
 
+// The lanes o, o + 1, ... of `out`.
+HWY_INLINE void store_curvature(D d, const V3& normal, V k1, V k2, V H, V K, const V3& d1,
+                                const V3& d2, M regular, BatchedCurvature& out, int o) {
+  store3(d, normal, out.normal.data() + o);
+  store3(d, d1, out.d1.data() + o);
+  store3(d, d2, out.d2.data() + o);
+  hn::StoreU(k1, d, out.k1.data() + o);
+  hn::StoreU(k2, d, out.k2.data() + o);
+  hn::StoreU(H, d, out.H.data() + o);
+  hn::StoreU(K, d, out.K.data() + o);
+  store_mask(d, regular, out.regular.data() + o);
+}
+
+// principal_from_symmetric(w11, w12, w22, q1, q2): eq. (7) for k1 >= k2, eq. (8) for d1, d2;
+// lanes at the scalar function's special cases (exact umbilic, norms outside norm2d's plain
+// range, non-finite directions) are cleared from `regular`.
+HWY_INLINE void principal_lanes(D d, V w11, V w12, V w22, const V3& q1, const V3& q2, M& regular,
+                                V& k1, V& k2, V3& d1, V3& d2) {
+  const V zero = hn::Zero(d), two = hn::Set(d, 2.0), half = hn::Set(d, 0.5);
+  const V mean = hn::Mul(half, hn::Add(w11, w22));
+  const V disc = hn::Mul(half, norm2d_regular(d, hn::Sub(w11, w22), hn::Mul(two, w12), regular));
+  k1 = hn::Add(mean, disc);
+  k2 = hn::Sub(mean, disc);
+  regular = hn::And(regular, hn::Ne(k1, k2));  // the exact umbilic is the scalar's case
+  // Eq. (8), eigen_direction(w11, w12, ki, kj): (w11 - kj, w12) if |w11 - kj| > |w11 - ki|,
+  // else (w12, -(w11 - ki)).
+  const V r1 = hn::Sub(w11, k1), r2 = hn::Sub(w11, k2);
+  const M first1 = hn::Gt(hn::Abs(r2), hn::Abs(r1));
+  const M first2 = hn::Gt(hn::Abs(r1), hn::Abs(r2));
+  V a1x = hn::IfThenElse(first1, r2, w12), a1y = hn::IfThenElse(first1, w12, hn::Neg(r1));
+  V a2x = hn::IfThenElse(first2, r1, w12), a2y = hn::IfThenElse(first2, w12, hn::Neg(r2));
+  const V n1 = hn::Sqrt(hn::Add(hn::Mul(a1x, a1x), hn::Mul(a1y, a1y)));
+  const V n2 = hn::Sqrt(hn::Add(hn::Mul(a2x, a2x), hn::Mul(a2y, a2y)));
+  regular = hn::And(regular, hn::And(hn::And(hn::Gt(n1, zero), hn::IsFinite(n1)),
+                                     hn::And(hn::Gt(n2, zero), hn::IsFinite(n2))));
+  a1x = hn::Div(a1x, n1);
+  a1y = hn::Div(a1y, n1);
+  a2x = hn::Div(a2x, n2);
+  a2y = hn::Div(a2y, n2);
+  // Right-handed: a2 = -a2 if det[a1 a2] < 0.
+  const M flip = hn::Lt(hn::Sub(hn::Mul(a1x, a2y), hn::Mul(a1y, a2x)), zero);
+  a2x = hn::IfThenElse(flip, hn::Neg(a2x), a2x);
+  a2y = hn::IfThenElse(flip, hn::Neg(a2y), a2y);
+  d1 = add3(scale3(a1x, q1), scale3(a1y, q2));
+  d2 = add3(scale3(a2x, q1), scale3(a2y, q2));
+}
+
 void BatchedCurvatureFromHeight(const BatchedFrames& frames, const double* taylor, int stride,
                                 BatchedCurvature& out) {
   const D d;
   const int N = static_cast<int>(hn::Lanes(d));
-  const V zero = hn::Zero(d), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0), half = hn::Set(d, 0.5);
+  const V one = hn::Set(d, 1.0), two = hn::Set(d, 2.0);
   for (int o = 0; o < L; o += N) {
     const V3 t1 = load3(d, frames.t1.data() + o), t2 = load3(d, frames.t2.data() + o),
              m = load3(d, frames.m.data() + o);
@@ -138,38 +185,31 @@ void BatchedCurvatureFromHeight(const BatchedFrames& frames, const double* taylo
     const V w11 = hn::Div(hn::Add(hn::Mul(cs, hc_u), hn::Mul(sn, hc_v)), hn::Mul(ell2, ell));
     const V w12 = hn::Div(hn::Add(hn::Mul(nsn, hc_u), hn::Mul(cs, hc_v)), ell2);
     const V w22 = hn::Div(hn::Add(hn::Mul(nsn, hp_u), hn::Mul(cs, hp_v)), ell);
-    // principal_from_symmetric: eq. (7)
-    const V mean = hn::Mul(half, hn::Add(w11, w22));
-    const V disc = hn::Mul(half, norm2d_regular(d, hn::Sub(w11, w22), hn::Mul(two, w12), regular));
-    const V k1 = hn::Add(mean, disc), k2 = hn::Sub(mean, disc);
-    regular = hn::And(regular, hn::Ne(k1, k2));  // the exact umbilic is the scalar's case
-    // Eq. (8), eigen_direction(w11, w12, ki, kj): (w11 - kj, w12) if |w11 - kj| > |w11 - ki|,
-    // else (w12, -(w11 - ki)).
-    const V r1 = hn::Sub(w11, k1), r2 = hn::Sub(w11, k2);
-    const M first1 = hn::Gt(hn::Abs(r2), hn::Abs(r1));
-    const M first2 = hn::Gt(hn::Abs(r1), hn::Abs(r2));
-    V a1x = hn::IfThenElse(first1, r2, w12), a1y = hn::IfThenElse(first1, w12, hn::Neg(r1));
-    V a2x = hn::IfThenElse(first2, r1, w12), a2y = hn::IfThenElse(first2, w12, hn::Neg(r2));
-    const V n1 = hn::Sqrt(hn::Add(hn::Mul(a1x, a1x), hn::Mul(a1y, a1y)));
-    const V n2 = hn::Sqrt(hn::Add(hn::Mul(a2x, a2x), hn::Mul(a2y, a2y)));
-    regular = hn::And(regular, hn::And(hn::And(hn::Gt(n1, zero), hn::IsFinite(n1)),
-                                       hn::And(hn::Gt(n2, zero), hn::IsFinite(n2))));
-    a1x = hn::Div(a1x, n1);
-    a1y = hn::Div(a1y, n1);
-    a2x = hn::Div(a2x, n2);
-    a2y = hn::Div(a2y, n2);
-    // Right-handed: a2 = -a2 if det[a1 a2] < 0.
-    const M flip = hn::Lt(hn::Sub(hn::Mul(a1x, a2y), hn::Mul(a1y, a2x)), zero);
-    a2x = hn::IfThenElse(flip, hn::Neg(a2x), a2x);
-    a2y = hn::IfThenElse(flip, hn::Neg(a2y), a2y);
-    store3(d, normal, out.normal.data() + o);
-    store3(d, add3(scale3(a1x, q1), scale3(a1y, q2)), out.d1.data() + o);
-    store3(d, add3(scale3(a2x, q1), scale3(a2y, q2)), out.d2.data() + o);
-    hn::StoreU(k1, d, out.k1.data() + o);
-    hn::StoreU(k2, d, out.k2.data() + o);
-    hn::StoreU(H, d, out.H.data() + o);
-    hn::StoreU(K, d, out.K.data() + o);
-    store_mask(d, regular, out.regular.data() + o);
+    V k1, k2;
+    V3 d1, d2;
+    principal_lanes(d, w11, w12, w22, q1, q2, regular, k1, k2, d1, d2);
+    store_curvature(d, normal, k1, k2, H, K, d1, d2, regular, out, o);
+  }
+}
+
+void BatchedCurvatureFromTangentTensor(const BatchedFrames& frames, const double* w11,
+                                       const double* w12, const double* w22,
+                                       BatchedCurvature& out) {
+  const D d;
+  const int N = static_cast<int>(hn::Lanes(d));
+  const V half = hn::Set(d, 0.5);
+  for (int o = 0; o < L; o += N) {
+    const V3 t1 = load3(d, frames.t1.data() + o), t2 = load3(d, frames.t2.data() + o),
+             m = load3(d, frames.m.data() + o);
+    const V a = hn::LoadU(d, w11 + o), b = hn::LoadU(d, w12 + o), c = hn::LoadU(d, w22 + o);
+    M regular = hn::And(hn::And(finite3(t1), finite3(t2)), finite3(m));
+    regular = hn::And(regular, hn::And(hn::And(hn::IsFinite(a), hn::IsFinite(b)), hn::IsFinite(c)));
+    V k1, k2;
+    V3 d1, d2;
+    principal_lanes(d, a, b, c, t1, t2, regular, k1, k2, d1, d2);
+    // curvature_from_tangent_tensor: normal m, H = (k1 + k2) / 2, K = k1 k2
+    store_curvature(d, m, k1, k2, hn::Mul(half, hn::Add(k1, k2)), hn::Mul(k1, k2), d1, d2, regular,
+                    out, o);
   }
 }
 
@@ -184,6 +224,7 @@ namespace curvbench {
 
 HWY_EXPORT(BatchedLocalFrames);
 HWY_EXPORT(BatchedCurvatureFromHeight);
+HWY_EXPORT(BatchedCurvatureFromTangentTensor);
 
 namespace {
 Vec3 lane3(const std::array<double, 3 * kBatchLanes>& a, int l) {
@@ -220,6 +261,12 @@ void batched_local_frames(const double* normals, BatchedFrames& out) {
 void batched_curvature_from_height(const BatchedFrames& frames, const double* taylor, int stride,
                                    BatchedCurvature& out) {
   HWY_DYNAMIC_DISPATCH(BatchedCurvatureFromHeight)(frames, taylor, stride, out);
+}
+
+void batched_curvature_from_tangent_tensor(const BatchedFrames& frames, const double* w11,
+                                           const double* w12, const double* w22,
+                                           BatchedCurvature& out) {
+  HWY_DYNAMIC_DISPATCH(BatchedCurvatureFromTangentTensor)(frames, w11, w12, w22, out);
 }
 
 }  // namespace curvbench

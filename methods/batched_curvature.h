@@ -1,7 +1,8 @@
 // The per-vertex formulas around a batched fit (methods/batched_fit.h), one vertex per SIMD lane
 // (issue 13 item 1): the local frame of make_local_frame() (local_frame.h, docs/algorithms.md §3)
 // before the fit, and the height-function curvature of curvature_from_height()
-// (core/shape_operator.h: Table 1 and eqs. (7)-(8) of the paper) after it.
+// (core/shape_operator.h: Table 1 and eqs. (7)-(8) of the paper) after it; and the curvature of
+// a tangent-plane tensor, curvature_from_tangent_tensor() (eqs. (7)-(8)).
 //
 // They are lane-wise twins of those scalar functions, written with the same operations in the
 // same order (no fused multiply-adds), so a lane's result has the same bits as the scalar call
@@ -48,5 +49,12 @@ struct BatchedCurvature {
 /// (e = 0..4; the layout of BatchedSystems::taylor with stride kMaxRhs * kBatchLanes).
 void batched_curvature_from_height(const BatchedFrames& frames, const double* taylor, int stride,
                                    BatchedCurvature& out);
+
+/// curvature_from_tangent_tensor(m, w11, w12, w22, t1, t2) of each lane, with the frames
+/// (t1, t2, m) of `frames` and the tensor entries w11[l], w12[l], w22[l] (the operator methods'
+/// route, e.g. goldfeather).
+void batched_curvature_from_tangent_tensor(const BatchedFrames& frames, const double* w11,
+                                           const double* w12, const double* w22,
+                                           BatchedCurvature& out);
 
 }  // namespace curvbench

@@ -4,10 +4,14 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <vector>
 
 #include "core/errors.h"
+#include "meshgen/generate.h"
 #include "method_test_util.h"
 #include "methods/estimator.h"
+#include "methods/vertex_normals.h"
 #include "operator_test_util.h"
 
 namespace curvbench {
@@ -134,6 +138,53 @@ TEST(Goldfeather, BoundaryVerticesComputed) {
     EXPECT_TRUE(std::isfinite(q.H) && q.d1.allFinite());
   }
   expect_thread_independent("goldfeather", {}, m);
+}
+
+// Vertex by vertex through estimate(), the scalar path.
+std::vector<VertexEstimate> one_by_one(const Mesh& mesh, const Estimator& est) {
+  const VertexMatrix approx = est.uses_approx_normals()
+                                  ? weighted_vertex_normals(mesh, VertexNormals::area, 1)
+                                  : VertexMatrix();
+  const auto data = est.prepare(mesh, approx, 1);
+  const auto ws = est.make_workspace(mesh);
+  const MeshContext ctx{mesh, approx, data.get()};
+  std::vector<VertexEstimate> out(static_cast<size_t>(mesh.num_vertices()));
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    est.estimate(ctx, v, *ws, out[static_cast<size_t>(v)]);
+  return out;
+}
+
+// estimate_mesh() takes the lane-wise path (estimate_batch: frames, sums, normal equations,
+// LDL^T and the tensor's curvature lane-wise); it must give the scalar path's bits on meshes
+// with irregular valences and a boundary, and where lanes leave the batch: the quadratic
+// fallback and its failure, a crease, a vertex with more neighbours than a lane holds (40).
+TEST(Goldfeather, BatchedPathHasTheScalarBits) {
+  std::vector<Mesh> meshes;
+  meshes.push_back(generate_mesh({"bump-irregular", 1, 0, 1, false}).mesh);
+  meshes.push_back(generate_mesh({"torus-unstructured", 1, 0, 1, false}).mesh);
+  meshes.push_back(icosphere(3, 2.0));
+  meshes.push_back(folded_fan(6, 0.1, 0.5, -0.25));
+  meshes.push_back(folded_fan(4, 0.1, 0.5, -0.25));
+  meshes.push_back(
+      flapped_fan(6, 0.1, 0.5, -0.25, [](const Vec3& r) { return Vec3::UnitZ() - 1e-9 * r; }));
+  meshes.push_back(
+      fan(40, 0.1, Vec3(0, 0, 0.02), [](double x, double y) { return x * x - y * y; }));
+  const auto est = make_estimator("goldfeather", {});
+  std::map<VertexStatus, int> statuses;
+  for (const Mesh& mesh : meshes) {
+    const auto batched = estimate_mesh(mesh, *est);
+    const auto scalar = one_by_one(mesh, *est);
+    int diff = 0;
+    for (size_t v = 0; v < scalar.size(); ++v) {
+      diff += bitwise_equal(batched[v], scalar[v]) ? 0 : 1;
+      ++statuses[scalar[v].status];
+    }
+    EXPECT_EQ(diff, 0) << mesh.num_vertices() << " vertices";
+  }
+  // The meshes exercise every path: ok, the quadratic fallback, its failure.
+  EXPECT_GT(statuses[VertexStatus::ok], 0);
+  EXPECT_GT(statuses[VertexStatus::degree_reduced], 0);
+  EXPECT_GT(statuses[VertexStatus::failed], 0);
 }
 
 }  // namespace
