@@ -56,7 +56,7 @@ struct BatchedSystems {
   /// Taylor derivative t (TaylorRow) of right-hand side c of lane l at [(t * kMaxRhs + c) *
   /// kBatchLanes + l]; as FitResult::taylor.
   std::array<double, 6 * kMaxRhs * kBatchLanes> taylor{};
-  // ---- scratch: the weighted, scaled matrix [A B], column-major per lane ----
+  // ---- scratch: the weighted matrix [A B] (not column-scaled), column-major per lane ----
   std::array<double, (kBatchCols + kMaxRhs) * kMaxRows * kBatchLanes> work{};
 };
 

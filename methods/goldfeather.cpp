@@ -42,7 +42,6 @@
 // (tests/methods/test_goldfeather.cpp); 1.2x LHF-2's throughput on the level-4 torus instead of
 // 0.7x.
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -71,12 +70,6 @@ constexpr double kMinNormalCosine = 0.5;
 /// last model, only needs to be numerically nonsingular (|R_ii| >= 1e-6 max |R_jj|).
 constexpr double kCubicTolerance2 = 1e-6;
 constexpr double kQuadraticTolerance2 = 1e-12;
-
-constexpr int kMonomials = kGoldfeatherMonomials;  // x^a y^b, a + b <= 6 (goldfeather_batch.h)
-
-using goldfeather::Entry;
-using goldfeather::kMatrixEntries;
-using goldfeather::kRhsEntries;
 
 struct GoldfeatherWorkspace final : Workspace {
   explicit GoldfeatherWorkspace(const Mesh& mesh) : rings(mesh) { local.reserve(32); }
@@ -263,8 +256,8 @@ class GoldfeatherEstimator final : public OperatorEstimator {
         for (int c = 0; c < 3; ++c) normals[c * L + l] = n(c);
       }
       batched_local_frames(normals, frames);
-      int points[L] = {};  // 0: the lane goes through estimate()
-      double scale[L] = {};
+      int points[L] = {};     // 0: the lane goes through estimate()
+      batch.scale.fill(1.0);  // an unused lane's scale
       batch.slots = 0;
       for (int l = 0; l < lanes; ++l) {
         const int v = first + b + l;
@@ -288,7 +281,6 @@ class GoldfeatherEstimator final : public OperatorEstimator {
           batch.zy[at] = t.zy;
         }
         points[l] = n;
-        scale[l] = s;
         batch.scale[static_cast<size_t>(l)] = s;
         batch.slots = std::max(batch.slots, n);
       }
@@ -299,8 +291,6 @@ class GoldfeatherEstimator final : public OperatorEstimator {
           batch.x[at] = batch.y[at] = batch.z[at] = batch.use[at] = batch.zx[at] = batch.zy[at] =
               0.0;
         }
-      for (int l = 0; l < L; ++l)
-        if (points[l] == 0) batch.scale[static_cast<size_t>(l)] = 1.0;
       goldfeather_fit_lanes(batch);
       // The cubic's tensor, or the quadratic fallback per vertex.
       alignas(64) double w11[L] = {}, w12[L] = {}, w22[L] = {};
@@ -321,7 +311,7 @@ class GoldfeatherEstimator final : public OperatorEstimator {
             atb[r] = batch.atb[static_cast<size_t>(r * L + l)];
           }
           status[l] = VertexStatus::degree_reduced;
-          solved[l] = solve_quadratic(ata, atb, scale[l], w);
+          solved[l] = solve_quadratic(ata, atb, batch.scale[static_cast<size_t>(l)], w);
         }
         w11[l] = w[0];
         w12[l] = w[1];
