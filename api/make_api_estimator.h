@@ -9,10 +9,9 @@
 
 namespace curvbench {
 
-/// make_estimator(options.method, ...) with degree, rings, noisy, threads and the options of
-/// single methods (vertex_normals, quadric_constant, ball_factor); throws UsageError
-/// for an unknown method, an unsupported degree, or a degree that differs from the one attached
-/// to the method name ("method LHF-4 names degree 4 but degree is 2").
+/// make_estimator(options.method, options); throws UsageError as make_estimator does, and for a
+/// degree that differs from the one attached to the method name ("method LHF-4 names degree 4
+/// but degree is 2").
 std::unique_ptr<Estimator> make_api_estimator(const EstimateOptions& options);
 
 }  // namespace curvbench

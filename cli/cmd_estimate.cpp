@@ -1,6 +1,7 @@
-// `curvbench estimate MESH --method M --degree D [--rings R] [--threads N] [--noisy] [--timing]
-//  [--skip-invalid] [--vertex-normals W] [--quadric-constant] [--ball-factor C]
-//  --output OUT.csv|OUT.ply`: per-vertex normals and curvatures of one estimator.
+// `curvbench estimate MESH --method M [estimator options] [--timing] [--skip-invalid]
+//  [--color Q] [--block N] --output OUT.csv|OUT.ply`: per-vertex normals and curvatures of one
+// estimator. The estimator options (--degree, --rings, --threads, --noisy, --vertex-normals, ...)
+// are the flags of the option table (methods/option_schema.h, add_estimator_option_flags).
 //
 // CSV: a header, then one row per vertex; PLY: the mesh with per-vertex properties; both from
 // the column table of harness/estimate_columns.h, written block by block as the estimates come
@@ -27,6 +28,7 @@
 #include <unistd.h>
 
 #include "cli/commands.h"
+#include "cli/estimator_flags.h"
 #include "core/errors.h"
 #include "core/text.h"
 #include "harness/estimate_columns.h"
@@ -34,7 +36,6 @@
 #include "mesh/io.h"
 #include "methods/estimate_oriented.h"
 #include "methods/estimator.h"
-#include "methods/vertex_normals.h"
 
 namespace curvbench::cli {
 
@@ -43,19 +44,11 @@ namespace {
 struct EstimateOptions {
   std::string mesh;
   std::string method;
-  int degree = 2;
-  double rings = 0.0;
-  int threads = 0;
-  bool noisy = false;
-  std::string kernel = "batched";  // --kernel: batched or scalar (EstimatorOptions::kernel)
+  EstimatorOptionFlags estimator;  // --degree, --rings, ... (the option table)
   bool timing = false;
   bool skip_invalid = false;
   std::string color;  // "", H, K, k1 or k2: PLY per-vertex RGB (mesh/colormap.h)
   std::string output;
-  // Options of single methods (EstimatorOptions).
-  std::string vertex_normals = "default";
-  bool quadric_constant = false;
-  double ball_factor = 0.0;
   int block = kEstimateBlock;  // vertices estimated and written at a time
 };
 
@@ -75,26 +68,18 @@ VertexColors color_of(const std::string& quantity, std::span<const VertexEstimat
   return c;
 }
 
-int run_estimate(const EstimateOptions& o, bool degree_given) {
+int run_estimate(const EstimateOptions& o) {
   const std::string ext = lower_extension(o.output);
   if (ext != "csv" && ext != "ply")
     throw UsageError("--output " + o.output + ": extension must be .csv or .ply");
   if (!o.color.empty() && ext != "ply") throw UsageError("--color needs a .ply --output");
   if (o.block < 1) throw UsageError("--block must be at least 1");
-  EstimatorOptions eo;
-  eo.degree = degree_given ? o.degree : 0;  // 0: the method's default (none if degree-free)
-  eo.ring = o.rings;
-  eo.threads = o.threads;
-  eo.noisy = o.noisy;
-  eo.kernel = o.kernel == "scalar" ? Kernel::scalar : Kernel::batched;
-  eo.vertex_normals = parse_vertex_normals(o.vertex_normals);
-  eo.quadric_constant = o.quadric_constant;
-  eo.ball_factor = o.ball_factor;
+  const EstimatorOptions eo = o.estimator.options();
   std::unique_ptr<Estimator> est = make_estimator(o.method, eo);
-  if (degree_given && est->options().degree != o.degree)
+  if (eo.degree != 0 && est->options().degree != eo.degree)
     throw UsageError("--method " + o.method + " names degree " +
                      std::to_string(est->options().degree) + " but --degree is " +
-                     std::to_string(o.degree));
+                     std::to_string(eo.degree));
 
   using Clock = std::chrono::steady_clock;
   const auto since = [](Clock::time_point t) {
@@ -118,7 +103,7 @@ int run_estimate(const EstimateOptions& o, bool degree_given) {
   VertexColors colors;  // --color: over every vertex (one block)
   const auto t_open = Clock::now();
   if (ext == "csv")
-    csv = std::make_unique<EstimateCsvWriter>(o.output, report.source_vertex, o.threads);
+    csv = std::make_unique<EstimateCsvWriter>(o.output, report.source_vertex, eo.threads);
   double open_seconds = since(t_open);
   const EstimateSink sink = [&](const Mesh& mesh, int first, std::span<const VertexEstimate> out) {
     if (csv) {
@@ -204,18 +189,7 @@ Command add_estimate_command(CLI::App& app) {
   sub->add_option("--method", o->method,
                   "Method: " + names + " (case-insensitive; the degree may be attached, LHF-2)")
       ->required();
-  auto* degree = sub->add_option(
-      "--degree", o->degree, "Fitting degree of a fit (default 2); degree-free methods take none");
-  sub->add_option(
-      "--rings", o->rings,
-      "Ring size 1, 1.5, 2, ... (default: method default, (d+1)/2; Xu 1; quadric 5, integers)");
-  sub->add_option("--threads", o->threads, "OpenMP threads (default: all)");
-  sub->add_flag("--noisy", o->noisy, "Noisy input: default ring + 0.5 (paper §5.3)");
-  sub->add_option("--kernel", o->kernel,
-                  "Fitting kernel of LHF/LOP degree 1-4: batched (default: several vertices per "
-                  "SIMD instruction) or scalar (one vertex at a time, the reference); same "
-                  "results up to rounding")
-      ->check(CLI::IsMember({"batched", "scalar"}));
+  o->estimator.add_to(*sub);
   sub->add_flag(
       "--timing", o->timing,
       "Print per-stage wall times (read, orientation, neighbourhoods+fit, write) to stderr");
@@ -227,20 +201,11 @@ Command add_estimate_command(CLI::App& app) {
                   "PLY only: per-vertex red/green/blue of H, K, k1 or k2 (diverging map, symmetric "
                   "range: 98th percentile of |value|)")
       ->check(CLI::IsMember({"H", "K", "k1", "k2"}));
-  sub->add_option("--vertex-normals", o->vertex_normals,
-                  "Discrete operators only: vertex normal weighting area, angle or max (default: "
-                  "the method's own; meyer, taubin, quadric, normal-cycle area; rusinkiewicz, "
-                  "goldfeather max)");
-  sub->add_flag("--quadric-constant", o->quadric_constant,
-                "quadric only: fit 6 coefficients (a constant term) instead of libigl's 5");
-  sub->add_option("--ball-factor", o->ball_factor,
-                  "normal-cycle only: the ball of radius C times the mean edge length instead of "
-                  "the 1-ring (default 0 = the 1-ring)");
   sub->add_option("--output", o->output, "Output file (.csv or .ply)")->required();
   sub->add_option("--block", o->block,
                   "Vertices estimated and written at a time (default 65536; memory vs. overhead; "
                   "the output is the same for any value)");
-  return [o, degree]() { return run_estimate(*o, degree->count() > 0); };
+  return [o]() { return run_estimate(*o); };
 }
 
 }  // namespace curvbench::cli

@@ -10,6 +10,7 @@ install(TARGETS curvbench_shared EXPORT curvbenchTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(FILES ${CURVBENCH_STATIC_ARCHIVE} DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(FILES ${PROJECT_SOURCE_DIR}/include/curvbench/curvbench.h
+              ${PROJECT_SOURCE_DIR}/include/curvbench/estimator_options.h
               ${PROJECT_SOURCE_DIR}/include/curvbench/errors.h
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/curvbench)
 install(EXPORT curvbenchTargets NAMESPACE curvbench:: DESTINATION ${CURVBENCH_CMAKE_DIR})

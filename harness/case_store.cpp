@@ -14,7 +14,7 @@
 #include "harness/external_estimator.h"
 #include "harness/results_table.h"
 #include "mesh/io.h"
-#include "methods/vertex_normals.h"
+#include "methods/option_schema.h"
 
 namespace curvbench {
 
@@ -70,26 +70,16 @@ std::string external_inputs(const ExperimentMethod& m) {
   return s;
 }
 
-// The options of single methods, only where set (so that the inputs of every other case, and
-// the cases already stored, stay as they were).
-std::string single_method_inputs(const ExperimentMethod& m) {
-  std::string s;
-  if (m.vertex_normals != VertexNormals::method_default)
-    s += std::string(";vertex-normals=") + to_string(m.vertex_normals);
-  if (m.quadric_constant) s += ";quadric-constant=yes";
-  if (m.ball_factor != 0.0) s += ";ball-factor=" + format_double(m.ball_factor);
-  return s;
-}
-
-// The method's part of case_inputs: its spec, label and every estimator option it sets.
+// The method's part of case_inputs: its spec, label, vertex set and every estimator option it
+// sets away from the default (so that a new option leaves the keys of stored cases as they were).
 std::string method_inputs(const ExperimentMethod& m) {
-  return "method=" + escaped(m.spec) + ";label=" + escaped(m.label) +
-         ";ring=" + format_double(m.ring) + ";method-vertex-set=" +
-         std::string(m.has_vertex_set ? to_string(m.vertex_set) : "default") +
-         ";centre=" + yes_no(m.include_centre) + ";qr-tol=" + format_double(m.qr_tolerance) +
-         ";safeguard=" + yes_no(m.normal_safeguard) + ";adaptive=" + yes_no(m.adaptive) +
-         ";weight-power=" + format_double(m.weight_power) + single_method_inputs(m) +
-         (m.is_external() ? external_inputs(m) : std::string());
+  std::string s = "method=" + escaped(m.spec) + ";label=" + escaped(m.label) +
+                  ";method-vertex-set=" +
+                  std::string(m.has_vertex_set ? to_string(m.vertex_set) : "default");
+  for (const OptionInfo& option : estimator_option_schema())
+    if (option.role == OptionRole::result && !option_is_default(m.options, option))
+      s += ";" + option.name + "=" + option_text(m.options, option);
+  return s + (m.is_external() ? external_inputs(m) : std::string());
 }
 
 std::string first_line(std::uint64_t inputs, std::uint64_t content) {

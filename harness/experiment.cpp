@@ -7,7 +7,7 @@
 
 #include "core/errors.h"
 #include "core/text.h"
-#include "methods/vertex_normals.h"
+#include "methods/option_schema.h"
 
 namespace curvbench {
 
@@ -125,53 +125,31 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
         for (size_t i = 2; i < w.size(); ++i) {
           std::string k, v;
           if (!split_option(w[i], k, v)) throw InputError(where + ": expected key=value");
-          if (k == "ring")
-            m.ring = parse_double(v, where);
-          else if (k == "label") {
+          if (k == "label") {
             if (v.empty() || v.find(',') != std::string::npos)
               throw InputError(where + ": a label must be non-empty and contain no comma");
             m.label = v;
-          } else if (k == "centre")
-            m.include_centre = to_bool(v, where);
-          else if (k == "qr-tol")
-            m.qr_tolerance = parse_double(v, where);
-          else if (k == "safeguard")
-            m.normal_safeguard = to_bool(v, where);
-          else if (k == "adaptive")
-            m.adaptive = to_bool(v, where);
-          else if (k == "weight-power")
-            m.weight_power = parse_double(v, where);
-          else if (k == "vertex-normals")
-            m.vertex_normals = parse_vertex_normals(v);
-          else if (k == "quadric-constant")
-            m.quadric_constant = to_bool(v, where);
-          else if (k == "ball-factor")
-            m.ball_factor = parse_double(v, where);
-          else if (k == "vertex-set") {
+          } else if (k == "vertex-set") {
             m.vertex_set = parse_vertex_set(v);
             m.has_vertex_set = true;
           } else if (m.is_external() && k == "name") {
             if (v.empty() || v.find(',') != std::string::npos)
               throw InputError(where + ": a name must be non-empty and contain no comma");
             m.label = v;
-          } else if (m.is_external() && k == "command")
+          } else if (m.is_external() && k == "command") {
             m.command = v;
-          else if (m.is_external() && k == "timeout") {
+          } else if (m.is_external() && k == "timeout") {
             m.timeout_seconds = parse_double(v, where);
             if (!(m.timeout_seconds > 0))
               throw InputError(where + ": timeout must be a positive number of seconds");
-          } else
-            throw InputError(where + ": unknown method option '" + k + "'");
-        }
-        if (!m.is_external() && (m.vertex_normals != VertexNormals::method_default ||
-                                 m.quadric_constant || m.ball_factor != 0.0)) {
-          // A method-specific option on a method that does not use it, or a bad value (e.g. a
-          // negative ball factor), is reported here, with the line (make_estimator checks both).
-          EstimatorOptions o;
-          o.vertex_normals = m.vertex_normals;
-          o.quadric_constant = m.quadric_constant;
-          o.ball_factor = m.ball_factor;
-          make_estimator(m.spec, o);
+          } else if (!m.is_external()) {
+            if (option_info(k).role != OptionRole::result)
+              throw InputError(where + ": '" + k +
+                               "' is not an experiment option (it does not change the results)");
+            set_option(m.options, k, v);
+          } else {
+            throw InputError(where + ": unknown option '" + k + "' of method external");
+          }
         }
         if (m.is_external()) {
           if (m.label.empty()) throw InputError(where + ": method external needs name=NAME");
@@ -180,8 +158,21 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
             throw InputError(where +
                              ": method external needs command=\"... {mesh} ... {out}\" (the "
                              "input mesh and the estimate CSV it writes)");
+          e.methods.push_back(m);
+        } else if (m.spec == kAllOperators) {
+          if (!m.label.empty())
+            throw InputError(where + ": method " + kAllOperators + " takes no label");
+          for (const MethodInfo& info : method_table()) {
+            if (info.is_fit()) continue;
+            ExperimentMethod one = m;
+            one.spec = info.name;
+            make_estimator(one.spec, one.options);  // the options suit every operator
+            e.methods.push_back(one);
+          }
+        } else {
+          make_estimator(m.spec, m.options);  // a bad name, degree or option, with the line
+          e.methods.push_back(m);
         }
-        e.methods.push_back(m);
       } else if (key == "panel") {
         need(5);
         e.panels.push_back({w[1], w[2], parse_quantity(w[3]), parse_norm(w[4])});

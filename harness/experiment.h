@@ -9,11 +9,12 @@
 //   noise       order=3 seed=11                 optional controlled noise (docs/algorithms.md
 //   §10.3) noisy       yes                             input is noisy: default rings +0.5 (paper
 //   §5.3) vertex-set  all                             all | interior | boundary-ring (default all)
-//   method      lhf-2 [ring=2.5] [vertex-set=interior]   one line per method and degree
-//               ablation options: centre=yes|no qr-tol=X safeguard=yes|no adaptive=yes|no
-//               weight-power=X, and label="LHF-2 interp" to tell variants apart
-//               options of single methods: vertex-normals=area|angle|max (discrete
-//               operators), quadric-constant=yes|no (quadric), ball-factor=C (normal-cycle)
+//   method      lhf-2 [rings=2.5] [vertex-set=interior]  one line per method and degree
+//               any estimator option of role "result" as name=value (rings, centre=no,
+//               qr-tol=1e-8, vertex-normals=max, ball-factor=2, ...: the table of
+//               include/curvbench/estimator_options.h), and label="LHF-2 interp" to tell
+//               variants apart
+//   method      all-operators [options]   every registered degree-free operator, one line each
 //               external name=N command="prog {mesh} {out}" [timeout=SECONDS]: an outside
 //               estimator (external_estimator.h), labelled N, limited to SECONDS per case
 //               (default 600)
@@ -33,6 +34,9 @@
 
 namespace curvbench {
 
+/// The method line that stands for every registered degree-free operator.
+inline constexpr const char* kAllOperators = "all-operators";
+
 struct ExperimentMesh {
   std::string family;
   std::vector<int> levels;
@@ -41,18 +45,11 @@ struct ExperimentMesh {
 struct ExperimentMethod {
   std::string spec;   ///< e.g. "lhf-2" (accepted by make_estimator)
   std::string label;  ///< name in tables and plots; empty = the estimator's label ("LHF-2")
-  double ring = 0.0;  ///< 0 = method default
   bool has_vertex_set = false;
   VertexSet vertex_set = VertexSet::all;
-  // Estimator options other than ring/noisy/threads (ablations); defaults as EstimatorOptions.
-  bool include_centre = true;    ///< centre=yes|no (no: interpolate through the vertex)
-  double qr_tolerance = 1e-3;    ///< qr-tol=X
-  bool normal_safeguard = true;  ///< safeguard=yes|no (gamma of eq. 15)
-  bool adaptive = true;          ///< adaptive=yes|no (half-ring growth)
-  double weight_power = -1.0;    ///< weight-power=X (< 0: eq. 15's d/4)
-  VertexNormals vertex_normals = VertexNormals::method_default;  ///< vertex-normals=W
-  bool quadric_constant = false;                                 ///< quadric-constant=yes|no
-  double ball_factor = 0.0;                                      ///< ball-factor=C
+  /// The estimator options the line sets (role "result" only; the experiment's `noisy` and the
+  /// run's threads are added by the runner).
+  EstimatorOptions options;
   // spec "external": an outside estimator (external_estimator.h); its name is the label.
   std::string command;           ///< command=".. {mesh} .. {out}"
   double timeout_seconds = 0.0;  ///< timeout=S (<= 0: kDefaultExternalTimeout)

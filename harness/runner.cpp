@@ -28,26 +28,14 @@ double case_work(const RunCase& c) {
   return static_cast<double>(1u << (2 * c.level));
 }
 
-// Seconds per vertex relative to LHF-2 on the torus, level 4, one thread (results/
-// table5_timing.md, rounded): per method at degree 2, and the factor of each degree.
+// Seconds per vertex relative to LHF-2: the method's registry cost at degree 2 (MethodInfo::cost)
+// times the factor of its degree (0: a degree-free operator; from results/table5_timing.md).
 double method_cost(const std::string& name, int degree) {
-  static const std::map<std::string, double> base = {
-      {"lhf", 1.0},
-      {"lop", 1.15},
-      {"xu", 2.4},
-      {"lscm", 22.0},
-      {"lscm-fast", 2.9},
-      {"jet", 11.4},
-      {"meyer", 1.1},
-      {"taubin", 0.5},
-      {"rusinkiewicz", 1.5},
-      {"quadric", 7.0},
-      {"goldfeather", 1.9},
-      {"normal-cycle", 1.5}};  // degree-free methods: times per_degree[0] = 0.5
   static const double per_degree[] = {0.5, 0.6, 1.0, 1.8, 3.7, 7.0, 12.0};
-  const auto it = base.find(name);
-  const double b = it == base.end() ? 1.0 : it->second;
-  return b * per_degree[std::clamp(degree, 0, 6)];
+  double base = 1.0;
+  for (const MethodInfo& m : method_table())
+    if (m.name == name) base = m.cost;
+  return base * per_degree[std::clamp(degree, 0, 6)];
 }
 
 }  // namespace
@@ -146,17 +134,8 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads) 
     computed = ComputedQuantities{false, false, false, false, false};
     for (Quantity q : ext.quantities) mark_computed(computed, q);
   } else {
-    EstimatorOptions opt;
-    opt.ring = c.method->ring;
-    opt.include_centre = c.method->include_centre;
-    opt.qr_tolerance = c.method->qr_tolerance;
-    opt.normal_safeguard = c.method->normal_safeguard;
-    opt.adaptive = c.method->adaptive;
-    opt.weight_power = c.method->weight_power;
-    opt.vertex_normals = c.method->vertex_normals;
-    opt.quadric_constant = c.method->quadric_constant;
-    opt.ball_factor = c.method->ball_factor;
-    opt.noisy = e.noisy;
+    EstimatorOptions opt = c.method->options;
+    opt.noisy = opt.noisy || e.noisy;
     opt.threads = threads;
     const auto estimator = make_estimator(c.method->spec, opt);
     // The case's time includes gathering the neighbourhoods when this is the first case of the
@@ -168,7 +147,7 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads) 
     interior_only = estimator->scores_interior_only();
     computed = estimator->computes();
     degree = estimator->options().degree;
-    rings = format_g(opt.ring > 0 ? opt.ring : estimator->default_ring());
+    rings = format_g(opt.rings > 0 ? opt.rings : estimator->default_ring());
   }
 
   int reduced = 0, failed = 0;

@@ -2,6 +2,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cctype>
 #include <cstdint>
 #include <exception>
@@ -10,7 +11,10 @@
 
 #include "core/huge_pages.h"
 #include "mesh/rings.h"
+#include "core/errors.h"
+#include "core/text.h"
 #include "methods/estimator.h"
+#include "methods/option_schema.h"
 #include "methods/neighbourhood_table.h"
 #include "methods/vertex_normals.h"
 #include "methods/vertex_result.h"
@@ -41,6 +45,19 @@ std::string Estimator::display_name() const {
   return s;
 }
 
+Estimator::Estimator(EstimatorOptions options) : options_(options) {
+  validate_options(options_);
+}
+
+double Estimator::half_rings(double rings, const std::string& method) {
+  const bool half_ring =
+      rings >= 1.0 && std::abs(2.0 * rings - std::round(2.0 * rings)) < 1e-12;
+  if (!(rings == 0.0 || half_ring))
+    throw UsageError(method + ": ring " + format_g(rings) +
+                     " is not supported (valid: 0 = default, or 1, 1.5, 2, 2.5, ...)");
+  return rings == 0.0 ? 0.0 : 0.5 * std::round(2.0 * rings);
+}
+
 std::string Estimator::label() const {
   if (!takes_degree()) return display_name();
   return display_name() + "-" + std::to_string(options_.degree);
@@ -56,7 +73,7 @@ double Estimator::default_ring() const {
 }
 
 NeighbourhoodSpec Estimator::neighbourhood_spec() const {
-  const double r0 = options_.ring > 0.0 ? options_.ring : default_ring();
+  const double r0 = options_.rings > 0.0 ? options_.rings : default_ring();
   return options_.adaptive
              ? NeighbourhoodSpec::at_least(r0, min_neighbours(options_.degree), 2.0 * r0)
              : NeighbourhoodSpec::fixed(r0);

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/types.h"
+#include "curvbench/estimator_options.h"
 #include "mesh/mesh.h"
 #include "mesh/rings.h"
 
@@ -71,38 +72,6 @@ struct VertexEstimate {
   VertexStatus status = VertexStatus::failed;
 };
 
-/// Vertex normals used by the discrete operators (meyer, taubin, rusinkiewicz, quadric,
-/// goldfeather; methods/vertex_normals.h): method_default = what the method's authors' code uses.
-enum class VertexNormals : std::uint8_t { method_default, area, angle, max };
-
-/// How a fitting method solves its systems (LHF-d, LOP-d, d = 1..4; the others ignore it):
-/// batched = several vertices at once, one per SIMD lane (methods/batched_fit.h), falling back
-/// to the scalar path for every vertex it cannot finish (safeguard, degree reduction, growth);
-/// scalar = one vertex at a time, the reference. Both give the same results up to rounding.
-enum class Kernel : std::uint8_t { batched, scalar };
-
-/// Options shared by all methods. Defaults follow the paper and docs/algorithms.md.
-struct EstimatorOptions {
-  int degree = 0;                ///< fitting degree d (1..6; Xu: 2); 0 = the method's default
-                                 ///< (2 for a fit; a degree-free method accepts only 0)
-  double ring = 0.0;             ///< 0 = method default (Xu: 1; others (d+1)/2, +0.5 if noisy;
-                                 ///< quadric: 5, libigl's default)
-  bool noisy = false;            ///< noisy input: default ring +0.5 (paper §5.3)
-  bool adaptive = true;          ///< half-ring growth: point count and rank-failure rules (§1.2)
-  double qr_tolerance = 1e-3;    ///< |R_kk| threshold of the safeguarded QR (§5.4, [C1])
-  double weight_power = -1.0;    ///< < 0: eq. (15) exponent d/4, w = gamma (|u|^2+eps)^(-d/4)
-  bool normal_safeguard = true;  ///< gamma_i = max(0, m_i . m_0) of eq. (15)
-  bool include_centre = true;    ///< fit c00 with the centre as a row (else interpolate p0)
-  int threads = 0;               ///< 0 = OpenMP default
-  Kernel kernel = Kernel::batched;  ///< fitting kernel (see Kernel)
-  // Options of single methods (ignored by the others); see each method's file comment.
-  VertexNormals vertex_normals = VertexNormals::method_default;  ///< discrete operators
-  bool quadric_constant = false;  ///< quadric: 6 coefficients (constant term) instead of
-                                  ///< libigl's 5
-  double ball_factor = 0.0;       ///< normal-cycle: 0 = the 1-ring; c > 0 = the ball of radius
-                                  ///< c times the mesh's mean edge length
-};
-
 /// Per-mesh data of a method, computed once by Estimator::prepare(); derive from it.
 class MeshData {
  public:
@@ -136,7 +105,8 @@ class alignas(64) Workspace {
 
 class Estimator {
  public:
-  explicit Estimator(EstimatorOptions options) : options_(options) {}
+  /// Checks every option against the schema (methods/option_schema.h); throws UsageError.
+  explicit Estimator(EstimatorOptions options);
   virtual ~Estimator() = default;
 
   /// Short lower-case name, e.g. "lhf".
@@ -156,11 +126,11 @@ class Estimator {
   /// The quantities the method computes (default: all).
   virtual ComputedQuantities computes() const { return {}; }
 
-  /// Ring used when options().ring == 0.
+  /// Ring used when options().rings == 0.
   virtual double default_ring() const;
 
   /// The starting neighbourhood of vertex v, the same for every ring-based method (paper §4.1,
-  /// docs/algorithms.md §1.2): ring r0 = options().ring or default_ring(); when options().adaptive,
+  /// docs/algorithms.md §1.2): ring r0 = options().rings or default_ring(); when options().adaptive,
   /// grown by half rings until min_neighbours(degree) neighbours or ring 2 r0. Returns r0.
   double collect_neighbourhood(RingCollector& rings, int v) const;
   /// The same, served from ctx.neighbourhoods when that table holds this neighbourhood (same
@@ -201,16 +171,39 @@ class Estimator {
                               VertexEstimate* out) const;
 
  protected:
+  /// The ring option of a ring-based fit: 0 (the default) or a multiple of half a ring >= 1,
+  /// returned rounded to the half ring; throws UsageError naming `method` otherwise.
+  static double half_rings(double rings, const std::string& method);
+
   EstimatorOptions options_;
 };
 
-/// Creates an estimator by name: "lhf", "lop", "xu", "lscm", "lscm-fast", "jet", "meyer", ...
+/// Creates an estimator by name: "lhf", "lop", "xu", "lscm", "jet", "meyer", ...
 /// (estimator_names()), a fit optionally with the degree attached, "LHF-2" (case-insensitive;
 /// the attached degree overrides options.degree). options.degree == 0 gives a fit its default
 /// degree 2. Throws UsageError for an unknown name, an unsupported degree, any degree (given
-/// or attached) for a degree-free method, or an option of single methods (vertex_normals,
-/// quadric_constant, ball_factor) set for a method that does not use it.
+/// or attached) for a degree-free method, an option out of its range, or an option set for a
+/// method it does not apply to (methods/option_schema.h).
 std::unique_ptr<Estimator> make_estimator(const std::string& name, EstimatorOptions options);
+
+/// One line of the registry (methods/registry.cpp): what the rest of the project needs to know
+/// of a method besides its estimator.
+struct MethodInfo {
+  std::string name;                ///< --method name, e.g. "lhf"
+  int min_degree = 0;              ///< degrees of a fit; 0, 0 for a degree-free operator
+  int max_degree = 0;
+  std::vector<int> bench_degrees;  ///< make bench's rows (0: a degree-free operator, once)
+  double cost = 1.0;               ///< seconds per vertex relative to LHF-2 (shard balance)
+  std::string summary;             ///< one line for --help
+  bool is_fit() const { return max_degree > 0; }
+};
+
+/// Every registered method, in registry order.
+const std::vector<MethodInfo>& method_table();
+
+/// Labels of every method: each fit at each of its degrees within [lowest, highest]
+/// ("lhf-2", ...), each degree-free operator once ("meyer"); registry order.
+std::vector<std::string> method_labels(int lowest_degree, int highest_degree);
 
 /// Names accepted by make_estimator (without degree).
 std::vector<std::string> estimator_names();

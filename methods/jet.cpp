@@ -2,7 +2,7 @@
 // reference the paper times against in §5.4.
 //
 // Per vertex v (degree d in 2..4, Monge degree 2):
-//   neighbourhood: the same as LHF-d (ring_fit_estimator.h): r0 = options().ring or
+//   neighbourhood: the same as LHF-d (ring_fit_estimator.h): r0 = options().rings or
 //     default_ring(); adaptive: collect_at_least(v, r0, min_neighbours(d), 2 r0), else
 //     collect(v, r0). If the ring then holds fewer than (d+1)(d+2)/2 points (centre included),
 //     the minimum CGAL accepts, it grows by half rings until it does; if the component runs out
@@ -65,12 +65,7 @@ class JetEstimator final : public Estimator {
     if (o.degree < kJetMinDegree || o.degree > kJetMaxDegree)
       throw UsageError("jet: degree " + std::to_string(o.degree) +
                        " is not supported (valid: 2..4)");
-    const bool half_ring = std::isfinite(o.ring) && o.ring >= 1.0 &&
-                           std::abs(2.0 * o.ring - std::round(2.0 * o.ring)) < 1e-12;
-    if (!(o.ring == 0.0 || half_ring))
-      throw UsageError("jet: ring " + std::to_string(o.ring) +
-                       " is not supported (valid: 0 = default, or 1, 1.5, 2, 2.5, ...)");
-    if (o.ring != 0.0) options_.ring = 0.5 * std::round(2.0 * o.ring);
+    options_.rings = half_rings(o.rings, "jet");
   }
 
   std::string name() const override { return "jet"; }

@@ -100,11 +100,7 @@ double length_in_ball(const Vec3& a, const Vec3& b, const Vec3& c, double r) {
 class NormalCycleEstimator final : public OperatorEstimator {
  public:
   explicit NormalCycleEstimator(EstimatorOptions options)
-      : OperatorEstimator(options, VertexNormals::area) {
-    if (!(options_.ball_factor >= 0.0) || !std::isfinite(options_.ball_factor))
-      throw UsageError("normal-cycle: ball factor " + format_g(options_.ball_factor) +
-                       " is not supported (valid: 0 = the 1-ring, or c > 0)");
-  }
+      : OperatorEstimator(options, VertexNormals::area) {}
 
   std::string name() const override { return "normal-cycle"; }
   std::string display_name() const override { return "Normal-cycle"; }

@@ -16,9 +16,8 @@ OperatorEstimator::OperatorEstimator(EstimatorOptions options, VertexNormals def
   if (options_.degree != 0)
     throw UsageError("a discrete operator takes no degree (got " + std::to_string(options_.degree) +
                      ")");
-  if (options_.threads < 0) throw UsageError("threads must be >= 0");
-  if (!ring_option && options_.ring != 0.0 && options_.ring != 1.0)
-    throw UsageError("this method uses the 1-ring only (got ring " + format_g(options_.ring) + ")");
+  if (!ring_option && options_.rings != 0.0 && options_.rings != 1.0)
+    throw UsageError("this method uses the 1-ring only (got ring " + format_g(options_.rings) + ")");
 }
 
 VertexNormals OperatorEstimator::normal_weighting() const {

@@ -3,7 +3,7 @@
 // Visualization, Computer Vision and Image Processing 2010, 9-16). Degree-free; label "Quadric".
 //
 // Per vertex v with unit normal n (see "Choices") and its local frame (t1, t2, n):
-//   neighbourhood  the k-ring of v (k = options().ring, default 5, libigl's default radius in
+//   neighbourhood  the k-ring of v (k = options().rings, default 5, libigl's default radius in
 //                  k-ring mode), centre included; fewer than 6 points: failed (as libigl);
 //                  neighbours whose normal faces away (n_i . n <= 0) are dropped when at least
 //                  6 points remain (libigl's projection-plane check)
@@ -93,7 +93,7 @@ class QuadricEstimator final : public OperatorEstimator {
  public:
   explicit QuadricEstimator(EstimatorOptions options)
       : OperatorEstimator(options, VertexNormals::area, /*ring_option=*/true) {
-    const double r = options_.ring;
+    const double r = options_.rings;
     if (!(r == 0.0 || (std::isfinite(r) && r >= 1.0 && r == std::round(r) && r <= 64.0)))
       throw UsageError("quadric: ring " + format_g(r) +
                        " is not supported (valid: 0 = default 5, or an integer 1..64)");
@@ -142,7 +142,7 @@ class QuadricEstimator final : public OperatorEstimator {
     auto& ws = static_cast<QuadricWorkspace&>(base);
     const Mesh& mesh = ctx.mesh;
     const auto& data = static_cast<const QuadricData&>(*ctx.data);
-    const double ring = options_.ring > 0.0 ? options_.ring : kDefaultRing;
+    const double ring = options_.rings > 0.0 ? options_.rings : kDefaultRing;
     // The integer k-ring (the vertices within k edges of v), breadth first.
     if (++ws.current == 0) {  // stamps wrapped: clear
       std::fill(ws.stamp.begin(), ws.stamp.end(), 0);

@@ -1,11 +1,16 @@
 // The estimator registry: make_estimator() and estimator_names() of estimator.h.
 //
 // Every method is ONE line of CURVBENCH_ESTIMATORS below:
-//   X(name, min_degree, max_degree, factory)
-// where `factory` is a function `std::unique_ptr<Estimator> factory(EstimatorOptions)` defined in
-// the method's own .cpp (in namespace curvbench). The line both declares the factory and adds it
-// to the table; the order of the lines is the order of estimator_names(). A degree-free method
-// (a discrete operator) has min_degree = max_degree = 0.
+//   X(name, min_degree, max_degree, bench, cost, factory, summary)
+// name      the --method name; a fit's label adds the degree ("LHF-2")
+// min_degree, max_degree  the degrees a fit supports; 0, 0 for a degree-free discrete operator
+// bench     the degrees make bench times it at: "2-4", "2", "once" (an operator), or "none"
+// cost      seconds per vertex relative to LHF-2 at degree 2 (level-4 torus, one thread,
+//           results/table5_timing.md, rounded): balances the shards of `curvbench run`
+// factory   a function `std::unique_ptr<Estimator> factory(EstimatorOptions)` defined in the
+//           method's own .cpp (in namespace curvbench); the line declares it too
+// summary   one line for --help and `curvbench methods`
+// The order of the lines is the order of method_table() and estimator_names().
 #include <algorithm>
 #include <cctype>
 #include <memory>
@@ -14,27 +19,42 @@
 
 #include "core/errors.h"
 #include "methods/estimator.h"
+#include "methods/option_schema.h"
 
 // clang-format off
-#define CURVBENCH_ESTIMATORS(X)                 \
-  X("lhf", 1, 6, make_lhf_estimator)            \
-  X("lop", 1, 6, make_lop_estimator)            \
-  X("xu", 2, 2, make_xu_estimator)              \
-  X("lscm", 1, 6, make_lscm_estimator)          \
-  X("lscm-fast", 1, 6, make_lscm_fast_estimator) \
-  X("lscm-cg", 1, 6, make_lscm_cg_estimator)     \
-  X("jet", 2, 4, make_jet_estimator)            \
-  X("meyer", 0, 0, make_meyer_estimator)        \
-  X("taubin", 0, 0, make_taubin_estimator)      \
-  X("rusinkiewicz", 0, 0, make_rusinkiewicz_estimator) \
-  X("quadric", 0, 0, make_quadric_estimator)    \
-  X("goldfeather", 0, 0, make_goldfeather_estimator) \
-  X("normal-cycle", 0, 0, make_normal_cycle_estimator)
+//  X(name,          degrees, bench, cost, factory,                     summary)
+#define CURVBENCH_ESTIMATORS(X)                                                                   \
+  X("lhf",           1, 6, "2-4", 1.0,  make_lhf_estimator,                                       \
+    "local height function fit of degree d (Wang, Jiao et al. 2009, section 2.2)")                \
+  X("lop",           1, 6, "2",   1.15, make_lop_estimator,                                       \
+    "local orthogonal projection fit of degree d (Wang, Jiao et al. 2009, section 4.2.2)")          \
+  X("xu",            2, 2, "2",   2.4,  make_xu_estimator,                                        \
+    "quadratic fit over Xu's flattened 1-ring (Wang, Jiao et al. 2009, section 4.2.1)")                                  \
+  X("lscm",          1, 6, "2-4", 22.0, make_lscm_estimator,                                      \
+    "fit over a local least-squares conformal map (CGAL's LSCM; section 4.2.3)")                    \
+  X("lscm-fast",     1, 6, "2-4", 2.9,  make_lscm_fast_estimator,                                 \
+    "the same conformal map computed in-house (dense solve on the small patch)")                                         \
+  X("lscm-cg",       1, 6, "none", 22.0, make_lscm_cg_estimator,                                  \
+    "CGAL's LSCM solved by OpenNL conjugate gradients")                                                 \
+  X("jet",           2, 4, "2-4", 11.4, make_jet_estimator,                                       \
+    "CGAL's Jet_fitting_3 osculating jet (Cazals and Pouget 2005)")                               \
+  X("meyer",         0, 0, "once", 1.1, make_meyer_estimator,                                     \
+    "cotangent mean curvature, angle-deficit Gaussian curvature (Meyer et al. 2003; libigl)")     \
+  X("taubin",        0, 0, "once", 0.5, make_taubin_estimator,                                    \
+    "Taubin's curvature tensor from directional curvatures (Taubin 1995)")                        \
+  X("rusinkiewicz",  0, 0, "once", 1.5, make_rusinkiewicz_estimator,                              \
+    "per-face second fundamental form averaged at vertices (Rusinkiewicz 2004; trimesh2)")        \
+  X("quadric",       0, 0, "once", 7.0, make_quadric_estimator,                                   \
+    "quadric fit over a k-ring (libigl's principal_curvature; Panozzo et al. 2010)")                                   \
+  X("goldfeather",   0, 0, "once", 1.9, make_goldfeather_estimator,                               \
+    "adjacent-normal cubic fit over the 1-ring (Goldfeather and Interrante 2004)")       \
+  X("normal-cycle",  0, 0, "once", 1.5, make_normal_cycle_estimator,                              \
+    "normal cycle curvature tensor over the 1-ring or a ball (Cohen-Steiner and Morvan 2003)")
 // clang-format on
 
 namespace curvbench {
 
-#define CURVBENCH_DECLARE_FACTORY(name, lo, hi, factory) \
+#define CURVBENCH_DECLARE_FACTORY(name, lo, hi, bench, cost, factory, summary) \
   std::unique_ptr<Estimator> factory(EstimatorOptions options);
 CURVBENCH_ESTIMATORS(CURVBENCH_DECLARE_FACTORY)
 #undef CURVBENCH_DECLARE_FACTORY
@@ -45,12 +65,28 @@ struct Registration {
   const char* name;
   int min_degree;
   int max_degree;
+  const char* bench;
+  double cost;
   std::unique_ptr<Estimator> (*make)(EstimatorOptions);
+  const char* summary;
 };
 
-#define CURVBENCH_REGISTER(name, lo, hi, factory) Registration{name, lo, hi, &factory},
+#define CURVBENCH_REGISTER(name, lo, hi, bench, cost, factory, summary) \
+  Registration{name, lo, hi, bench, cost, &factory, summary},
 const Registration kRegistry[] = {CURVBENCH_ESTIMATORS(CURVBENCH_REGISTER)};
 #undef CURVBENCH_REGISTER
+
+// make bench's degrees of a registration: "2-4", "2", "once" (a degree-free method) or "none".
+std::vector<int> bench_degrees(const Registration& r) {
+  const std::string b = r.bench;
+  if (b == "none") return {};
+  if (b == "once") return {0};
+  const int lo = b[0] - '0';
+  const int hi = b.size() > 2 ? b[2] - '0' : lo;
+  std::vector<int> out;
+  for (int d = lo; d <= hi; ++d) out.push_back(d);
+  return out;
+}
 
 std::string lower(std::string s) {
   for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -66,20 +102,9 @@ std::string valid_names() {
   return s;
 }
 
-// Options of single methods (EstimatorOptions: vertex_normals, quadric_constant, ball_factor)
-// given to a method that does not use them: an error rather than silently ignored.
+// Every option set away from its default must suit the method (methods/option_schema.h).
 std::unique_ptr<Estimator> checked(std::unique_ptr<Estimator> est) {
-  const EstimatorOptions& o = est->options();
-  const std::string name = est->name();
-  if (o.vertex_normals != VertexNormals::method_default && est->takes_degree())
-    throw UsageError(
-        "vertex-normals applies to the discrete operators only (meyer, taubin, "
-        "rusinkiewicz, quadric, goldfeather, normal-cycle), not to '" +
-        name + "'");
-  if (o.quadric_constant && name != "quadric")
-    throw UsageError("quadric-constant applies to method 'quadric' only, not to '" + name + "'");
-  if (o.ball_factor != 0.0 && name != "normal-cycle")
-    throw UsageError("ball-factor applies to method 'normal-cycle' only, not to '" + name + "'");
+  check_options_apply(est->options(), est->name(), est->takes_degree());
   return est;
 }
 
@@ -132,6 +157,30 @@ std::unique_ptr<Estimator> make_estimator(const std::string& name, EstimatorOpti
                      std::to_string(options.degree) + " (valid: " + range + ")");
   }
   return checked(reg->make(options));
+}
+
+const std::vector<MethodInfo>& method_table() {
+  static const std::vector<MethodInfo> table = [] {
+    std::vector<MethodInfo> out;
+    for (const Registration& r : kRegistry)
+      out.push_back({r.name, r.min_degree, r.max_degree, bench_degrees(r), r.cost, r.summary});
+    return out;
+  }();
+  return table;
+}
+
+std::vector<std::string> method_labels(int lowest_degree, int highest_degree) {
+  std::vector<std::string> out;
+  for (const Registration& r : kRegistry) {
+    if (r.max_degree == 0) {
+      out.emplace_back(r.name);
+      continue;
+    }
+    for (int d = std::max(lowest_degree, r.min_degree);
+         d <= std::min(highest_degree, r.max_degree); ++d)
+      out.push_back(std::string(r.name) + "-" + std::to_string(d));
+  }
+  return out;
 }
 
 std::vector<std::string> estimator_names() {

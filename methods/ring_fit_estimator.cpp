@@ -40,16 +40,7 @@ RingFitEstimator::RingFitEstimator(EstimatorOptions options, FitRoute route)
   const EstimatorOptions& o = options_;
   if (o.degree < 1 || o.degree > kMaxDegree)
     throw UsageError("degree " + std::to_string(o.degree) + " is not supported (valid: 1..6)");
-  const bool half_ring = std::isfinite(o.ring) && o.ring >= 1.0 &&
-                         std::abs(2.0 * o.ring - std::round(2.0 * o.ring)) < 1e-12;
-  if (!(o.ring == 0.0 || half_ring))
-    throw UsageError("ring " + format_g(o.ring) +
-                     " is not supported (valid: 0 = default, or 1, 1.5, 2, 2.5, ...)");
-  if (!(o.qr_tolerance >= 0.0) || !std::isfinite(o.qr_tolerance))
-    throw UsageError("QR tolerance must be finite and >= 0");
-  if (!std::isfinite(o.weight_power)) throw UsageError("weight power must be finite");
-  if (o.threads < 0) throw UsageError("threads must be >= 0");
-  if (o.ring != 0.0) options_.ring = 0.5 * std::round(2.0 * o.ring);
+  options_.rings = half_rings(o.rings, "fit");
   settings_.degree = o.degree;
   settings_.include_constant = o.include_centre;
   settings_.qr_tolerance = o.qr_tolerance;

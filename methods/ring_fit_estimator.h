@@ -2,7 +2,7 @@
 // LHF-d, LOP-d and (through the parameterization hook) LSCM-d.
 //
 // Per vertex v (approximate normal m0 = area-weighted normal, frame of §3):
-//   r0 = options().ring, or default_ring() = (d+1)/2 (+0.5 when noisy)
+//   r0 = options().rings, or default_ring() = (d+1)/2 (+0.5 when noisy)
 //   adaptive:     ring = collect_at_least(v, r0, min_neighbours(d), 2 r0)   (point-count rule)
 //   non-adaptive: ring = collect(v, r0)
 //   loop:

@@ -64,25 +64,4 @@ VertexMatrix weighted_vertex_normals(const Mesh& mesh, VertexNormals weighting, 
   return N;
 }
 
-VertexNormals parse_vertex_normals(const std::string& name) {
-  for (VertexNormals w : {VertexNormals::method_default, VertexNormals::area, VertexNormals::angle,
-                          VertexNormals::max})
-    if (name == to_string(w)) return w;
-  throw UsageError("vertex normals '" + name + "' unknown (valid: default, area, angle, max)");
-}
-
-const char* to_string(VertexNormals weighting) {
-  switch (weighting) {
-    case VertexNormals::method_default:
-      return "default";
-    case VertexNormals::area:
-      return "area";
-    case VertexNormals::angle:
-      return "angle";
-    case VertexNormals::max:
-      return "max";
-  }
-  return "unknown";
-}
-
 }  // namespace curvbench

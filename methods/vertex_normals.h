@@ -12,7 +12,7 @@
 // Deterministic: each vertex sums its faces in increasing face order (one pass over the faces;
 // each thread owns a range of vertices), whatever the number of threads.
 //
-// Names (the command line's --vertex-normals, the experiment option vertex-normals=): "default"
+// Names (the option vertex-normals of include/curvbench/estimator_options.h): "default"
 // (method_default), "area", "angle", "max".
 #pragma once
 
@@ -26,11 +26,5 @@ namespace curvbench {
 
 /// Normals with the given weighting (not VertexNormals::method_default) and `threads` threads.
 VertexMatrix weighted_vertex_normals(const Mesh& mesh, VertexNormals weighting, int threads);
-
-/// The weighting named `name` (see above); throws UsageError naming the valid names.
-VertexNormals parse_vertex_normals(const std::string& name);
-
-/// The name of a weighting ("default", "area", "angle", "max").
-const char* to_string(VertexNormals weighting);
 
 }  // namespace curvbench

@@ -53,9 +53,9 @@ class XuEstimator final : public Estimator {
   explicit XuEstimator(EstimatorOptions options) : Estimator(options) {
     if (options_.degree != 2)
       throw UsageError("xu supports only degree 2 (got " + std::to_string(options_.degree) + ")");
-    if (options_.ring != 0.0 && options_.ring != 1.0) {
+    if (options_.rings != 0.0 && options_.rings != 1.0) {
       char ring[32];
-      std::snprintf(ring, sizeof ring, "%g", options_.ring);
+      std::snprintf(ring, sizeof ring, "%g", options_.rings);
       throw UsageError(std::string("xu uses the 1-ring only (got ring ") + ring + ")");
     }
     if (options_.threads < 0) throw UsageError("threads must be >= 0");

@@ -1,7 +1,7 @@
 // The Python module `curvbench` (pybind11): numpy arrays in and out over the library.
 //
-//   estimate(V, F, method="lhf", degree=None, rings=None, noisy=False, threads=None,
-//            vertex_normals="default", quadric_constant=False, ball_factor=0.0) -> Estimate
+//   estimate(V, F, method="lhf", **options) -> Estimate   (options: the estimator option table,
+//            include/curvbench/estimator_options.h: degree=4, rings=2.5, vertex_normals="max", ...)
 //   read_mesh(path) -> (V, F)
 //   mesh(family, level, noise_order=0, seed=1) -> (V, F, Exact)
 //   score(exact_or_mesh, estimate, vertex_set="all") -> {quantity: {"L2", "Linf", ...}}
@@ -33,6 +33,7 @@
 #include "meshgen/generate.h"
 #include "methods/estimate_oriented.h"
 #include "methods/estimator.h"
+#include "methods/option_schema.h"
 
 namespace py = pybind11;
 using namespace curvbench;
@@ -172,23 +173,39 @@ py::array numpy_status_names(const py::array_t<std::uint8_t>& codes) {
   return names.attr("__getitem__")(codes);
 }
 
+// A keyword argument as the option table's typed value (set_option checks it against the type).
+OptionValue option_value(const py::handle& x) {
+  if (py::isinstance<py::bool_>(x)) return x.cast<bool>();
+  if (py::isinstance<py::str>(x)) return x.cast<std::string>();
+  if (py::isinstance<py::float_>(x)) return x.cast<double>();
+  if (py::hasattr(x, "__index__")) return x.attr("__index__")().cast<long long>();
+  throw UsageError("expected a bool, a number or a string, got " +
+                   py::str(py::type::of(x)).cast<std::string>());
+}
+
+// Every option of the table as estimate()'s docstring lists it.
+std::string options_doc() {
+  std::string s;
+  for (const OptionInfo& o : estimator_option_schema()) {
+    std::string value = o.default_text;
+    if (o.type == OptionType::boolean) value = value == "yes" ? "True" : "False";
+    if (o.type == OptionType::choice) value = "'" + value + "'";
+    s += o.python_name + " (default " + value + "): " + o.help + ".\n";
+  }
+  return s;
+}
+
 PyEstimate py_estimate(const py::handle& V, const py::handle& F, const std::string& method,
-                       std::optional<int> degree, std::optional<double> rings, bool noisy,
-                       std::optional<int> threads, const std::string& vertex_normals,
-                       bool quadric_constant, double ball_factor) {
+                       const py::kwargs& kwargs) {
   EstimateOptions o;
   o.method = method;
-  o.degree = degree.value_or(0);
-  if (degree && *degree < 1)
-    throw UsageError("degree " + std::to_string(*degree) + ": must be >= 1");
-  o.rings = rings.value_or(0.0);
-  if (rings && !(*rings > 0)) throw UsageError("rings: must be > 0 (None = the method's default)");
-  o.threads = threads.value_or(0);
-  o.noisy = noisy;
-  o.vertex_normals = vertex_normals;
-  o.quadric_constant = quadric_constant;
-  o.ball_factor = ball_factor;
-  if (threads && *threads < 1) throw UsageError("threads: must be >= 1 (None = all cores)");
+  for (const auto& [key, value] : kwargs) {
+    if (value.is_none()) continue;  // None: the default
+    const std::string name = key.cast<std::string>();
+    if (name.find('-') != std::string::npos || name != option_info(name).python_name)
+      throw UsageError("unknown option '" + name + "'");
+    set_option_value(o, name, option_value(value));
+  }
   const std::unique_ptr<Estimator> est = make_api_estimator(o);
   VertexMatrix Vm = to_vertices(V);
   FaceMatrix Fm = to_faces(F, Vm.rows());
@@ -373,22 +390,14 @@ PYBIND11_MODULE(curvbench, m) {
       .def_readonly("d2", &PyExact::d2, "(n, 3) exact principal direction of k2.");
 
   m.def("estimate", &py_estimate, py::arg("V"), py::arg("F"), py::arg("method") = "lhf",
-        py::arg("degree") = py::none(), py::arg("rings") = py::none(), py::arg("noisy") = false,
-        py::arg("threads") = py::none(), py::arg("vertex_normals") = "default",
-        py::arg("quadric_constant") = false, py::arg("ball_factor") = 0.0,
         (std::string(R"(Estimate normals, principal curvatures and directions at every vertex.
 
 V: (n, 3) vertex positions, float64 or float32 (int32/int64 accepted), any strides.
 F: (m, 3) triangles as 0-based vertex indices, any integer dtype, any strides.
 method: a name of curvbench.methods(), case-insensitive; 'LHF-4' attaches the degree.
-degree: fitting degree (None: the one attached to method, else 2).
-rings: ring size 1, 1.5, 2, ... (None: the method's default, (degree+1)/2; Xu 1).
-noisy: noisy input, default ring + 0.5 (paper §5.3).
-threads: OpenMP threads (None: all cores); results are bit-identical for any count.
-vertex_normals: discrete operators only: 'area', 'angle' or 'max' ('default': the method's own).
-quadric_constant: quadric only: 6 coefficients (a constant term) instead of libigl's 5.
-ball_factor: normal-cycle only: the ball of radius c times the mean edge length (0: the 1-ring).
-
+**options: any estimator option below, by keyword (None: its default). An option set for a
+method that does not take it raises UsageError, as on the command line.
+)") + options_doc() + std::string(R"(
 Returns a curvbench.Estimate: normal (n,3), k1, k2, H, K (n,), d1, d2 (n,3), degree, points,
 ring (n,), status (n,) str and status_code (n,) uint8, method (label). Identical, bit for bit,
 to `curvbench estimate` on the same mesh. The GIL is released while estimating.

@@ -1,6 +1,7 @@
 // curvbench's public C++ API: per-vertex normals, principal curvatures and directions of a
-// triangle mesh by local polynomial fitting (Wang, Jiao et al., CAGD 2009), in the style of
-// libigl/pmp: Eigen matrices in, an options struct, a result struct out.
+// triangle mesh by the paper's local polynomial fits (Wang, Jiao et al., CAGD 2009), CGAL's jet
+// fitting and the common discrete operators (methods()), in the style of libigl/pmp: Eigen
+// matrices in, an options struct, a result struct out.
 //
 //   V  n x 3 double  vertex positions
 //   F  m x 3 int     triangles (0-based), counter-clockwise seen from outside (closed surfaces)
@@ -10,7 +11,8 @@
 // normals, so a sphere of radius r has k1 = k2 = H = -1/r; k1 >= k2, d1 goes with k1,
 // H = (k1 + k2) / 2, K = k1 k2.
 //
-// This header includes only Eigen and the standard library (and <curvbench/errors.h>); the
+// This header includes only Eigen and the standard library (and <curvbench/errors.h>,
+// <curvbench/estimator_options.h>); the
 // library's internal headers are not installed. Link with curvbench::curvbench (CMake:
 // find_package(curvbench CONFIG)).
 #pragma once
@@ -21,6 +23,7 @@
 #include <vector>
 
 #include "curvbench/errors.h"
+#include "curvbench/estimator_options.h"
 
 namespace curvbench {
 
@@ -39,16 +42,11 @@ enum class Status : std::uint8_t {
 /// "ok", "degree_reduced", "failed", "excluded", "disk_cut", "sign_undetermined".
 const char* status_name(Status status);
 
-struct EstimateOptions {
+/// The method and its options. The options (degree, rings, noisy, threads, vertex_normals,
+/// ball_factor, ...) are those of <curvbench/estimator_options.h>, each documented there; an
+/// option set away from its default for a method that does not take it is a UsageError.
+struct EstimateOptions : EstimatorOptions {
   std::string method = "lhf";  ///< a name of methods(), case-insensitive; "LHF-4" attaches d
-  int degree = 0;              ///< fitting degree; 0 = the degree in `method`, else 2
-  double rings = 0.0;          ///< ring size 1, 1.5, 2, ...; 0 = the method's default
-  bool noisy = false;          ///< noisy input: default ring + 0.5 (paper §5.3)
-  int threads = 0;             ///< OpenMP threads; 0 = all cores (results do not depend on it)
-  // Options of single methods (an error for any other method):
-  std::string vertex_normals = "default";  ///< discrete operators: "area", "angle" or "max"
-  bool quadric_constant = false;           ///< quadric: 6 coefficients instead of 5
-  double ball_factor = 0.0;  ///< normal-cycle: ball of radius c x mean edge; 0 = the 1-ring
 };
 
 /// Per-vertex estimates; row/entry i belongs to vertex i.
@@ -66,8 +64,8 @@ struct EstimateResult {
 
 /// Estimates every vertex of the mesh (V, F). Throws InputError for an invalid mesh (index out
 /// of range, repeated vertex in a face, NaN/Inf coordinate) and UsageError for an unknown method,
-/// an unsupported degree or a degree that contradicts the one in `method`; the messages are the
-/// command line's. The result is bit-identical to `curvbench estimate` on the same mesh and
+/// an unsupported degree, a degree that contradicts the one in `method`, an option out of range
+/// or given to a method that does not take it; the messages are the command line's. The result is bit-identical to `curvbench estimate` on the same mesh and
 /// does not depend on the thread count.
 EstimateResult estimate(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
                         const EstimateOptions& options = {});

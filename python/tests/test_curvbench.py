@@ -212,9 +212,24 @@ def test_bad_options_raise_usage_error_with_the_command_line_message(torus, tmp_
     with pytest.raises(curvbench.UsageError, match="method lhf-4 names degree 4 but degree is 2"):
         curvbench.estimate(V, F, method="lhf-4", degree=2)
     assert curvbench.estimate(V, F, method="lhf-4").method == "LHF-4"
-    for kwargs in ({"degree": 0}, {"rings": -1.0}, {"threads": 0}):
-        with pytest.raises(curvbench.UsageError):
-            curvbench.estimate(V, F, **kwargs)
+    # One validation (the option table) for C++, the command line and Python: negative values are
+    # errors with the command line's message; 0 is each option's default, as in C++.
+    for name, value in (("degree", -1), ("rings", -1.0), ("threads", -1), ("ball_factor", -2.0)):
+        method = "normal-cycle" if name == "ball_factor" else "lhf"
+        flag = "--" + name.replace("_", "-")
+        want = error_line("estimate", torus, "--method", method, flag, str(value), "--output",
+                          tmp_path / "x.csv")
+        with pytest.raises(curvbench.UsageError) as e:
+            curvbench.estimate(V, F, method=method, **{name: value})
+        assert str(e.value) == want, name
+    default = curvbench.estimate(V, F, method="lhf").H
+    for kwargs in ({"degree": 0}, {"rings": 0}, {"threads": 0}, {"degree": None}):
+        assert np.array_equal(curvbench.estimate(V, F, method="lhf", **kwargs).H, default,
+                              equal_nan=True), kwargs
+    with pytest.raises(curvbench.UsageError, match="unknown option 'ring'"):
+        curvbench.estimate(V, F, ring=2)
+    with pytest.raises(curvbench.UsageError, match="noisy: expected True or False"):
+        curvbench.estimate(V, F, noisy=1)
     with pytest.raises(curvbench.UsageError, match="torus-structured"):
         curvbench.mesh("nosuch", 1)
     with pytest.raises(curvbench.UsageError):

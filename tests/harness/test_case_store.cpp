@@ -15,6 +15,7 @@
 
 #include "core/build_info.h"
 #include "harness/case_store.h"
+#include "methods/option_schema.h"
 #include "harness/results_table.h"
 #include "harness/runner.h"
 #include "mesh/io.h"
@@ -75,7 +76,6 @@ TEST(CaseHash, ChangesWithEverySettingAndTheCodeVersionOnly) {
       {"vertex set", [](Experiment& e) { e.vertex_set = VertexSet::interior; }},
       {"spec", [](Experiment& e) { e.methods[0].spec = "lhf-3"; }},
       {"label", [](Experiment& e) { e.methods[0].label = "LHF-2 variant"; }},
-      {"ring", [](Experiment& e) { e.methods[0].ring = 2.5; }},
       {"method vertex set (default value)",
        [](Experiment& e) { e.methods[0].has_vertex_set = true; }},
       {"method vertex set",
@@ -83,14 +83,8 @@ TEST(CaseHash, ChangesWithEverySettingAndTheCodeVersionOnly) {
          e.methods[0].has_vertex_set = true;
          e.methods[0].vertex_set = VertexSet::interior;
        }},
-      {"centre", [](Experiment& e) { e.methods[0].include_centre = false; }},
-      {"qr-tol", [](Experiment& e) { e.methods[0].qr_tolerance = 1.0000000000000002e-3; }},
-      {"safeguard", [](Experiment& e) { e.methods[0].normal_safeguard = false; }},
-      {"adaptive", [](Experiment& e) { e.methods[0].adaptive = false; }},
-      {"weight power", [](Experiment& e) { e.methods[0].weight_power = 0.5; }},
-      {"vertex normals", [](Experiment& e) { e.methods[0].vertex_normals = VertexNormals::angle; }},
-      {"quadric constant", [](Experiment& e) { e.methods[0].quadric_constant = true; }},
-      {"ball factor", [](Experiment& e) { e.methods[0].ball_factor = 2.0; }},
+      {"qr-tol by one ulp",
+       [](Experiment& e) { e.methods[0].options.qr_tolerance = 1.0000000000000002e-3; }},
       {"panel quantity", [](Experiment& e) { e.panels[1].quantity = Quantity::K; }},
       {"panel norm", [](Experiment& e) { e.panels[0].norm = Norm::Linf; }},
       {"extra measure",
@@ -98,6 +92,28 @@ TEST(CaseHash, ChangesWithEverySettingAndTheCodeVersionOnly) {
          e.panels.push_back({"p-k", "K.", Quantity::K, Norm::L2});
        }},
   };
+  // Every option of the table that changes the results, set away from its default.
+  for (const OptionInfo& option : estimator_option_schema()) {
+    if (option.role != OptionRole::result) continue;
+    std::string value;
+    switch (option.type) {
+      case OptionType::boolean:
+        value = option.default_text == "yes" ? "no" : "yes";
+        break;
+      case OptionType::integer:
+        value = std::to_string(std::stoi(option.default_text) + 1);
+        break;
+      case OptionType::real:
+        value = std::to_string(std::stod(option.default_text) + 0.5);
+        break;
+      case OptionType::choice:
+        value = option.choices.at(1);
+        break;
+    }
+    mutations.emplace_back(option.name, [name = option.name, value](Experiment& e) {
+      set_option(e.methods[0].options, name, value);
+    });
+  }
   std::map<std::uint64_t, std::string> seen{{h0, "base"}};
   for (const auto& [what, mutate] : mutations) {
     Experiment e = base_experiment();
@@ -172,7 +188,7 @@ TEST(CaseStore, VariantsOfOneMethodGetTheirOwnFilesAndPruneRemovesOrphans) {
   const auto dir = fresh_dir("case_store_prune");
   Experiment e = base_experiment();
   e.methods[1] = e.methods[0];
-  e.methods[1].include_centre = false;  // same spec, another option
+  e.methods[1].options.include_centre = false;  // same spec, another option
   const CaseStore store(dir.string(), "v");
   const std::vector<Experiment> experiments{e};  // cases point into it: keep it alive
   const auto cases = expand_cases(experiments);

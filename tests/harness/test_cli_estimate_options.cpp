@@ -48,7 +48,7 @@ TEST(CliEstimateOptions, ReachTheMethodAndBadUseExitsTwo) {
   expect_usage_error("--method meyer --vertex-normals cotan", "valid: default, area, angle, max");
   expect_usage_error("--method meyer --quadric-constant", "applies to method 'quadric' only");
   expect_usage_error("--method quadric --ball-factor 2", "applies to method 'normal-cycle' only");
-  expect_usage_error("--method normal-cycle --ball-factor -1", "ball factor -1");
+  expect_usage_error("--method normal-cycle --ball-factor -1", "ball-factor -1: out of range");
 
   const auto help = run_cli("estimate --help");
   EXPECT_EQ(help.exit_code, 0);

@@ -26,7 +26,7 @@ TEST(Experiment, ParsesEveryKey) {
       "noisy    yes\n"
       "vertex-set interior\n"
       "mesh     bump-48 levels=1,2,3\n"
-      "method   lhf-2 ring=2.5\n"
+      "method   lhf-2 rings=2.5\n"
       "method   xu-2 vertex-set=all\n"
       "method   lhf-4 centre=no qr-tol=1e-8 safeguard=no adaptive=no weight-power=0.5 "
       "label=\"LHF-4 ablated\"\n"
@@ -44,14 +44,14 @@ TEST(Experiment, ParsesEveryKey) {
   ASSERT_EQ(e.methods.size(), 3u);
   const ExperimentMethod& ab = e.methods[2];
   EXPECT_EQ(ab.label, "LHF-4 ablated");
-  EXPECT_FALSE(ab.include_centre);
-  EXPECT_DOUBLE_EQ(ab.qr_tolerance, 1e-8);
-  EXPECT_FALSE(ab.normal_safeguard);
-  EXPECT_FALSE(ab.adaptive);
-  EXPECT_DOUBLE_EQ(ab.weight_power, 0.5);
-  EXPECT_TRUE(e.methods[0].include_centre);  // defaults are EstimatorOptions' defaults
-  EXPECT_DOUBLE_EQ(e.methods[0].qr_tolerance, EstimatorOptions{}.qr_tolerance);
-  EXPECT_DOUBLE_EQ(e.methods[0].ring, 2.5);
+  EXPECT_FALSE(ab.options.include_centre);
+  EXPECT_DOUBLE_EQ(ab.options.qr_tolerance, 1e-8);
+  EXPECT_FALSE(ab.options.normal_safeguard);
+  EXPECT_FALSE(ab.options.adaptive);
+  EXPECT_DOUBLE_EQ(ab.options.weight_power, 0.5);
+  EXPECT_TRUE(e.methods[0].options.include_centre);  // defaults are EstimatorOptions' defaults
+  EXPECT_DOUBLE_EQ(e.methods[0].options.qr_tolerance, EstimatorOptions{}.qr_tolerance);
+  EXPECT_DOUBLE_EQ(e.methods[0].options.rings, 2.5);
   EXPECT_FALSE(e.methods[0].has_vertex_set);
   EXPECT_TRUE(e.methods[1].has_vertex_set);
   EXPECT_EQ(e.methods[1].vertex_set, VertexSet::all);
@@ -77,7 +77,7 @@ TEST(Experiment, ErrorsNameFileAndLine) {
   expect_error(base + "mesh bump-48 levels=1,x\n", "bad.exp:5: 'x' is not an integer");
   expect_error(base + "title \"open\n", "bad.exp:5: unterminated quote");
   expect_error(base + "method lhf-2 label=\"a,b\"\n", "bad.exp:5: a label must be");
-  expect_error(base + "method lhf-2 centre=maybe\n", "bad.exp:5: expected yes or no");
+  expect_error(base + "method lhf-2 centre=maybe\n", "bad.exp:5: centre: expected yes or no");
   expect_error("mesh bump-48 levels=1\nmethod lhf-2\npanel p c H L2\n", "missing 'name'");
   expect_error("name x\nmethod lhf-2\npanel p c H L2\n", "no 'mesh' line");
   EXPECT_THROW(parse_experiment("/nonexistent/x.exp"), InputError);
@@ -95,12 +95,12 @@ TEST(Experiment, SingleMethodOptions) {
                                 "method normal-cycle\n",
                             "opts.exp");
   ASSERT_EQ(e.methods.size(), 4u);
-  EXPECT_EQ(e.methods[0].vertex_normals, VertexNormals::angle);
-  EXPECT_TRUE(e.methods[1].quadric_constant);
-  EXPECT_DOUBLE_EQ(e.methods[2].ball_factor, 2.5);
-  EXPECT_EQ(e.methods[3].vertex_normals, VertexNormals::method_default);  // the defaults
-  EXPECT_FALSE(e.methods[3].quadric_constant);
-  EXPECT_EQ(e.methods[3].ball_factor, 0.0);
+  EXPECT_EQ(e.methods[0].options.vertex_normals, VertexNormals::angle);
+  EXPECT_TRUE(e.methods[1].options.quadric_constant);
+  EXPECT_DOUBLE_EQ(e.methods[2].options.ball_factor, 2.5);
+  EXPECT_EQ(e.methods[3].options.vertex_normals, VertexNormals::method_default);  // the defaults
+  EXPECT_FALSE(e.methods[3].options.quadric_constant);
+  EXPECT_EQ(e.methods[3].options.ball_factor, 0.0);
   const auto expect_error = [&](const std::string& line, const std::string& needle) {
     try {
       parse_experiment_text(head + line, "bad.exp");
@@ -111,13 +111,13 @@ TEST(Experiment, SingleMethodOptions) {
   };
   expect_error("method lhf-2 vertex-normals=area\n",
                "bad.exp:4: vertex-normals applies to the discrete operators only");
-  expect_error("method meyer vertex-normals=cot\n", "bad.exp:4: vertex normals 'cot' unknown");
+  expect_error("method meyer vertex-normals=cot\n", "bad.exp:4: vertex-normals: unknown value 'cot'");
   expect_error("method meyer quadric-constant=yes\n",
                "bad.exp:4: quadric-constant applies to method 'quadric' only");
-  expect_error("method quadric quadric-constant=maybe\n", "bad.exp:4: expected yes or no");
+  expect_error("method quadric quadric-constant=maybe\n", "bad.exp:4: quadric-constant: expected yes or no");
   expect_error("method taubin ball-factor=1\n",
                "bad.exp:4: ball-factor applies to method 'normal-cycle' only");
-  expect_error("method normal-cycle ball-factor=-1\n", "bad.exp:4: normal-cycle: ball factor -1");
+  expect_error("method normal-cycle ball-factor=-1\n", "bad.exp:4: ball-factor -1: out of range");
 }
 
 // The runner hands the options of single methods to the estimator: each variant's errors differ

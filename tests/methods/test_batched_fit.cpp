@@ -153,7 +153,7 @@ TEST(BatchedFit, EqualsScalarWithOtherOptionsAndFallbacks) {
         o.degree = d;
         if (variant == 0) o.include_centre = false;
         if (variant == 1) o.normal_safeguard = false;
-        if (variant == 2) o.ring = 2.0;
+        if (variant == 2) o.rings = 2.0;
         if (variant == 3) o.adaptive = false;
         if (variant == 4) o.qr_tolerance = 0.2;
         const auto s = run(mesh, method, o, Kernel::scalar);

@@ -413,7 +413,7 @@ TEST(Safeguard, FoldedNeighboursAreFilteredByGamma) {
   const int v = 5 * 11 + 4;  // x = 0.4, on the left flank; its 2-ring reaches x = 0.6
   EstimatorOptions o;
   o.degree = 2;
-  o.ring = 2;
+  o.rings = 2;
   o.adaptive = false;
   auto with = make_estimator("lhf", o);
   o.normal_safeguard = false;
@@ -472,9 +472,9 @@ TEST(Xu, OnlyDegreeTwoAndRingOne) {
   o.degree = 3;
   EXPECT_THROW(make_estimator("xu", o), UsageError);
   o.degree = 2;
-  o.ring = 2;
+  o.rings = 2;
   EXPECT_THROW(make_estimator("xu", o), UsageError);
-  o.ring = 0;
+  o.rings = 0;
   EXPECT_DOUBLE_EQ(make_estimator("xu", o)->default_ring(), 1.0);
 }
 
@@ -552,11 +552,11 @@ TEST(Registry, NamesDegreesAndErrors) {
   } catch (const UsageError& err) {
     EXPECT_NE(std::string(err.what()).find("lhf"), std::string::npos);  // lists valid names
   }
-  o.ring = 1.25;
+  o.rings = 1.25;
   EXPECT_THROW(make_estimator("lhf", o), UsageError);
-  o.ring = 0.5;
+  o.rings = 0.5;
   EXPECT_THROW(make_estimator("lhf", o), UsageError);
-  o.ring = 2.5;
+  o.rings = 2.5;
   EXPECT_NO_THROW(make_estimator("lhf", o));
   EXPECT_STREQ(to_string(VertexStatus::ok), "ok");
   EXPECT_STREQ(to_string(VertexStatus::degree_reduced), "degree_reduced");

@@ -189,10 +189,10 @@ TEST(Jet, Registry) {
   EXPECT_EQ(make_estimator("jet", o)->default_ring(), 1.5);
   EXPECT_THROW(make_estimator("jet-1", o), UsageError);
   EXPECT_THROW(make_estimator("jet-5", o), UsageError);
-  o.ring = 1.25;
+  o.rings = 1.25;
   EXPECT_THROW(make_estimator("jet-2", o), UsageError);
-  o.ring = 2.0;
-  EXPECT_EQ(make_estimator("jet-2", o)->options().ring, 2.0);
+  o.rings = 2.0;
+  EXPECT_EQ(make_estimator("jet-2", o)->options().rings, 2.0);
 }
 
 }  // namespace

@@ -603,7 +603,7 @@ TEST(LscmEstimator, Registry) {
   EXPECT_EQ(make_estimator("lscm-fast-2", o)->name(), "lscm-fast");
   EXPECT_EQ(make_estimator("lscm-fast", o)->label(), "LSCM-fast-2");
   EXPECT_THROW(make_estimator("lscm-7", o), UsageError);
-  o.ring = 1.25;
+  o.rings = 1.25;
   EXPECT_THROW(make_estimator("lscm", o), UsageError);
 }
 

@@ -26,7 +26,7 @@ TEST(Meyer, RegistryAndLabel) {
   o.degree = 2;
   EXPECT_THROW(make_estimator("meyer", o), UsageError);
   o = {};
-  o.ring = 2;
+  o.rings = 2;
   EXPECT_THROW(make_estimator("meyer", o), UsageError);
 }
 

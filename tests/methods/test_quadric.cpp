@@ -20,15 +20,15 @@ TEST(Quadric, RegistryOptionsAndLabel) {
   EXPECT_EQ(est->default_ring(), 5.0);
   EXPECT_THROW(make_estimator("quadric-2", {}), UsageError);
   EstimatorOptions o;
-  o.ring = 1.5;
+  o.rings = 1.5;
   EXPECT_THROW(make_estimator("quadric", o), UsageError);
-  o.ring = 2;
+  o.rings = 2;
   EXPECT_NO_THROW(make_estimator("quadric", o));
 }
 
 TEST(Quadric, SphereConverges) {
   EstimatorOptions o;
-  o.ring = 2;
+  o.rings = 2;
   const auto est = make_estimator("quadric", o);
   SphereErrors prev;
   for (int level = 2; level <= 5; ++level) {
@@ -61,7 +61,7 @@ TEST(Quadric, ExactOnAQuadricThroughTheVertex) {
   const MongeExact ex = monge_exact(Mat3::Identity(), Vec2::Zero(), Hs);
   for (double ring : {1.0, 3.0, 5.0}) {
     EstimatorOptions o;
-    o.ring = ring;
+    o.rings = ring;
     const VertexEstimate q = estimate_mesh(m, *make_estimator("quadric", o))[centre];
     ASSERT_EQ(q.status, VertexStatus::ok);
     EXPECT_NEAR((q.normal - ex.normal).norm(), 0.0, 1e-12);
@@ -84,7 +84,7 @@ TEST(Quadric, BoundaryVerticesComputedAndTooFewPointsFail) {
     return Vec3(x, y, 0.3 * x * x - 0.2 * y * y);
   });
   EstimatorOptions o;
-  o.ring = 2;
+  o.rings = 2;
   for (const VertexEstimate& q : estimate_mesh(m, *make_estimator("quadric", o))) {
     EXPECT_EQ(q.status, VertexStatus::ok);
     EXPECT_TRUE(std::isfinite(q.H) && q.d1.allFinite());

@@ -6,18 +6,26 @@
 
 #include "core/errors.h"
 #include "methods/estimator.h"
+#include "methods/option_schema.h"
 #include "methods/vertex_normals.h"
 
 namespace curvbench {
 namespace {
 
 TEST(VertexNormals, NamesRoundTrip) {
+  const OptionInfo& info = option_info("vertex-normals");
   for (VertexNormals w : {VertexNormals::method_default, VertexNormals::area, VertexNormals::angle,
-                          VertexNormals::max})
-    EXPECT_EQ(parse_vertex_normals(to_string(w)), w);
-  EXPECT_EQ(parse_vertex_normals("max"), VertexNormals::max);
+                          VertexNormals::max}) {
+    EstimatorOptions o, back;
+    o.vertex_normals = w;
+    set_option(back, "vertex-normals", option_text(o, info));
+    EXPECT_EQ(back.vertex_normals, w);
+  }
+  EstimatorOptions o;
+  set_option(o, "vertex-normals", "max");
+  EXPECT_EQ(o.vertex_normals, VertexNormals::max);
   try {
-    parse_vertex_normals("Area ");
+    set_option(o, "vertex-normals", "Area ");
     ADD_FAILURE() << "expected UsageError";
   } catch (const UsageError& e) {
     EXPECT_NE(std::string(e.what()).find("valid: default, area, angle, max"), std::string::npos)

@@ -1,0 +1,76 @@
+// `curvbench methods [--labels LO-HI] [--options]`: the registered estimators (name, degrees,
+// one line each) and the estimator options, both from their tables (methods/registry.cpp,
+// include/curvbench/estimator_options.h). --labels prints one label a line, each fit at each of
+// its degrees in LO..HI and each degree-free operator once, for scripts (tools/realmeshes.sh).
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "cli/commands.h"
+#include "core/errors.h"
+#include "methods/estimator.h"
+#include "methods/option_schema.h"
+
+namespace curvbench::cli {
+
+namespace {
+
+struct MethodsOptions {
+  std::string labels;  // "LO-HI"
+  bool options = false;
+};
+
+const char* scope_name(const OptionInfo& o) {
+  switch (o.scope) {
+    case OptionScope::fits:
+      return "fits";
+    case OptionScope::operators:
+      return "operators";
+    case OptionScope::one_method:
+      return o.method.c_str();
+    case OptionScope::all:
+      break;
+  }
+  return "all";
+}
+
+int run_methods(const MethodsOptions& o) {
+  if (!o.labels.empty()) {
+    const auto dash = o.labels.find('-');
+    int lo = 0, hi = 0;
+    if (dash == std::string::npos ||
+        std::sscanf(o.labels.c_str(), "%d-%d", &lo, &hi) != 2 || lo < 1 || hi < lo)
+      throw UsageError("--labels " + o.labels + ": expected LO-HI, e.g. 2-4");
+    for (const std::string& label : method_labels(lo, hi)) std::printf("%s\n", label.c_str());
+    return 0;
+  }
+  if (o.options) {
+    for (const OptionInfo& option : estimator_option_schema())
+      std::printf("%-16s %-9s default %-8s %s\n", option.name.c_str(), scope_name(option),
+                  option.default_text.c_str(), option.help.c_str());
+    return 0;
+  }
+  for (const MethodInfo& m : method_table()) {
+    const std::string degrees = m.is_fit() ? std::to_string(m.min_degree) + ".." +
+                                                 std::to_string(m.max_degree)
+                                           : "-";
+    std::printf("%-13s %-5s %s\n", m.name.c_str(), degrees.c_str(), m.summary.c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+Command add_methods_command(CLI::App& app) {
+  auto* sub = app.add_subcommand(
+      "methods", "List the estimators (name, degrees, what each does) or their options");
+  auto o = std::make_shared<MethodsOptions>();
+  sub->add_option("--labels", o->labels,
+                  "Print one label a line: every fit at each of its degrees in LO-HI (e.g. 2-4), "
+                  "every degree-free operator once");
+  sub->add_flag("--options", o->options,
+                "Print the estimator options (name, which methods take them, default, help)");
+  return [o]() { return run_methods(*o); };
+}
+
+}  // namespace curvbench::cli

@@ -1,0 +1,82 @@
+// The estimator options: ONE table, CURVBENCH_ESTIMATOR_OPTIONS below, from which everything that
+// names an option is derived: the struct EstimatorOptions (the library's and the public API's),
+// the experiment files' method options (`method lhf-2 rings=2.5`), the case store's key, the
+// check that an option suits the method it is given to, the command line's flags
+// (`curvbench estimate --rings 2.5`), Python's keyword arguments (`estimate(..., rings=2.5)`),
+// their help texts and their one validation (methods/option_schema.h; docs/extending.md).
+//
+// Each line: X(type, field, "name", default, scope, role, lowest, highest, "help")
+//   type      bool, int, double, or an enum below (text values: its *_names list)
+//   field     the member of EstimatorOptions
+//   name      the option's name: experiment key and CLI flag (--name); Python's keyword is the
+//             name with '-' as '_'
+//   default   the value meaning "not given"
+//   scope     which methods take it (any other value than the default elsewhere is an error):
+//             all; fits (the degree-d fits); operators (the degree-free discrete operators); or
+//             one method, spelled as its name with '_' for '-' (normal_cycle)
+//   role      result: it changes the estimates (an experiment's method line may set it, and it
+//             is part of a stored case's key); run: how they are computed, not what (threads,
+//             kernel: the command line, C++ and Python only)
+//   lowest, highest  the valid range of a number (inclusive; NaN is never valid)
+//   help      one line for --help, Python's docstring and docs/cli.md
+#pragma once
+
+#include <cstdint>
+
+namespace curvbench {
+
+/// Vertex normals used by the discrete operators: method_default = what the method's authors'
+/// code uses (area for Meyer, Taubin, the quadric and the normal cycle; max for Rusinkiewicz
+/// and Goldfeather).
+enum class VertexNormals : std::uint8_t { method_default, area, angle, max };
+inline constexpr const char* kVertexNormalsNames[] = {"default", "area", "angle", "max"};
+
+/// How a fitting method solves its systems (LHF-d, LOP-d, d = 1..4; the others ignore it):
+/// batched = several vertices at once, one per SIMD lane, falling back to the scalar path for
+/// every vertex it cannot finish (safeguard, degree reduction, growth); scalar = one vertex at a
+/// time, the reference. Both give the same results up to rounding.
+enum class Kernel : std::uint8_t { batched, scalar };
+inline constexpr const char* kKernelNames[] = {"batched", "scalar"};
+
+// clang-format off
+#define CURVBENCH_ESTIMATOR_OPTIONS(X)                                                             \
+  X(int, degree, "degree", 0, fits, result, 0, 6,                                                  \
+    "fitting degree d of a fit (0: the degree attached to the method name, e.g. LHF-4, else 2)")   \
+  X(double, rings, "rings", 0.0, all, result, 0.0, 1e6,                                            \
+    "neighbourhood in rings 1, 1.5, 2, ... (0: the method's default: (d+1)/2 for a fit, "          \
+    "+0.5 if noisy; Xu 1; quadric 5; the other operators take the 1-ring only)")                   \
+  X(bool, noisy, "noisy", false, all, result, 0, 1,                                                \
+    "noisy input: the default ring + 0.5 (paper section 5.3)")                                     \
+  X(bool, adaptive, "adaptive", true, fits, result, 0, 1,                                          \
+    "grow the ring by half rings until the fit has enough points (paper section 4.1)")             \
+  X(double, qr_tolerance, "qr-tol", 1e-3, fits, result, 0.0, 1.0,                                  \
+    "|R_kk| threshold of the safeguarded QR below which the degree is lowered (section 5.4)")      \
+  X(double, weight_power, "weight-power", -1.0, fits, result, -1e300, 1e300,                       \
+    "exponent p of the distance weights (|u|^2+eps)^(-p); negative: eq. (15)'s d/4")               \
+  X(bool, normal_safeguard, "safeguard", true, fits, result, 0, 1,                                 \
+    "weight gamma_i = max(0, m_i . m_0) of eq. (15): drop points whose normal turns away")         \
+  X(bool, include_centre, "centre", true, fits, result, 0, 1,                                      \
+    "fit the constant term with the vertex as a row (no: interpolate through the vertex)")         \
+  X(VertexNormals, vertex_normals, "vertex-normals", VertexNormals::method_default, operators,     \
+    result, 0, 0,                                                                                  \
+    "vertex normals of a discrete operator: area, angle or max (default: the method's own)")       \
+  X(bool, quadric_constant, "quadric-constant", false, quadric, result, 0, 1,                      \
+    "fit 6 coefficients (a constant term) instead of libigl's 5")                                  \
+  X(double, ball_factor, "ball-factor", 0.0, normal_cycle, result, 0.0, 1e6,                       \
+    "the ball of radius C times the mean edge length instead of the 1-ring (0: the 1-ring)")      \
+  X(int, threads, "threads", 0, all, run, 0, 4096,                                                 \
+    "OpenMP threads (0: all cores); the results do not depend on it")                             \
+  X(Kernel, kernel, "kernel", Kernel::batched, all, run, 0, 0,                                     \
+    "fitting kernel of LHF/LOP degree 1-4: batched (several vertices per SIMD instruction) or "    \
+    "scalar (one vertex at a time, the reference); the same results up to rounding")
+// clang-format on
+
+/// The options of every estimator (see the table above; defaults follow the paper and
+/// docs/algorithms.md). The library's make_estimator() and the public estimate() take it.
+struct EstimatorOptions {
+#define CURVBENCH_OPTION_FIELD(type, field, name, fallback, ...) type field = fallback;
+  CURVBENCH_ESTIMATOR_OPTIONS(CURVBENCH_OPTION_FIELD)
+#undef CURVBENCH_OPTION_FIELD
+};
+
+}  // namespace curvbench

@@ -1,0 +1,278 @@
+#include "methods/option_schema.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <span>
+#include <type_traits>
+
+#include "core/errors.h"
+#include "core/text.h"
+
+namespace curvbench {
+
+namespace {
+
+// ---- the text of one value, per type ------------------------------------------------------------
+
+template <class T>
+struct ValueText;
+
+template <>
+struct ValueText<bool> {
+  static constexpr OptionType type = OptionType::boolean;
+  static bool parse(std::string_view s, const std::string& name) {
+    if (s == "yes" || s == "true" || s == "1") return true;
+    if (s == "no" || s == "false" || s == "0") return false;
+    throw UsageError(name + ": expected yes or no, got '" + std::string(s) + "'");
+  }
+  static std::string text(bool b) { return b ? "yes" : "no"; }
+};
+
+template <>
+struct ValueText<int> {
+  static constexpr OptionType type = OptionType::integer;
+  static int parse(std::string_view s, const std::string& name) {
+    int x = 0;
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), x);
+    if (ec != std::errc() || end != s.data() + s.size() || s.empty())
+      throw UsageError(name + ": '" + std::string(s) + "' is not an integer");
+    return x;
+  }
+  static std::string text(int x) { return std::to_string(x); }
+};
+
+template <>
+struct ValueText<double> {
+  static constexpr OptionType type = OptionType::real;
+  static double parse(std::string_view s, const std::string& name) {
+    try {
+      return parse_double(std::string(s), name);
+    } catch (const InputError&) {
+      throw UsageError(name + ": '" + std::string(s) + "' is not a number");
+    }
+  }
+  static std::string text(double x) {  // the shortest text that reads back to x
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, x);
+    return std::string(buf, r.ptr);
+  }
+};
+
+template <class E, std::size_t N>
+struct ChoiceText {
+  static constexpr OptionType type = OptionType::choice;
+  static E parse(std::span<const char* const, N> names, std::string_view s,
+                 const std::string& name) {
+    for (std::size_t i = 0; i < N; ++i)
+      if (s == names[i]) return static_cast<E>(i);
+    std::string valid;
+    for (const char* n : names) valid += (valid.empty() ? "" : ", ") + std::string(n);
+    throw UsageError(name + ": unknown value '" + std::string(s) + "' (valid: " + valid + ")");
+  }
+};
+
+template <>
+struct ValueText<VertexNormals> : ChoiceText<VertexNormals, std::size(kVertexNormalsNames)> {
+  static VertexNormals parse(std::string_view s, const std::string& name) {
+    return ChoiceText::parse(kVertexNormalsNames, s, name);
+  }
+  static std::string text(VertexNormals v) { return kVertexNormalsNames[static_cast<int>(v)]; }
+  static std::vector<std::string> choices() {
+    return {std::begin(kVertexNormalsNames), std::end(kVertexNormalsNames)};
+  }
+};
+
+template <>
+struct ValueText<Kernel> : ChoiceText<Kernel, std::size(kKernelNames)> {
+  static Kernel parse(std::string_view s, const std::string& name) {
+    return ChoiceText::parse(kKernelNames, s, name);
+  }
+  static std::string text(Kernel k) { return kKernelNames[static_cast<int>(k)]; }
+  static std::vector<std::string> choices() {
+    return {std::begin(kKernelNames), std::end(kKernelNames)};
+  }
+};
+
+// ---- one option: its description and the functions that reach its field -------------------------
+
+struct Option {
+  OptionInfo info;
+  void (*set_text)(EstimatorOptions&, std::string_view, const OptionInfo&);
+  void (*set_value)(EstimatorOptions&, const OptionValue&, const OptionInfo&);
+  std::string (*text)(const EstimatorOptions&);
+  bool (*is_default)(const EstimatorOptions&);
+  void (*validate)(const EstimatorOptions&, const OptionInfo&);
+};
+
+template <class T, T EstimatorOptions::*field>
+struct Access {
+  using Text = ValueText<T>;
+  static void check(T x, const OptionInfo& info) {
+    if constexpr (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>) {
+      const double v = static_cast<double>(x);
+      if (!(v >= info.lowest && v <= info.highest))
+        throw UsageError(info.name + " " + format_g(v) + ": out of range (valid: " +
+                         format_g(info.lowest) + " to " + format_g(info.highest) + ")");
+    }
+  }
+  static void set_text(EstimatorOptions& o, std::string_view s, const OptionInfo& info) {
+    const T x = Text::parse(s, info.name);
+    check(x, info);
+    o.*field = x;
+  }
+  static void set_value(EstimatorOptions& o, const OptionValue& v, const OptionInfo& info) {
+    const auto wrong = [&](const char* want) {
+      return UsageError(info.name + ": expected " + want);
+    };
+    T x{};
+    if constexpr (std::is_same_v<T, bool>) {
+      if (!std::holds_alternative<bool>(v)) throw wrong("True or False");
+      x = std::get<bool>(v);
+    } else if constexpr (std::is_same_v<T, int>) {
+      if (!std::holds_alternative<long long>(v)) throw wrong("an integer");
+      const long long i = std::get<long long>(v);
+      check(static_cast<T>(std::clamp<long long>(i, -(1LL << 30), 1LL << 30)), info);
+      x = static_cast<int>(i);
+    } else if constexpr (std::is_same_v<T, double>) {
+      if (std::holds_alternative<long long>(v))
+        x = static_cast<double>(std::get<long long>(v));
+      else if (std::holds_alternative<double>(v))
+        x = std::get<double>(v);
+      else
+        throw wrong("a number");
+    } else {
+      if (!std::holds_alternative<std::string>(v)) throw wrong("a string");
+      x = Text::parse(std::get<std::string>(v), info.name);
+    }
+    check(x, info);
+    o.*field = x;
+  }
+  static std::string text(const EstimatorOptions& o) { return Text::text(o.*field); }
+  static bool is_default(const EstimatorOptions& o) {
+    return o.*field == EstimatorOptions{}.*field;
+  }
+  static void validate(const EstimatorOptions& o, const OptionInfo& info) { check(o.*field, info); }
+  static std::vector<std::string> choices() {
+    if constexpr (Text::type == OptionType::choice)
+      return Text::choices();
+    else
+      return {};
+  }
+};
+
+std::string python_name(std::string name) {
+  for (char& c : name)
+    if (c == '-') c = '_';
+  return name;
+}
+
+template <class T, T EstimatorOptions::*field>
+Option make_option(const char* name, std::string_view scope, std::string_view role,
+                   double lowest, double highest, const char* help) {
+  using A = Access<T, field>;
+  OptionInfo info;
+  info.name = name;
+  info.python_name = python_name(name);
+  info.type = A::Text::type;
+  if (scope == "all") {
+    info.scope = OptionScope::all;
+  } else if (scope == "fits") {
+    info.scope = OptionScope::fits;
+  } else if (scope == "operators") {
+    info.scope = OptionScope::operators;
+  } else {
+    info.scope = OptionScope::one_method;
+    info.method = std::string(scope);
+    for (char& c : info.method)
+      if (c == '_') c = '-';
+  }
+  info.role = role == "run" ? OptionRole::run : OptionRole::result;
+  info.lowest = lowest;
+  info.highest = highest;
+  info.choices = A::choices();
+  info.default_text = A::text(EstimatorOptions{});
+  info.help = help;
+  return {std::move(info), &A::set_text, &A::set_value, &A::text, &A::is_default, &A::validate};
+}
+
+const std::vector<Option>& options_table() {
+#define CURVBENCH_OPTION_ENTRY(type, field, name, fallback, scope, role, lowest, highest, help) \
+  make_option<type, &EstimatorOptions::field>(name, #scope, #role, lowest, highest, help),
+  static const std::vector<Option> table = {CURVBENCH_ESTIMATOR_OPTIONS(CURVBENCH_OPTION_ENTRY)};
+#undef CURVBENCH_OPTION_ENTRY
+  return table;
+}
+
+const Option& find_option(std::string_view name) {
+  for (const Option& o : options_table())
+    if (name == o.info.name || name == o.info.python_name) return o;
+  std::string valid;
+  for (const Option& o : options_table()) valid += (valid.empty() ? "" : ", ") + o.info.name;
+  throw UsageError("unknown option '" + std::string(name) + "' (valid: " + valid + ")");
+}
+
+std::string scope_text(const OptionInfo& info) {
+  switch (info.scope) {
+    case OptionScope::fits:
+      return "the fits only (the methods with a degree)";
+    case OptionScope::operators:
+      return "the discrete operators only";
+    case OptionScope::one_method:
+      return "method '" + info.method + "' only";
+    case OptionScope::all:
+      break;
+  }
+  return "every method";
+}
+
+}  // namespace
+
+const std::vector<OptionInfo>& estimator_option_schema() {
+  static const std::vector<OptionInfo> infos = [] {
+    std::vector<OptionInfo> out;
+    for (const Option& o : options_table()) out.push_back(o.info);
+    return out;
+  }();
+  return infos;
+}
+
+const OptionInfo& option_info(std::string_view name) {
+  return find_option(name).info;
+}
+
+void set_option(EstimatorOptions& options, std::string_view name, std::string_view text) {
+  const Option& o = find_option(name);
+  o.set_text(options, text, o.info);
+}
+
+void set_option_value(EstimatorOptions& options, std::string_view name, const OptionValue& value) {
+  const Option& o = find_option(name);
+  o.set_value(options, value, o.info);
+}
+
+std::string option_text(const EstimatorOptions& options, const OptionInfo& option) {
+  return find_option(option.name).text(options);
+}
+
+bool option_is_default(const EstimatorOptions& options, const OptionInfo& option) {
+  return find_option(option.name).is_default(options);
+}
+
+void validate_options(const EstimatorOptions& options) {
+  for (const Option& o : options_table()) o.validate(options, o.info);
+}
+
+void check_options_apply(const EstimatorOptions& options, const std::string& name, bool is_fit) {
+  for (const Option& o : options_table()) {
+    const OptionInfo& info = o.info;
+    const bool applies = info.scope == OptionScope::all ||
+                         (info.scope == OptionScope::fits && is_fit) ||
+                         (info.scope == OptionScope::operators && !is_fit) ||
+                         (info.scope == OptionScope::one_method && info.method == name);
+    if (!applies && !o.is_default(options))
+      throw UsageError(info.name + " applies to " + scope_text(info) + ", not to '" + name + "'");
+  }
+}
+
+}  // namespace curvbench
