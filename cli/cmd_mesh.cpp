@@ -23,6 +23,7 @@ namespace {
 
 struct MeshOptions {
   std::string family;
+  bool list = false;  // --list: the family table
   int level = 1;
   int noise_order = 0;
   std::uint64_t seed = 1;
@@ -176,9 +177,15 @@ Command add_mesh_command(CLI::App& app) {
   auto* max_grid = sub->add_option("--max-grid", o->max_grid,
                                    "With --table4: largest grid n (16, 32, 64, 128 or 256; "
                                    "default 256)");
-  return [o, family, level, noise, seed, jitter, output, table, max_grid]() {
+  auto* list = sub->add_flag("--list", o->list,
+                             "Print the family table (docs/mesh_families.md) and exit");
+  return [o, family, level, noise, seed, jitter, output, table, max_grid, list]() {
+    if (list->count() > 0) {
+      std::fputs(mesh_family_markdown().c_str(), stdout);
+      return 0;
+    }
     if ((output->count() > 0) == (table->count() > 0))
-      throw UsageError("mesh: give exactly one of --output FILE and --table4");
+      throw UsageError("mesh: give exactly one of --output FILE, --table4 and --list");
     if (table->count() > 0) {
       for (const CLI::Option* opt : {family, level, noise, seed, jitter})
         if (opt->count() > 0)

@@ -23,8 +23,12 @@ void EstimatorOptionFlags::add_to(CLI::App& app) {
       help += " [" + names + "]";
     }
     help += " (default " + option.default_text + ")";
+    const char* type = option.type == OptionType::integer ? "INT"
+                       : option.type == OptionType::real  ? "NUMBER"
+                                                          : "NAME";
     app.add_option_function<std::string>(
-        "--" + name, [given, name](const std::string& text) { (*given)[name] = text; }, help);
+           "--" + name, [given, name](const std::string& text) { (*given)[name] = text; }, help)
+        ->type_name(type);
   }
 }
 

@@ -75,16 +75,11 @@ std::vector<std::vector<std::string>> read_simple_csv(const std::string& path) {
 }
 
 std::string family_caption(const std::string& family) {
-  if (family == "torus-jittered")
-    return "well-shaped torus (staggered mesh with seeded tangential jitter; the stand-in for the "
-           "paper's GAMBIT meshes)";
-  if (family == "torus-structured")
-    return "perfectly structured torus (identical stencils everywhere; not in the paper)";
-  if (family == "torus-iso-projected") return "poor-shaped torus (isosurface, projected)";
-  if (family == "torus-iso") return "noisy torus (isosurface, unprojected)";
-  if (family == "bump-48") return "4-8 mesh";
-  if (family == "bump-irregular") return "irregular mesh";
-  return family;
+  try {
+    return mesh_family(family).caption;
+  } catch (const UsageError&) {
+    return family;  // not a generated family
+  }
 }
 
 // Rows of one panel on one family, grouped by method in first-seen order.

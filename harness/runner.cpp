@@ -20,8 +20,7 @@ namespace {
 
 std::string noise_label(const Experiment& e, const std::string& family) {
   if (e.noise_order > 0) return "h^" + std::to_string(e.noise_order);
-  if (family == "torus-iso") return "isosurface";
-  return "none";
+  return mesh_family(family).noise_label;
 }
 
 double case_work(const RunCase& c) {

@@ -15,44 +15,139 @@
 #include "meshgen/torus_structured.h"
 #include "meshgen/torus_unstructured.h"
 
+// clang-format off
+// X(name, max_level, generator, caption, paper_role, noise_label): generator is a function
+// `GeneratedMesh generator(const MeshSpec&)` (declared by the line; defined below or in the
+// family's own file), called with a valid level; the noise of MeshSpec is added afterwards.
+#define CURVBENCH_MESH_FAMILIES(X)                                                                \
+  X("torus-structured", 6, generate_torus_structured,                                             \
+    "perfectly structured torus (identical stencils everywhere; not in the paper)",               \
+    "not in the paper (extra rows; levels 5-6 for the scaling benchmark)", "none")                \
+  X("torus-jittered", 6, generate_torus_jittered,                                                 \
+    "jittered structured torus (seeded tangential jitter; not in the paper)",                     \
+    "not in the paper (extra rows)", "none")                                                      \
+  X("torus-iso", 5, generate_torus_iso,                                                           \
+    "noisy torus (isosurface, unprojected)",                                                      \
+    "the noisy torus of section 5.3 (Table 4's meshes, vertices as marching cubes put them)",     \
+    "isosurface")                                                                                 \
+  X("torus-iso-projected", 5, generate_torus_iso_projected,                                       \
+    "poor-shaped torus (isosurface, projected)",                                                  \
+    "the poor-shaped torus of section 5.1 (Table 4's meshes projected onto the torus)", "none")   \
+  X("bump-48", max_bump_level(), generate_bump_48, "4-8 mesh",                                    \
+    "the 4-8 mesh of the Gaussian bump, section 5.2", "none")                                     \
+  X("bump-irregular", max_bump_level(), generate_bump_irregular, "irregular mesh",                \
+    "the irregular mesh of the Gaussian bump, section 5.2", "none")                               \
+  X("torus-unstructured", 4, generate_torus_unstructured,                                         \
+    "well-shaped torus (Delaunay-refined; the stand-in for the paper's GAMBIT meshes)",           \
+    "the well-shaped torus of sections 5.1, 5.3 and Table 5", "none")
+// clang-format on
+
 namespace curvbench {
+
+#define CURVBENCH_DECLARE_GENERATOR(name, max_level, generator, ...) \
+  GeneratedMesh generator(const MeshSpec& spec);
+CURVBENCH_MESH_FAMILIES(CURVBENCH_DECLARE_GENERATOR)
+#undef CURVBENCH_DECLARE_GENERATOR
+
+GeneratedMesh generate_torus_unstructured(const MeshSpec& spec) {
+  return torus_unstructured(spec.level, spec.seed);
+}
+
+GeneratedMesh generate_torus_structured(const MeshSpec& spec) {
+  return torus_structured(spec.level, spec.jitter, spec.seed);
+}
+
+GeneratedMesh generate_torus_jittered(const MeshSpec& spec) {
+  GeneratedMesh gm = torus_structured(spec.level, true, spec.seed);
+  gm.family = spec.family;
+  return gm;
+}
+
+GeneratedMesh generate_torus_iso(const MeshSpec& spec) {
+  GeneratedMesh gm = torus_isosurface(isosurface_grid_points(spec.level), false);
+  gm.family = spec.family;
+  gm.level = spec.level;
+  return gm;
+}
+
+GeneratedMesh generate_torus_iso_projected(const MeshSpec& spec) {
+  GeneratedMesh gm = torus_isosurface(isosurface_grid_points(spec.level), true);
+  gm.family = spec.family;
+  gm.level = spec.level;
+  return gm;
+}
+
+GeneratedMesh generate_bump_48(const MeshSpec& spec) {
+  return bump_48(spec.level);
+}
+
+GeneratedMesh generate_bump_irregular(const MeshSpec& spec) {
+  return bump_irregular(spec.level, spec.seed);
+}
 
 namespace {
 
-struct FamilyInfo {
-  const char* name;
-  int max_level;
+struct FamilyEntry {
+  MeshFamilyInfo info;
+  GeneratedMesh (*generate)(const MeshSpec&);
 };
 
-constexpr FamilyInfo kFamilies[] = {
-    {"torus-structured", 6},    {"torus-jittered", 6},         {"torus-iso", 5},
-    {"torus-iso-projected", 5}, {"bump-48", max_bump_level()}, {"bump-irregular", max_bump_level()},
-    {"torus-unstructured", 4},
-};
+const std::vector<FamilyEntry>& family_entries() {
+#define CURVBENCH_FAMILY_ENTRY(name, max_level, generator, caption, role, noise) \
+  FamilyEntry{{name, max_level, caption, role, noise}, &generator},
+  static const std::vector<FamilyEntry> entries = {
+      CURVBENCH_MESH_FAMILIES(CURVBENCH_FAMILY_ENTRY)};
+#undef CURVBENCH_FAMILY_ENTRY
+  return entries;
+}
+
 constexpr int kMaxNoiseOrder = 4;
 
-std::string family_list() {
-  std::string s;
-  for (const auto& f : kFamilies) s += (s.empty() ? "" : ", ") + std::string(f.name);
-  return s;
+const FamilyEntry& find_family(const std::string& name) {
+  for (const FamilyEntry& f : family_entries())
+    if (f.info.name == name) return f;
+  std::string valid;
+  for (const FamilyEntry& f : family_entries()) valid += (valid.empty() ? "" : ", ") + f.info.name;
+  throw UsageError("unknown mesh family '" + name + "' (valid: " + valid + ")");
 }
 
 }  // namespace
 
+const std::vector<MeshFamilyInfo>& mesh_family_table() {
+  static const std::vector<MeshFamilyInfo> table = [] {
+    std::vector<MeshFamilyInfo> out;
+    for (const FamilyEntry& f : family_entries()) out.push_back(f.info);
+    return out;
+  }();
+  return table;
+}
+
+const MeshFamilyInfo& mesh_family(const std::string& name) {
+  const FamilyEntry& entry = find_family(name);
+  return mesh_family_table()[static_cast<size_t>(&entry - family_entries().data())];
+}
+
 std::vector<std::string> mesh_families() {
   std::vector<std::string> names;
-  for (const auto& f : kFamilies) names.emplace_back(f.name);
+  for (const MeshFamilyInfo& f : mesh_family_table()) names.push_back(f.name);
   return names;
 }
 
 int max_mesh_level(const std::string& family) {
-  for (const auto& f : kFamilies)
-    if (family == f.name) return f.max_level;
-  throw UsageError("unknown mesh family '" + family + "' (valid: " + family_list() + ")");
+  return mesh_family(family).max_level;
+}
+
+std::string mesh_family_markdown() {
+  std::string md = "| family | levels | in the paper | noise label |\n|---|---|---|---|\n";
+  for (const MeshFamilyInfo& f : mesh_family_table())
+    md += "| `" + f.name + "` | 1-" + std::to_string(f.max_level) + " | " + f.paper_role + " | " +
+          f.noise_label + " |\n";
+  return md;
 }
 
 GeneratedMesh generate_mesh(const MeshSpec& spec) {
-  const int max_level = max_mesh_level(spec.family);
+  const FamilyEntry& family = find_family(spec.family);
+  const int max_level = family.info.max_level;
   if (spec.level < 1 || spec.level > max_level)
     throw UsageError("mesh level " + std::to_string(spec.level) + " out of range for " +
                      spec.family + " (valid: 1.." + std::to_string(max_level) + ")");
@@ -61,24 +156,7 @@ GeneratedMesh generate_mesh(const MeshSpec& spec) {
                      " out of range (valid: 0 = none, 1.." + std::to_string(kMaxNoiseOrder) + ")");
   if (spec.jitter && spec.family != "torus-structured")
     throw UsageError("jitter applies only to the torus-structured family, not " + spec.family);
-
-  GeneratedMesh gm;
-  if (spec.family == "torus-structured") {
-    gm = torus_structured(spec.level, spec.jitter, spec.seed);
-  } else if (spec.family == "torus-jittered") {
-    gm = torus_structured(spec.level, true, spec.seed);
-    gm.family = spec.family;
-  } else if (spec.family == "torus-iso" || spec.family == "torus-iso-projected") {
-    gm = torus_isosurface(isosurface_grid_points(spec.level), spec.family == "torus-iso-projected");
-    gm.family = spec.family;
-    gm.level = spec.level;
-  } else if (spec.family == "torus-unstructured") {
-    gm = torus_unstructured(spec.level, spec.seed);
-  } else if (spec.family == "bump-48") {
-    gm = bump_48(spec.level);
-  } else {  // bump-irregular (the family was validated above)
-    gm = bump_irregular(spec.level, spec.seed);
-  }
+  GeneratedMesh gm = family.generate(spec);
   if (spec.noise_order > 0) gm = add_normal_noise(gm, spec.noise_order, spec.seed);
   return gm;
 }

@@ -1,20 +1,7 @@
-// Dispatcher over the test-mesh generators (docs/algorithms.md §10), used by `curvbench mesh` and
-// the experiments, plus simple mesh-quality statistics.
-//
-// Families and levels:
-//   torus-structured     levels 1..6  staggered well-shaped torus, n_u x n_v = 64x22 .. 512x176
-//                                     at levels 1-4 (the paper's); 5-6 (to 2048x704 = 1.44M
-//                                     vertices) for scaling benchmarks (torus_structured.h;
-//                                     --jitter allowed)
-//   torus-jittered       levels 1..6  the same with seeded tangential jitter of +-0.15 cells,
-//                                     vertices on the torus: the stand-in for the paper's
-//                                     unstructured GAMBIT meshes (breaks the stencil symmetry)
-//   torus-iso            levels 1..5  marching-cubes torus, n = 16..256 grid points per axis,
-//                                     vertices left where marching cubes put them (§5.3 noise)
-//   torus-iso-projected  levels 1..5  the same, vertices projected onto the torus (§5.1)
-//   bump-48              levels 1..5  4-8 mesh of the Gaussian bump, N = 16..256 (bump_grid.h)
-//   bump-irregular       levels 1..5  seeded jittered Delaunay mesh of the bump (bump_irregular.h)
-// noise_order k > 0 adds alpha h^k normal noise (noise.h) with the same seed.
+// The test-mesh families (docs/mesh_families.md, docs/algorithms.md §10): ONE table,
+// CURVBENCH_MESH_FAMILIES in generate.cpp, gives each family's name, levels, generator, caption
+// (REPORT.md), role in the paper and noise label (the results' `noise` column); generate_mesh()
+// dispatches over it. noise_order k > 0 adds alpha h^k normal noise (noise.h) with the seed.
 #pragma once
 
 #include <cstdint>
@@ -38,8 +25,26 @@ struct MeshSpec {
 /// torus-structured.
 GeneratedMesh generate_mesh(const MeshSpec& spec);
 
-/// The family names, in the order listed above.
+/// One line of the family table.
+struct MeshFamilyInfo {
+  std::string name;         ///< "torus-unstructured"
+  int max_level = 1;        ///< levels 1..max_level
+  std::string caption;      ///< how REPORT.md names it
+  std::string paper_role;   ///< what it stands for in the paper (or "not in the paper")
+  std::string noise_label;  ///< the results' noise column without controlled noise
+};
+
+/// Every family, in table order.
+const std::vector<MeshFamilyInfo>& mesh_family_table();
+
+/// The family called `name`; throws UsageError naming the valid ones.
+const MeshFamilyInfo& mesh_family(const std::string& name);
+
+/// The family names, in table order.
 std::vector<std::string> mesh_families();
+
+/// The family table as the Markdown table of docs/mesh_families.md (a test checks the doc).
+std::string mesh_family_markdown();
 
 /// Largest valid level of a family (levels start at 1). Throws UsageError for an unknown family.
 int max_mesh_level(const std::string& family);

@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -126,6 +128,42 @@ TEST(Generate, MeshQuality) {
   EXPECT_EQ(qt.max_boundary_valence, 0);
   EXPECT_GT(qt.min_angle_deg, 40.0);  // near-equilateral at the mean radius
   EXPECT_LT(qt.max_angle_deg, 90.0);
+}
+
+}  // namespace
+}  // namespace curvbench
+
+namespace curvbench {
+namespace {
+
+// docs/mesh_families.md carries the family table as mesh_family_markdown() writes it, between
+// its two marker lines, so that the doc cannot drift from the table in generate.cpp.
+TEST(Generate, TheDocsTableIsTheFamilyTable) {
+  std::ifstream in(std::string(CURVBENCH_SOURCE_DIR) + "/docs/mesh_families.md");
+  ASSERT_TRUE(in) << "docs/mesh_families.md";
+  const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string begin = "<!-- family table: begin -->\n", end = "<!-- family table: end -->";
+  const auto a = doc.find(begin), b = doc.find(end);
+  ASSERT_NE(a, std::string::npos);
+  ASSERT_NE(b, std::string::npos);
+  EXPECT_EQ(doc.substr(a + begin.size(), b - a - begin.size()), mesh_family_markdown());
+}
+
+// Every family of the table generates its first level, carries its name, and has a caption and
+// a role (the report's captions and the docs table come from them).
+TEST(Generate, EveryFamilyOfTheTableGeneratesWithItsName) {
+  for (const MeshFamilyInfo& f : mesh_family_table()) {
+    EXPECT_FALSE(f.caption.empty()) << f.name;
+    EXPECT_FALSE(f.paper_role.empty()) << f.name;
+    EXPECT_EQ(&mesh_family(f.name), &f);
+    if (f.name == "torus-unstructured") continue;  // meshing takes seconds; test_torus_unstructured
+    MeshSpec spec;
+    spec.family = f.name;
+    const GeneratedMesh g = generate_mesh(spec);
+    EXPECT_EQ(g.family, f.name);
+    EXPECT_EQ(g.level, 1) << f.name;
+    EXPECT_GT(g.mesh.num_vertices(), 100) << f.name;
+  }
 }
 
 }  // namespace
