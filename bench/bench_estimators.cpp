@@ -78,33 +78,19 @@ std::string benchmark_name(std::string label) {
   return label;
 }
 
-// Degree 0: a degree-free discrete operator.
-const std::vector<MethodSpec> kMethods = {{"xu", 2, 1},
-                                          {"lop", 2, 1},
-                                          {"lhf", 2, 1},
-                                          {"lhf", 3, 1},
-                                          {"lhf", 4, 1},
-                                          {"lscm", 2, 1},
-                                          {"lscm", 3, 1},
-                                          {"lscm", 4, 1},
-                                          {"lscm-fast", 2, 1},
-                                          {"lscm-fast", 3, 1},
-                                          {"lscm-fast", 4, 1},
-                                          {"jet", 2, 1},
-                                          {"jet", 3, 1},
-                                          {"jet", 4, 1},
-                                          {"lhf", 2, 2},
-                                          {"meyer", 0, 1},
-                                          {"taubin", 0, 1},
-                                          {"rusinkiewicz", 0, 1},
-                                          {"quadric", 0, 1},
-                                          {"goldfeather", 0, 1},
-                                          {"normal-cycle", 0, 1},
-                                          {"lhf", 2, 1, false, Kernel::scalar},
-                                          {"lhf", 4, 1, false, Kernel::scalar},
-                                          {"lop", 2, 1, false, Kernel::scalar},
-                                          {"lhf", 2, 1, false, Kernel::batched, true},
-                                          {"lhf", 4, 1, false, Kernel::batched, true}};
+// Every registered method at its bench degrees (MethodInfo::bench_degrees; 0: a degree-free
+// operator), one thread, in registry order; then the extra rows: LHF-2 on 2 threads, the scalar
+// kernel of LHF-2, LHF-4 and LOP-2, and LHF-2 and LHF-4 with prebuilt neighbourhoods.
+std::vector<MethodSpec> methods_to_time() {
+  std::vector<MethodSpec> out;
+  for (const MethodInfo& m : method_table())
+    for (int degree : m.bench_degrees) out.push_back({m.name, degree, 1});
+  out.push_back({"lhf", 2, 2});
+  for (const auto& [name, degree] : {std::pair{"lhf", 2}, {"lhf", 4}, {"lop", 2}})
+    out.push_back({name, degree, 1, false, Kernel::scalar});
+  for (int degree : {2, 4}) out.push_back({"lhf", degree, 1, false, Kernel::batched, true});
+  return out;
+}
 
 std::array<std::optional<GeneratedMesh>, kScalingLevels + 1> g_meshes;
 std::array<std::unique_ptr<NeighbourhoodCache>, kScalingLevels + 1> g_neighbourhoods;
@@ -163,7 +149,7 @@ void BM_Estimate(benchmark::State& state, const MethodSpec spec) {
 }
 
 void register_all() {
-  for (const MethodSpec& m : kMethods) {
+  for (const MethodSpec& m : methods_to_time()) {
     EstimatorOptions o;
     o.degree = m.degree;
     o.kernel = m.kernel;

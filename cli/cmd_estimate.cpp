@@ -157,7 +157,7 @@ int run_estimate(const EstimateOptions& o) {
   const double seconds = run.estimate_seconds;
   const double orient_seconds = total_seconds - run.estimate_seconds - run.sink_seconds;
 
-  const std::array<int, 6>& counts = run.status_counts;
+  const auto& counts = run.status_counts;
   std::fprintf(stderr,
                "curvbench estimate: %s on %s: %d vertices (ok %d, degree_reduced %d, failed %d, "
                "excluded %d, disk_cut %d, sign_undetermined %d) in %.3f s (%.2f us/vertex) -> %s\n",

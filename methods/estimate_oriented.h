@@ -37,7 +37,7 @@ using EstimateSink =
 /// What the block form returns besides the blocks.
 struct OrientedRun {
   OrientationResult orientation;
-  std::array<int, 6> status_counts{};  ///< vertices per VertexStatus code
+  std::array<int, kVertexStatusCount> status_counts{};  ///< vertices per VertexStatus code
   double estimate_seconds = 0.0;       ///< wall time of the estimation (normals, neighbourhoods,
                                        ///< fits), without orientation and without the sink
   double sink_seconds = 0.0;           ///< wall time spent in `sink`

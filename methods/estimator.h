@@ -44,6 +44,9 @@ enum class VertexStatus : std::uint8_t {
                           ///< the normal and the curvatures are arbitrary
 };
 
+/// The number of VertexStatus values (arrays indexed by status).
+inline constexpr int kVertexStatusCount = 6;
+
 const char* to_string(VertexStatus status);
 
 /// The quantities a method computes. A quantity it does not compute is NaN in every row, also

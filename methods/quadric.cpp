@@ -10,8 +10,9 @@
 //   points         (u, v, w) = ((x - x_v) . t1, (x - x_v) . t2, (x - x_v) . n)
 //   fit            w = a u^2 + b u v + c v^2 + d u + e v  (+ f with quadric_constant), unweighted
 //                  least squares (coordinates scaled by their RMS distance for conditioning;
-//                  normal equations, a rank-deficient system fails the vertex, where libigl's
-//                  SVD would return its minimum-norm solution)
+//                  normal equations); where the facing points give a rank-deficient system,
+//                  the fit is redone over the whole k-ring; rank-deficient there too fails the
+//                  vertex, where libigl's SVD would return its minimum-norm solution
 //   quantities     the height-function column of paper Table 1 at (0, 0) with f_u = d, f_v = e,
 //                  f_uu = 2a, f_uv = b, f_vv = 2c (curvature_from_height): libigl's fundamental
 //                  forms E, F, G, L, M, N of the quadric give the same shape operator. The
@@ -178,6 +179,21 @@ class QuadricEstimator final : public OperatorEstimator {
       if (normals.row(w).dot(n) > 0.0) ws.keep.push_back(w);
     if (1 + static_cast<int>(ws.keep.size()) < kMinPoints) ws.keep.assign(nb.begin(), nb.end());
     const LocalFrame frame = make_local_frame(n);
+    if (fit(mesh, v, frame, ring, ws, out)) return;
+    // The facing points alone do not determine the quadric (e.g. a thin wall whose far side
+    // turns away, leaving points on a line): the whole k-ring, as when too few of them face.
+    if (ws.keep.size() < nb.size()) {
+      ws.keep.assign(nb.begin(), nb.end());
+      if (fit(mesh, v, frame, ring, ws, out)) return;
+    }
+    set_failed(ring, 1 + static_cast<int>(ws.keep.size()), out);
+  }
+
+ private:
+  // The fit over the points ws.keep (and the centre v) in `frame`; false, with `out` untouched
+  // or partly written, if the system is rank-deficient or the result not finite.
+  bool fit(const Mesh& mesh, int v, const LocalFrame& frame, double ring, QuadricWorkspace& ws,
+           VertexEstimate& out) const {
     const Vec3 x0 = mesh.position(v);
     // Local coordinates (u, v, w) of the points, once; RMS tangent distance s: the scale of the
     // (u, v) coordinates.
@@ -194,10 +210,7 @@ class QuadricEstimator final : public OperatorEstimator {
     }
     const double s = std::sqrt(s2 / static_cast<double>(count));
     const int points = 1 + static_cast<int>(count);
-    if (!(s > 0.0) || !std::isfinite(s)) {
-      set_failed(ring, points, out);
-      return;
-    }
+    if (!(s > 0.0) || !std::isfinite(s)) return false;
     const bool constant = options_.quadric_constant;
     const double inv = 1.0 / s;
     Eigen::Matrix<double, 6, 6> ata;
@@ -209,27 +222,20 @@ class QuadricEstimator final : public OperatorEstimator {
     Eigen::Matrix<double, 6, 1> coef = Eigen::Matrix<double, 6, 1>::Zero();
     if (constant) {
       const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> ldlt(ata);
-      if (!solvable(ldlt.vectorD())) {
-        set_failed(ring, points, out);
-        return;
-      }
+      if (!solvable(ldlt.vectorD())) return false;
       coef = ldlt.solve(atb);
     } else {
       const Eigen::LDLT<Eigen::Matrix<double, 5, 5>> ldlt(ata.topLeftCorner<5, 5>());
-      if (!solvable(ldlt.vectorD())) {
-        set_failed(ring, points, out);
-        return;
-      }
+      if (!solvable(ldlt.vectorD())) return false;
       coef.head<5>() = ldlt.solve(atb.head<5>());
     }
     // Back to unscaled coordinates: w = s W(u/s, v/s), so second derivatives divide by s.
     const Curvature c =
         curvature_from_height(frame.t1, frame.t2, frame.m, coef(3), coef(4), 2.0 * coef(0) * inv,
                               coef(1) * inv, 2.0 * coef(2) * inv);
-    if (!set_operator_quantities(c, computes(), points, ring, out)) set_failed(ring, points, out);
+    return set_operator_quantities(c, computes(), points, ring, out);
   }
 
- private:
   // The normal equations of the rows (u^2, u v, v^2, u, v[, 1]) . coef = w over the points
   // (u, v, w) = inv * local[3i .. 3i+2] and the centre (0, 0, 0), in one pass: the upper
   // triangle of the N x N matrix is accumulated, then mirrored.

@@ -11,9 +11,10 @@ BUILD=${1:-build}
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 WORK=${WORK:-$BUILD/realmeshes}
 MESHES=${MESHES:-"bunny00 armadillo refined_elephant fandisk_large ChineseDragon-10kv cheese blade man bear"}
-METHODS=${METHODS:-"lhf-2 lhf-3 lhf-4 lop-2 lop-3 lop-4 xu-2 jet-2 jet-3 jet-4 lscm-2 lscm-3 lscm-4 lscm-fast-2 lscm-fast-3 lscm-fast-4 lscm-cg-2 lscm-cg-3 lscm-cg-4 meyer taubin rusinkiewicz quadric goldfeather normal-cycle"}
-REF=${REF:-lhf-4}  # the reference of the agreement columns and of the pictures
 CB="$BUILD/curvbench"
+# Every registered method: the fits at degrees 2-4, the degree-free operators once.
+METHODS=${METHODS:-$("$CB" methods --labels 2-4 | tr '\n' ' ')}
+REF=${REF:-lhf-4}  # the reference of the agreement columns and of the pictures
 mkdir -p "$WORK"
 DATA="$WORK/data/meshes"
 if [ ! -d "$DATA" ]; then
