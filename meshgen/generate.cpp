@@ -89,23 +89,28 @@ namespace {
 
 struct FamilyEntry {
   MeshFamilyInfo info;
-  GeneratedMesh (*generate)(const MeshSpec&);
+  MeshGenerator generate;
 };
 
-const std::vector<FamilyEntry>& family_entries() {
+// The family table: the lines of CURVBENCH_MESH_FAMILIES, then register_mesh_family() additions.
+std::vector<FamilyEntry>& family_entries() {
 #define CURVBENCH_FAMILY_ENTRY(name, max_level, generator, caption, role, noise) \
   FamilyEntry{{name, max_level, caption, role, noise}, &generator},
-  static const std::vector<FamilyEntry> entries = {
-      CURVBENCH_MESH_FAMILIES(CURVBENCH_FAMILY_ENTRY)};
+  static std::vector<FamilyEntry> entries = {CURVBENCH_MESH_FAMILIES(CURVBENCH_FAMILY_ENTRY)};
 #undef CURVBENCH_FAMILY_ENTRY
   return entries;
 }
 
 constexpr int kMaxNoiseOrder = 4;
 
-const FamilyEntry& find_family(const std::string& name) {
+const FamilyEntry* find_entry(const std::string& name) {
   for (const FamilyEntry& f : family_entries())
-    if (f.info.name == name) return f;
+    if (f.info.name == name) return &f;
+  return nullptr;
+}
+
+const FamilyEntry& find_family(const std::string& name) {
+  if (const FamilyEntry* f = find_entry(name)) return *f;
   std::string valid;
   for (const FamilyEntry& f : family_entries()) valid += (valid.empty() ? "" : ", ") + f.info.name;
   throw UsageError("unknown mesh family '" + name + "' (valid: " + valid + ")");
@@ -113,18 +118,22 @@ const FamilyEntry& find_family(const std::string& name) {
 
 }  // namespace
 
-const std::vector<MeshFamilyInfo>& mesh_family_table() {
-  static const std::vector<MeshFamilyInfo> table = [] {
-    std::vector<MeshFamilyInfo> out;
-    for (const FamilyEntry& f : family_entries()) out.push_back(f.info);
-    return out;
-  }();
-  return table;
+std::vector<MeshFamilyInfo> mesh_family_table() {
+  std::vector<MeshFamilyInfo> out;
+  for (const FamilyEntry& f : family_entries()) out.push_back(f.info);
+  return out;
 }
 
 const MeshFamilyInfo& mesh_family(const std::string& name) {
-  const FamilyEntry& entry = find_family(name);
-  return mesh_family_table()[static_cast<size_t>(&entry - family_entries().data())];
+  return find_family(name).info;
+}
+
+void register_mesh_family(const MeshFamilyInfo& info, MeshGenerator generator) {
+  if (info.name.empty() || generator == nullptr || info.max_level < 1)
+    throw UsageError("register_mesh_family: a family needs a name, levels and a generator");
+  if (find_entry(info.name) != nullptr)
+    throw UsageError("register_mesh_family: family '" + info.name + "' exists already");
+  family_entries().push_back({info, generator});
 }
 
 std::vector<std::string> mesh_families() {

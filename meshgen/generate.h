@@ -35,10 +35,21 @@ struct MeshFamilyInfo {
 };
 
 /// Every family, in table order.
-const std::vector<MeshFamilyInfo>& mesh_family_table();
+std::vector<MeshFamilyInfo> mesh_family_table();
 
-/// The family called `name`; throws UsageError naming the valid ones.
+/// The family called `name` (valid until the next register_mesh_family); throws UsageError
+/// naming the valid ones.
 const MeshFamilyInfo& mesh_family(const std::string& name);
+
+/// A family's generator: the mesh of spec.level (checked to be 1..max_level) with its exact
+/// points and surface, without noise (generate_mesh adds it).
+using MeshGenerator = GeneratedMesh (*)(const MeshSpec& spec);
+
+/// Adds a family after the built-in ones (docs/extending.md): from then on generate_mesh(), the
+/// experiment files, the runner and the report know it. Call it before generating (not
+/// thread-safe against concurrent lookups). Throws UsageError for an empty name, a name that
+/// exists, max_level < 1 or a null generator.
+void register_mesh_family(const MeshFamilyInfo& info, MeshGenerator generator);
 
 /// The family names, in table order.
 std::vector<std::string> mesh_families();

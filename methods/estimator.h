@@ -202,7 +202,16 @@ struct MethodInfo {
 };
 
 /// Every registered method, in registry order.
-const std::vector<MethodInfo>& method_table();
+std::vector<MethodInfo> method_table();
+
+using EstimatorFactory = std::unique_ptr<Estimator> (*)(EstimatorOptions);
+
+/// Adds a method to the registry, after the built-in ones (docs/extending.md): from then on
+/// make_estimator(), the experiment files (`method NAME`, `method all-operators`), the runner and
+/// every list of methods include it. Call it before estimating (not thread-safe against
+/// concurrent lookups). Throws UsageError for an empty or upper-case name, a name that exists,
+/// degrees other than 0, 0 or 1 <= min <= max, or a null factory.
+void register_estimator(const MethodInfo& info, EstimatorFactory factory);
 
 /// Labels of every method: each fit at each of its degrees within [lowest, highest]
 /// ("lhf-2", ...), each degree-free operator once ("meyer"); registry order.

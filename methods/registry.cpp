@@ -10,7 +10,8 @@
 // factory   a function `std::unique_ptr<Estimator> factory(EstimatorOptions)` defined in the
 //           method's own .cpp (in namespace curvbench); the line declares it too
 // summary   one line for --help and `curvbench methods`
-// The order of the lines is the order of method_table() and estimator_names().
+// The order of the lines is the order of method_table() and estimator_names(). A program may add
+// its own methods at run time with register_estimator() (after these lines, in call order).
 #include <algorithm>
 #include <cctype>
 #include <memory>
@@ -61,31 +62,29 @@ CURVBENCH_ESTIMATORS(CURVBENCH_DECLARE_FACTORY)
 
 namespace {
 
-struct Registration {
-  const char* name;
-  int min_degree;
-  int max_degree;
-  const char* bench;
-  double cost;
-  std::unique_ptr<Estimator> (*make)(EstimatorOptions);
-  const char* summary;
-};
-
-#define CURVBENCH_REGISTER(name, lo, hi, bench, cost, factory, summary) \
-  Registration{name, lo, hi, bench, cost, &factory, summary},
-const Registration kRegistry[] = {CURVBENCH_ESTIMATORS(CURVBENCH_REGISTER)};
-#undef CURVBENCH_REGISTER
-
-// make bench's degrees of a registration: "2-4", "2", "once" (a degree-free method) or "none".
-std::vector<int> bench_degrees(const Registration& r) {
-  const std::string b = r.bench;
-  if (b == "none") return {};
-  if (b == "once") return {0};
-  const int lo = b[0] - '0';
-  const int hi = b.size() > 2 ? b[2] - '0' : lo;
+// make bench's degrees of a registry line: "2-4", "2", "once" (a degree-free method) or "none".
+std::vector<int> bench_degrees(const std::string& bench) {
+  if (bench == "none") return {};
+  if (bench == "once") return {0};
+  const int lo = bench[0] - '0';
+  const int hi = bench.size() > 2 ? bench[2] - '0' : lo;
   std::vector<int> out;
   for (int d = lo; d <= hi; ++d) out.push_back(d);
   return out;
+}
+
+struct Registration {
+  MethodInfo info;
+  EstimatorFactory make;
+};
+
+// The registry: the lines of CURVBENCH_ESTIMATORS, then any register_estimator() additions.
+std::vector<Registration>& registry() {
+#define CURVBENCH_REGISTER(name, lo, hi, bench, cost, factory, summary) \
+  Registration{{name, lo, hi, bench_degrees(bench), cost, summary}, &factory},
+  static std::vector<Registration> table = {CURVBENCH_ESTIMATORS(CURVBENCH_REGISTER)};
+#undef CURVBENCH_REGISTER
+  return table;
 }
 
 std::string lower(std::string s) {
@@ -95,10 +94,7 @@ std::string lower(std::string s) {
 
 std::string valid_names() {
   std::string s;
-  for (const Registration& r : kRegistry) {
-    if (!s.empty()) s += ", ";
-    s += r.name;
-  }
+  for (const Registration& r : registry()) s += (s.empty() ? "" : ", ") + r.info.name;
   return s;
 }
 
@@ -109,8 +105,8 @@ std::unique_ptr<Estimator> checked(std::unique_ptr<Estimator> est) {
 }
 
 const Registration* find(const std::string& name) {
-  for (const Registration& r : kRegistry)
-    if (name == r.name) return &r;
+  for (const Registration& r : registry())
+    if (name == r.info.name) return &r;
   return nullptr;
 }
 
@@ -128,10 +124,10 @@ std::unique_ptr<Estimator> make_estimator(const std::string& name, EstimatorOpti
                     [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; })) {
       reg = find(base.substr(0, dash));
       if (reg != nullptr) {
-        if (reg->max_degree == 0)
-          throw UsageError("method '" + std::string(reg->name) +
-                           "' takes no degree (it is not a polynomial fit): write '" + reg->name +
-                           "', not '" + name + "'");
+        if (!reg->info.is_fit())
+          throw UsageError("method '" + reg->info.name +
+                           "' takes no degree (it is not a polynomial fit): write '" +
+                           reg->info.name + "', not '" + name + "'");
         options.degree = std::stoi(base.substr(dash + 1));
         attached = true;
       }
@@ -140,52 +136,62 @@ std::unique_ptr<Estimator> make_estimator(const std::string& name, EstimatorOpti
   if (reg == nullptr)
     throw UsageError("unknown method '" + name + "' (valid: " + valid_names() +
                      ", optionally with the degree attached, e.g. LHF-2)");
-  if (reg->max_degree == 0) {
+  const MethodInfo& info = reg->info;
+  if (!info.is_fit()) {
     if (options.degree != 0)
-      throw UsageError("method '" + std::string(reg->name) + "' takes no degree (got degree " +
+      throw UsageError("method '" + info.name + "' takes no degree (got degree " +
                        std::to_string(options.degree) + "; it is not a polynomial fit)");
     return checked(reg->make(options));
   }
   if (options.degree == 0 && !attached)
-    options.degree = std::clamp(2, reg->min_degree, reg->max_degree);
-  if (options.degree < reg->min_degree || options.degree > reg->max_degree) {
+    options.degree = std::clamp(2, info.min_degree, info.max_degree);
+  if (options.degree < info.min_degree || options.degree > info.max_degree) {
     const std::string range =
-        reg->min_degree == reg->max_degree
-            ? std::to_string(reg->min_degree)
-            : std::to_string(reg->min_degree) + ".." + std::to_string(reg->max_degree);
-    throw UsageError("method '" + std::string(reg->name) + "' does not support degree " +
+        info.min_degree == info.max_degree
+            ? std::to_string(info.min_degree)
+            : std::to_string(info.min_degree) + ".." + std::to_string(info.max_degree);
+    throw UsageError("method '" + info.name + "' does not support degree " +
                      std::to_string(options.degree) + " (valid: " + range + ")");
   }
   return checked(reg->make(options));
 }
 
-const std::vector<MethodInfo>& method_table() {
-  static const std::vector<MethodInfo> table = [] {
-    std::vector<MethodInfo> out;
-    for (const Registration& r : kRegistry)
-      out.push_back({r.name, r.min_degree, r.max_degree, bench_degrees(r), r.cost, r.summary});
-    return out;
-  }();
-  return table;
+void register_estimator(const MethodInfo& info, EstimatorFactory factory) {
+  if (info.name.empty() || info.name != lower(info.name) || factory == nullptr)
+    throw UsageError("register_estimator: a method needs a lower-case name and a factory");
+  if (find(info.name) != nullptr)
+    throw UsageError("register_estimator: method '" + info.name + "' exists already");
+  if (info.min_degree < 0 || info.min_degree > info.max_degree ||
+      (info.min_degree == 0) != (info.max_degree == 0))
+    throw UsageError("register_estimator: method '" + info.name +
+                     "': degrees must be 0, 0 (an operator) or 1 <= min <= max");
+  registry().push_back({info, factory});
+}
+
+std::vector<MethodInfo> method_table() {
+  std::vector<MethodInfo> out;
+  for (const Registration& r : registry()) out.push_back(r.info);
+  return out;
 }
 
 std::vector<std::string> method_labels(int lowest_degree, int highest_degree) {
   std::vector<std::string> out;
-  for (const Registration& r : kRegistry) {
-    if (r.max_degree == 0) {
-      out.emplace_back(r.name);
+  for (const Registration& r : registry()) {
+    const MethodInfo& m = r.info;
+    if (!m.is_fit()) {
+      out.push_back(m.name);
       continue;
     }
-    for (int d = std::max(lowest_degree, r.min_degree);
-         d <= std::min(highest_degree, r.max_degree); ++d)
-      out.push_back(std::string(r.name) + "-" + std::to_string(d));
+    for (int d = std::max(lowest_degree, m.min_degree); d <= std::min(highest_degree, m.max_degree);
+         ++d)
+      out.push_back(m.name + "-" + std::to_string(d));
   }
   return out;
 }
 
 std::vector<std::string> estimator_names() {
   std::vector<std::string> names;
-  for (const Registration& r : kRegistry) names.emplace_back(r.name);
+  for (const Registration& r : registry()) names.push_back(r.info.name);
   return names;
 }
 
@@ -193,7 +199,7 @@ bool scores_interior_only(const std::string& method) {
   try {
     return make_estimator(method, EstimatorOptions{})->scores_interior_only();
   } catch (const UsageError&) {
-    return false;  // not a built-in method
+    return false;  // not a registered method
   }
 }
 

@@ -19,7 +19,7 @@
 #include "harness/results_table.h"
 #include "harness/runner.h"
 #include "mesh/io.h"
-#include "tests/harness/cli_runner.h"
+#include "tests/cli/cli_runner.h"
 
 namespace curvbench {
 namespace {

@@ -11,7 +11,7 @@
 #include "harness/runner.h"
 #include "meshgen/generate.h"
 #include "methods/estimator.h"
-#include "tests/harness/cli_runner.h"
+#include "tests/cli/cli_runner.h"
 
 namespace curvbench {
 namespace {

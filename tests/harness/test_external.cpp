@@ -17,7 +17,7 @@
 #include "harness/external_estimator.h"
 #include "harness/results_table.h"
 #include "harness/score.h"
-#include "tests/harness/cli_runner.h"
+#include "tests/cli/cli_runner.h"
 
 namespace curvbench {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "mesh/io.h"
 #include "meshgen/torus_structured.h"
-#include "tests/harness/cli_runner.h"
+#include "tests/cli/cli_runner.h"
 
 namespace curvbench {
 namespace {

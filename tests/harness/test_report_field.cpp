@@ -12,7 +12,7 @@
 
 #include "harness/report_field.h"
 #include "harness/results_table.h"
-#include "tests/harness/cli_runner.h"
+#include "tests/cli/cli_runner.h"
 
 namespace curvbench {
 namespace {

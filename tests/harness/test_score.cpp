@@ -15,7 +15,7 @@
 
 #include "harness/runner.h"
 #include "harness/score.h"
-#include "tests/harness/cli_runner.h"
+#include "tests/cli/cli_runner.h"
 
 namespace curvbench {
 namespace {

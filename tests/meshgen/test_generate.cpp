@@ -155,7 +155,7 @@ TEST(Generate, EveryFamilyOfTheTableGeneratesWithItsName) {
   for (const MeshFamilyInfo& f : mesh_family_table()) {
     EXPECT_FALSE(f.caption.empty()) << f.name;
     EXPECT_FALSE(f.paper_role.empty()) << f.name;
-    EXPECT_EQ(&mesh_family(f.name), &f);
+    EXPECT_EQ(mesh_family(f.name).caption, f.caption);
     if (f.name == "torus-unstructured") continue;  // meshing takes seconds; test_torus_unstructured
     MeshSpec spec;
     spec.family = f.name;

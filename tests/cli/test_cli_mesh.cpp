@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "mesh/io.h"
-#include "tests/harness/cli_runner.h"
+#include "tests/cli/cli_runner.h"
 
 namespace curvbench {
 namespace {

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <fstream>
 
-#include "tests/harness/cli_runner.h"
+#include "tests/cli/cli_runner.h"
 
 namespace curvbench {
 namespace {

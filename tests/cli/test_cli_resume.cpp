@@ -19,7 +19,7 @@
 #include <thread>
 #include <vector>
 
-#include "tests/harness/cli_runner.h"
+#include "tests/cli/cli_runner.h"
 
 namespace curvbench {
 namespace {

@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "tests/harness/cli_runner.h"
+#include "tests/cli/cli_runner.h"
 
 namespace curvbench {
 namespace {

@@ -8,7 +8,7 @@
 #include <sstream>
 #include <string>
 
-#include "tests/harness/cli_runner.h"
+#include "tests/cli/cli_runner.h"
 
 namespace curvbench {
 namespace {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "mesh/io.h"
-#include "tests/harness/cli_runner.h"
+#include "tests/cli/cli_runner.h"
 
 namespace curvbench {
 namespace {

@@ -17,7 +17,7 @@
 #include "mesh/io.h"
 #include "methods/estimate_oriented.h"
 #include "methods/estimator.h"
-#include "tests/harness/cli_runner.h"
+#include "tests/cli/cli_runner.h"
 
 namespace curvbench {
 namespace {

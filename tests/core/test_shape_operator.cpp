@@ -9,7 +9,7 @@
 #include <numbers>
 #include <random>
 
-#include "surface_test_util.h"
+#include "tests/surfaces/surface_test_util.h"
 
 namespace curvbench {
 namespace {
