@@ -35,7 +35,7 @@
 #include "harness/paper_tables.h"
 #include "meshgen/generate.h"
 #include "methods/estimator.h"
-#include "methods/neighbourhood_table.h"
+#include "mesh/neighbourhood_table.h"
 
 // GCC 12 reports a false -Wrestrict in std::string operator+ (const char*, string&&) at -O3
 // (GCC bug 105329).

@@ -31,12 +31,12 @@
 #include "mesh/rings.h"
 #include "meshgen/generate.h"
 #include "methods/estimator.h"
-#include "methods/least_squares.h"
+#include "methods/fits/least_squares.h"
 #include "methods/local_frame.h"
-#include "methods/polynomial_fit.h"
-#include "methods/ring_fit_estimator.h"
-#include "methods/safeguarded_qr.h"
-#include "methods/weights.h"
+#include "methods/fits/polynomial_fit.h"
+#include "methods/fits/ring_fit_estimator.h"
+#include "methods/fits/safeguarded_qr.h"
+#include "methods/fits/weights.h"
 
 namespace curvbench::bench {
 namespace {

@@ -148,7 +148,7 @@ std::vector<ClaimEntry> section5_4_claims() {
                        "the implementations, not the algorithms: LHF-2's fit runs on fixed-size "
                        "QR kernels per degree (bench/bench_solvers.cpp), while Xu-2 keeps a "
                        "generic symmetric eigen-decomposition of its normal equations "
-                       "(methods/xu.cpp), so the ratio measures how much each was tuned");
+                       "(methods/fits/xu.cpp), so the ratio measures how much each was tuned");
                  }});
 
   const Band f5 = Band::at_least(5.0, 2);

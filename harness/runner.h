@@ -15,7 +15,7 @@
 #include "harness/experiment.h"
 #include "harness/results_table.h"
 #include "meshgen/generated_mesh.h"
-#include "methods/neighbourhood_table.h"
+#include "mesh/neighbourhood_table.h"
 
 namespace curvbench {
 
@@ -24,7 +24,7 @@ struct ScoredMesh {
   GeneratedMesh generated;
   std::vector<SurfacePoint> exact;  ///< surface->evaluate(exact_points.row(i))
   /// The starting neighbourhoods of generated.mesh, gathered once per spec and shared by every
-  /// method and degree run on it (bit-identical results; methods/neighbourhood_table.h).
+  /// method and degree run on it (bit-identical results; mesh/neighbourhood_table.h).
   std::unique_ptr<NeighbourhoodCache> neighbourhoods;
 };
 

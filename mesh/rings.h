@@ -9,7 +9,7 @@
 // thread. Results are deterministic (discovery order depends only on the mesh).
 //
 // A collector can also serve a neighbourhood gathered earlier (assign(), e.g. a row of
-// methods/neighbourhood_table.h) through the same neighbours(), faces() and ring().
+// mesh/neighbourhood_table.h) through the same neighbours(), faces() and ring().
 #pragma once
 
 #include <cstdint>

@@ -15,8 +15,8 @@
 #include "core/text.h"
 #include "methods/estimator.h"
 #include "methods/option_schema.h"
-#include "methods/neighbourhood_table.h"
-#include "methods/vertex_normals.h"
+#include "mesh/neighbourhood_table.h"
+#include "methods/operators/vertex_normals.h"
 #include "methods/vertex_result.h"
 
 namespace curvbench {

@@ -26,7 +26,7 @@
 
 namespace curvbench {
 
-class NeighbourhoodTable;  // methods/neighbourhood_table.h
+class NeighbourhoodTable;  // mesh/neighbourhood_table.h
 class NeighbourhoodCache;
 
 /// Per-vertex outcome. New values go at the end (the numbers are stored in PLY output); add

@@ -11,7 +11,7 @@
 #include "mesh/mesh.h"
 #include "mesh/rings.h"
 #include "meshgen/marching_cubes.h"
-#include "methods/lscm_parameterization.h"
+#include "methods/fits/lscm_parameterization.h"
 
 namespace curvbench::testing {
 
@@ -69,7 +69,7 @@ inline Mesh cheese_block(int n) {
 }
 
 /// Vertices whose r-ring is not a topological disk, i.e. is cut by the LSCM maps
-/// (methods/lscm_parameterization.h). Every ring must map.
+/// (methods/fits/lscm_parameterization.h). Every ring must map.
 inline int rings_cut(const Mesh& mesh, double ring) {
   RingCollector rc(mesh);
   LscmMap map(mesh);

@@ -1,4 +1,4 @@
-// The lane-wise frames and height-function curvature (methods/batched_curvature.h) against the
+// The lane-wise frames and height-function curvature (methods/kernels/batched_curvature.h) against the
 // scalar functions they mirror: bit for bit on every regular lane, and the scalar functions'
 // special cases (zero or non-finite input, zero gradient, exact umbilic, huge values) flagged as
 // not regular so that the caller takes the scalar path.
@@ -9,7 +9,7 @@
 #include <random>
 
 #include "method_test_util.h"
-#include "methods/batched_curvature.h"
+#include "methods/kernels/batched_curvature.h"
 
 namespace curvbench {
 namespace {

@@ -1,4 +1,4 @@
-// The batched fitting kernel (methods/batched_fit.h, EstimatorOptions::kernel) against the
+// The batched fitting kernel (methods/kernels/batched_fit.h, EstimatorOptions::kernel) against the
 // scalar reference path: LHF-1..4 and LOP-1..4 on every generated mesh family, on meshes with
 // boundaries and irregular valences, with options that change the rows, and with a QR
 // tolerance that sends many vertices back to the scalar path; and its determinism (threads,

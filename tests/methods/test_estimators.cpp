@@ -17,7 +17,7 @@
 #include "meshgen/random.h"
 #include "method_test_util.h"
 #include "methods/estimator.h"
-#include "methods/ring_fit_estimator.h"
+#include "methods/fits/ring_fit_estimator.h"
 #include "methods/vertex_result.h"
 
 namespace curvbench {

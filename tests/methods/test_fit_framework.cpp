@@ -6,12 +6,12 @@
 #include <vector>
 
 #include "meshgen/random.h"
-#include "methods/least_squares.h"
+#include "methods/fits/least_squares.h"
 #include "methods/local_frame.h"
-#include "methods/polynomial_fit.h"
-#include "methods/safeguarded_qr.h"
-#include "methods/vandermonde.h"
-#include "methods/weights.h"
+#include "methods/fits/polynomial_fit.h"
+#include "methods/fits/safeguarded_qr.h"
+#include "methods/fits/vandermonde.h"
+#include "methods/fits/weights.h"
 
 namespace curvbench {
 namespace {

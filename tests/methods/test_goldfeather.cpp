@@ -1,4 +1,4 @@
-// Goldfeather (methods/goldfeather.cpp): Goldfeather & Interrante 2004 in the project's
+// Goldfeather (methods/operators/goldfeather.cpp): Goldfeather & Interrante 2004 in the project's
 // conventions.
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include "meshgen/generate.h"
 #include "method_test_util.h"
 #include "methods/estimator.h"
-#include "methods/vertex_normals.h"
+#include "methods/operators/vertex_normals.h"
 #include "operator_test_util.h"
 
 namespace curvbench {

@@ -1,4 +1,4 @@
-// Jet-d (methods/jet.cpp): CGAL's Monge_via_jet_fitting in the project's conventions.
+// Jet-d (methods/fits/jet.cpp): CGAL's Monge_via_jet_fitting in the project's conventions.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// LSCM ring maps (methods/lscm_parameterization.h) and the LSCM-d estimators "lscm" (CGAL map)
+// LSCM ring maps (methods/fits/lscm_parameterization.h) and the LSCM-d estimators "lscm" (CGAL map)
 // and "lscm-fast" (in-house map), docs/algorithms.md §8.
 #include <gtest/gtest.h>
 
@@ -15,8 +15,8 @@
 #include "meshgen/torus_structured.h"
 #include "method_test_util.h"
 #include "methods/estimator.h"
-#include "methods/lscm.h"
-#include "methods/lscm_parameterization.h"
+#include "methods/fits/lscm.h"
+#include "methods/fits/lscm_parameterization.h"
 #include "real_mesh_util.h"
 
 namespace curvbench {

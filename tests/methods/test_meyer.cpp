@@ -1,4 +1,4 @@
-// Meyer (methods/meyer.cpp): Meyer, Desbrun, Schröder & Barr 2003 in the project's conventions.
+// Meyer (methods/operators/meyer.cpp): Meyer, Desbrun, Schröder & Barr 2003 in the project's conventions.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Neighbourhood tables (methods/neighbourhood_table.h): every row equals RingCollector's
+// Neighbourhood tables (mesh/neighbourhood_table.h): every row equals RingCollector's
 // neighbourhood of the vertex on meshes with boundaries, irregular valences, non-manifold edges
 // and small components, for the neighbourhoods the methods use; the arrays do not depend on the
 // thread count; estimates with and without the cache have the same bits.
@@ -16,7 +16,7 @@
 #include "meshgen/generate.h"
 #include "method_test_util.h"
 #include "methods/estimator.h"
-#include "methods/neighbourhood_table.h"
+#include "mesh/neighbourhood_table.h"
 
 namespace curvbench {
 namespace {

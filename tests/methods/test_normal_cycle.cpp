@@ -1,4 +1,4 @@
-// Normal cycle (methods/normal_cycle.cpp): Cohen-Steiner & Morvan 2003 in the project's
+// Normal cycle (methods/operators/normal_cycle.cpp): Cohen-Steiner & Morvan 2003 in the project's
 // conventions, 1-ring and ball regions.
 #include <gtest/gtest.h>
 

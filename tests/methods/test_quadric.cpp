@@ -1,4 +1,4 @@
-// Quadric (methods/quadric.cpp): libigl's k-ring quadric fit in the project's conventions.
+// Quadric (methods/operators/quadric.cpp): libigl's k-ring quadric fit in the project's conventions.
 #include <gtest/gtest.h>
 
 #include <cmath>

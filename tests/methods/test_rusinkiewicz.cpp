@@ -1,4 +1,4 @@
-// Rusinkiewicz (methods/rusinkiewicz.cpp): Rusinkiewicz 2004 in the project's conventions.
+// Rusinkiewicz (methods/operators/rusinkiewicz.cpp): Rusinkiewicz 2004 in the project's conventions.
 #include <gtest/gtest.h>
 
 #include <algorithm>

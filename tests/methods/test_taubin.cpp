@@ -1,4 +1,4 @@
-// Taubin (methods/taubin.cpp): Taubin 1995 in the project's conventions.
+// Taubin (methods/operators/taubin.cpp): Taubin 1995 in the project's conventions.
 #include <gtest/gtest.h>
 
 #include <cmath>

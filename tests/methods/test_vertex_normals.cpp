@@ -1,4 +1,4 @@
-// Vertex normal weightings (methods/vertex_normals.h) by name, and the options of single methods
+// Vertex normal weightings (methods/operators/vertex_normals.h) by name, and the options of single methods
 // (EstimatorOptions: vertex_normals, quadric_constant, ball_factor) checked by make_estimator.
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include "core/errors.h"
 #include "methods/estimator.h"
 #include "methods/option_schema.h"
-#include "methods/vertex_normals.h"
+#include "methods/operators/vertex_normals.h"
 
 namespace curvbench {
 namespace {
