@@ -18,6 +18,8 @@
 
 #include "core/huge_pages.h"
 #include "core/types.h"
+#include "mesh/io.h"
+#include "mesh/mesh.h"
 
 namespace curvbench::io_detail {
 
@@ -124,6 +126,14 @@ struct Soup {
 Soup read_off(const std::string& path, std::string_view text, bool skip_invalid);
 Soup read_obj(const std::string& path, std::string_view text, bool skip_invalid);
 Soup read_ply(const std::string& path, std::string_view text, bool skip_invalid);
+
+/// Builds the Mesh from a reader's soup (soup_to_mesh.cpp): drops polygons with fewer than 3
+/// vertices or a repeated index; refuses non-finite coordinates or, with skip_invalid (as the
+/// reader was told), drops those vertices and the polygons using them and renumbers;
+/// fan-triangulates (v0, vi, vi+1) the rest. `format` names the reader in messages; `report`
+/// (may be null) receives the counts.
+Mesh soup_to_mesh(const std::string& path, const std::string& format, Soup soup,
+                  MeshReadReport* report);
 
 /// Binary PLY straight from an open file (`fd`, `size` bytes), read in blocks through a small
 /// buffer instead of the whole file in memory; the same soup and the same errors as read_ply on
