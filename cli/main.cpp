@@ -1,5 +1,6 @@
-// curvbench: normals and curvatures on triangle meshes by local polynomial fitting, and the
-// convergence studies of Wang, Jiao et al. (CAGD 2009).
+// curvbench: normals and curvatures on triangle meshes (the local polynomial fits of Wang, Jiao
+// et al., CAGD 2009, CGAL's jet fitting and the common discrete operators), and the paper's
+// convergence studies.
 //
 // Exit codes: 0 success, 2 bad usage or bad input, 1 internal failure.
 #include <CLI/CLI.hpp>
@@ -15,9 +16,11 @@
 int main(int argc, char** argv) {
   using namespace curvbench;
   CLI::App app{
-      "curvbench: normals and curvatures of triangle meshes by local polynomial fitting\n"
-      "(LHF, LOP, Xu, LSCM, CGAL jet fitting) and the convergence studies of\n"
-      "Wang, Jiao et al., CAGD 2009."};
+      "curvbench: normals and curvatures of triangle meshes with 13 estimators (the local\n"
+      "polynomial fits LHF, LOP, Xu and LSCM of Wang, Jiao et al., CAGD 2009; CGAL's jet\n"
+      "fitting; the discrete operators of Meyer, Taubin, Rusinkiewicz, libigl's quadric,\n"
+      "Goldfeather and the normal cycle: `curvbench methods`), and the paper's convergence\n"
+      "studies."};
   app.set_version_flag("--version", build_info());
   app.require_subcommand(1);
 

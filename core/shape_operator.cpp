@@ -13,7 +13,7 @@ bool all_finite(const Vec3& v) {
 }
 
 // sqrt(a^2 + b^2) without overflow or underflow of the squares: the plain formula when both are
-// in a safe range (within an ulp of std::hypot, several times faster; issue 6), std::hypot else.
+// in a safe range (within an ulp of std::hypot, several times faster), std::hypot else.
 double norm2d(double a, double b) {
   const double big = std::max(std::abs(a), std::abs(b));
   if (big < 1e150 && big > 1e-150) return std::sqrt(a * a + b * b);

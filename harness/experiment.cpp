@@ -143,6 +143,15 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
             if (!(m.timeout_seconds > 0))
               throw InputError(where + ": timeout must be a positive number of seconds");
           } else if (!m.is_external()) {
+            const auto& schema = estimator_option_schema();
+            if (std::none_of(schema.begin(), schema.end(),
+                             [&](const OptionInfo& o) { return o.name == k; })) {
+              std::string valid = "label, vertex-set";
+              for (const OptionInfo& o : schema)
+                if (o.role == OptionRole::result) valid += ", " + o.name;
+              throw InputError(where + ": unknown method option '" + k + "' (valid: " + valid +
+                               ")");
+            }
             if (option_info(k).role != OptionRole::result)
               throw InputError(where + ": '" + k +
                                "' is not an experiment option (it does not change the results)");

@@ -1,4 +1,4 @@
-// Per-vertex colours for curvature pictures (issue 16, `estimate --color`).
+// Per-vertex colours for curvature pictures (`estimate --color`).
 //
 //   values  n doubles (e.g. H per vertex), NaN allowed
 //   ->      n RGB triples in 0..255 and the range limit L

@@ -1,4 +1,4 @@
-// Mesh defect counts for `curvbench info` (issue 7): degenerate and duplicate elements,
+// Mesh defect counts for `curvbench info` (docs/robustness.md): degenerate and duplicate elements,
 // non-manifold edges and vertices, components, orientation and boundary.
 //
 //   mesh  a Mesh (n vertices, m triangles)

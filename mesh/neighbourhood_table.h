@@ -1,5 +1,5 @@
 // The starting neighbourhoods of a whole mesh, gathered once and kept in compressed rows (CSR),
-// so that several methods, degrees and repeated runs on the same mesh share them (issue 13).
+// so that several methods, degrees and repeated runs on the same mesh share them.
 //
 //   neighbour_offsets  (n+1)  int64   row v = neighbours[offsets[v] .. offsets[v+1])
 //   neighbours         sum    int32   V_r \ {v} of vertex v, in RingCollector's discovery order

@@ -1,4 +1,4 @@
-// Consistent face orientation before estimating (issue 16): meshes from scanners and polygon
+// Consistent face orientation before estimating (docs/robustness.md): meshes from scanners and polygon
 // soups often have faces that run their shared edges the same way, and every estimator takes its
 // sign from the face orientation (sign convention: outward normals of a closed surface).
 //

@@ -13,7 +13,7 @@ namespace curvbench {
 namespace {
 constexpr double kJitterCells = 0.15;  // docs/algorithms.md §10.1(b) [CH]
 // Levels 1-4 (V = 1408 .. 90112) are those of docs/algorithms.md §10.1(b); 5 and 6 (360448 and
-// 1441792 vertices) are beyond the paper, for the linear-scaling benchmark (issue 6).
+// 1441792 vertices) are beyond the paper, for the linear-scaling benchmark (docs/performance.md).
 constexpr int kMaxLevel = 6;
 }  // namespace
 

@@ -14,7 +14,7 @@ namespace curvbench {
 /// No estimate possible (degree 0 after all growth, e.g. an isolated vertex or too few points):
 /// every value NaN, degree 0, status failed. docs/algorithms.md §5.4 suggests answering "flat"
 /// (normal m0, k = 0); we output NaN instead so that no row carries numbers that are not an
-/// estimate (issue 7: NaN in failed/excluded rows only). The metrics count these vertices in
+/// estimate (NaN in failed/excluded rows only, docs/robustness.md). The metrics count these vertices in
 /// their `failed` column.
 void set_failed(double ring, int points, VertexEstimate& out);
 

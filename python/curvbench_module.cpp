@@ -41,7 +41,7 @@ using namespace curvbench;
 namespace {
 
 const char* kConventions = R"(
-Conventions (paper §2; the README's sign table): B = n . x_uu with outward (closed) or upward
+Conventions (paper §2; docs/methods.md): B = n . x_uu with outward (closed) or upward
 (height field) normals, so a sphere of radius r has k1 = k2 = H = -1/r; k1 >= k2, d1 goes with
 k1, H = (k1 + k2) / 2, K = k1 k2.)";
 
@@ -202,8 +202,17 @@ PyEstimate py_estimate(const py::handle& V, const py::handle& F, const std::stri
   for (const auto& [key, value] : kwargs) {
     if (value.is_none()) continue;  // None: the default
     const std::string name = key.cast<std::string>();
-    if (name.find('-') != std::string::npos || name != option_info(name).python_name)
-      throw UsageError("unknown option '" + name + "'");
+    const auto known = [&] {
+      for (const OptionInfo& info : estimator_option_schema())
+        if (info.python_name == name) return true;
+      return false;
+    };
+    if (!known()) {
+      std::string valid;
+      for (const OptionInfo& info : estimator_option_schema())
+        valid += (valid.empty() ? "" : ", ") + info.python_name;
+      throw UsageError("unknown option '" + name + "' (valid: " + valid + ")");
+    }
     set_option_value(o, name, option_value(value));
   }
   const std::unique_ptr<Estimator> est = make_api_estimator(o);

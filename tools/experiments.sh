@@ -7,4 +7,6 @@ BUILD=${1:-build}
 shift || true
 start=$(date +%s)
 "$BUILD/curvbench" run --all --output results "$@"
+# README.md's headline block from the new results (tools/readme_headline.py).
+/usr/bin/python3 "$(dirname "$0")/readme_headline.py" README.md results
 echo "[experiments] done in $(( $(date +%s) - start )) s: see results/REPORT.md and results/CLAIMS.md"

@@ -1,6 +1,6 @@
 // Compile-time column counts for the small dense kernels of the fit (column norms, safeguarded
 // QR): the sizes that occur in practice get loops the compiler unrolls, with the per-column sums
-// in registers (issue 6); every other size takes the generic path.
+// in registers; every other size takes the generic path.
 #pragma once
 
 #include <type_traits>

@@ -40,7 +40,7 @@ void scale_columns(FitMatrix& A, int ncols, ColumnScaling scaling, ColVector& s)
     if (!(norm[j] > 0.0) || !std::isfinite(norm[j])) norm[j] = 1.0;
     s(j) = norm[j];
     // Multiplying by 1/s_j rounds once more than dividing, but divisions are the slowest
-    // operation of the whole fit (one per entry; issue 6): a 13 x 6 LHF-2 system spent a
+    // operation of the whole fit (one per entry): a 13 x 6 LHF-2 system spent a
     // third of its QR time here.
     if (norm[j] != 1.0) {
       const double inv = 1.0 / norm[j];

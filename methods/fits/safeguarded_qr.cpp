@@ -1,6 +1,6 @@
 // Safeguarded Householder QR (docs/algorithms.md §5.4); see safeguarded_qr.h.
 //
-// Speed (issue 6). The systems are small (LHF-2: 13 x 6 on a valence-6 mesh), so the cost is
+// Speed. The systems are small (LHF-2: 13 x 6 on a valence-6 mesh), so the cost is
 // the latency of the dot-product chains, not the flops. A reflector is therefore applied to many
 // columns in one pass over the rows: their dot products are independent chains the CPU runs side
 // by side, each split in two halves to shorten the chains further. For degrees 1-4 (with or

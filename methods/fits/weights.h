@@ -29,7 +29,7 @@ inline double normal_safeguard_gamma(const Vec3& mi, const Vec3& m0) {
 
 /// x^(-p) for x > 0. For the default exponents p = d/4, d = 1..6, it is computed with square
 /// roots and one division (correctly rounded steps, within a few ulp of std::pow and about 10x
-/// faster, issue 6); other p use std::pow.
+/// faster); other p use std::pow.
 inline double inverse_power(double x, double p) {
   // p = q/4: x^(-q/4) from x, s = x^(1/2) and r = x^(1/4); otherwise std::pow.
   const double q = 4.0 * p;

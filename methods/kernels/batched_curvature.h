@@ -1,5 +1,5 @@
 // The per-vertex formulas around a batched fit (methods/kernels/batched_fit.h), one vertex per SIMD lane
-// (issue 13 item 1): the local frame of make_local_frame() (local_frame.h, docs/algorithms.md §3)
+// (docs/performance.md): the local frame of make_local_frame() (local_frame.h, docs/algorithms.md §3)
 // before the fit, and the height-function curvature of curvature_from_height()
 // (core/shape_operator.h: Table 1 and eqs. (7)-(8) of the paper) after it; and the curvature of
 // a tangent-plane tensor, curvature_from_tangent_tensor() (eqs. (7)-(8)).

@@ -1,4 +1,4 @@
-// Batched weighted polynomial fits, one vertex per SIMD lane (issue 13 item 1): eq. (15)
+// Batched weighted polynomial fits, one vertex per SIMD lane (docs/algorithms.md §5.5): eq. (15)
 // weights, the weighted Vandermonde system of eq. (13), 2-norm column scaling (eq. 14), the
 // Householder QR of the safeguarded solver (safeguarded_qr.h, steps 2, 3 and 5), back
 // substitution and the Taylor derivatives of polynomial_fit.h, for kBatchLanes systems at once.

@@ -37,7 +37,7 @@ def read_cli_csv(path):
 
 
 def test_readme_example():
-    # The README's Python example, verbatim between the markers.
+    # The Python example of docs/python.md, verbatim between the markers.
     # --- README example start ---
     import curvbench
 

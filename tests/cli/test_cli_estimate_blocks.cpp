@@ -1,4 +1,4 @@
-// Streaming output (issue 13 item 4): `curvbench estimate` estimates and writes a block of
+// Streaming output: `curvbench estimate` estimates and writes a block of
 // vertices at a time. The CSV and PLY bytes are the same for any --block and --threads, and equal
 // to the whole-vector path of the C++ API and Python (estimate_oriented without blocks, then the
 // whole-array writers); the parallel CSV formatting and the block PLY writer equal their one-piece

@@ -1,4 +1,4 @@
-// Hostile input for `curvbench info` and `curvbench estimate` (issue 7, "Bad input"): one case
+// Hostile input for `curvbench info` and `curvbench estimate` (docs/robustness.md): one case
 // per kind of bad input. Refused input: exit code 2, one line "curvbench: error: FILE: ..."
 // naming the line or element and the problem, no output file (or temporary) left behind.
 // Defective but readable meshes: the run completes (exit 0), `info` reports the defect's count,

@@ -1,4 +1,4 @@
-// `curvbench estimate` orients the input first (mesh/orientation.h, issue 16): a mesh and a copy
+// `curvbench estimate` orients the input first (mesh/orientation.h): a mesh and a copy
 // with random faces flipped, or turned inside out, give byte-identical estimates, with a warning.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// A study sharded over processes (the cluster recipe of the README): `curvbench run --shard K/3`
+// A study sharded over processes (the cluster recipe of docs/cluster.md): `curvbench run --shard K/3`
 // as three concurrent processes into one case store (--cache), then `--report-only`, gives the
 // same bytes (CSVs, rates, REPORT.md, CLAIMS.md, plots) as one single-process run. Also: the case
 // ids and the partition (--list-cases), and the report of an incomplete store naming what is
@@ -114,7 +114,7 @@ TEST_F(CliShard, ThreeShardProcessesThenTheReportEqualOneRun) {
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("12 of 12 cases missing"), std::string::npos) << r.output;
 
-  // The README's recipe: three shard processes at once into one store, then the report.
+  // docs/cluster.md's recipe: three shard processes at once into one store, then the report.
   const std::string exe = std::string(CURVBENCH_BINARY_DIR) + "/curvbench";
   const std::string shards = "for k in 1 2 3; do " + exe + " run shard --cache " + store.string() +
                              " --output " + sharded.string() + " --shard $k/3" + common_ +

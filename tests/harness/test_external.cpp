@@ -59,7 +59,7 @@ int reused(const std::string& log) {
 TEST(External, CotangentExampleRunsEndToEndAndScoresAsScoreDoes) {
   if (const std::string why = python_missing(); !why.empty()) GTEST_SKIP() << why;
   const fs::path out = fresh_dir("external_example");
-  // From the repository root, as the README says.
+  // From the repository root, as docs/cli.md says.
   const auto r = sh("cd '" + kSource + "' && '" + kBinary +
                     "' run experiments/examples/cotangent_external.exp --threads 1 "
                     "--table4-max 16 --no-plots --output '" +

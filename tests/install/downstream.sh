@@ -16,7 +16,7 @@ test -f "$prefix/include/curvbench/curvbench.h"
 test ! -e "$prefix/include/curvbench/version.h" && test ! -e "$prefix/include/core"
 ls "$prefix"/lib*/libcurvbench.so "$prefix"/lib*/libcurvbench.a > /dev/null
 
-# The README's downstream recipe.
+# The downstream recipe of docs/python.md (the installed C++ library).
 cmake -S "$src/examples/downstream" -B "$tmp/ds" -DCMAKE_PREFIX_PATH="$prefix" \
   -DCMAKE_BUILD_TYPE=Release > "$tmp/configure.log"
 cmake --build "$tmp/ds" -j 2 > "$tmp/build.log"

@@ -1,4 +1,4 @@
-// Consistent orientation before estimating (mesh/orientation.h, issue 16).
+// Consistent orientation before estimating (mesh/orientation.h).
 #include <gtest/gtest.h>
 
 #include <algorithm>

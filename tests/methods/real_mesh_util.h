@@ -1,4 +1,4 @@
-// Test meshes shaped like the meshes people have (issue 16): small holes through the solid, thin
+// Test meshes shaped like the meshes people have: small holes through the solid, thin
 // handles, needle and cap triangles. Built here, never downloaded.
 #pragma once
 

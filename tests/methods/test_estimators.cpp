@@ -327,7 +327,7 @@ TEST(ParameterizationHook, SimilarityOfTheMapChangesNothing) {
   }
 }
 
-// A failed vertex carries NaN in every value (issue 7: no numbers that are not an estimate).
+// A failed vertex carries NaN in every value (no numbers that are not an estimate).
 void expect_failed_nan(const VertexEstimate& e) {
   EXPECT_EQ(e.status, VertexStatus::failed);
   EXPECT_EQ(e.degree, 0);
@@ -567,7 +567,7 @@ TEST(Registry, NamesDegreesAndErrors) {
 }  // namespace
 }  // namespace curvbench
 
-// ---- the interface of issue 12: degree-free methods, interior-only scoring, prepare(),
+// ---- the interface of the discrete operators: degree-free methods, interior-only scoring, prepare(),
 // per-vertex exceptions, quantities a method does not compute -----------------------------------
 
 namespace curvbench {

@@ -539,7 +539,7 @@ TEST(LscmEstimator, NoNanOnAMeshWithBoundaryAndThreadIndependent) {
 }
 
 // A tilted jittered plane with one grid cell removed: the rings of the vertices around the hole
-// wrap around it and are cut to disks (issue 16). On a plane every LSCM map is exact, so the cut
+// wrap around it and are cut to disks. On a plane every LSCM map is exact, so the cut
 // fits must still give the plane's normal and zero curvature.
 TEST(LscmEstimator, CutRingsAroundAHoleInAPlaneStayExact) {
   const Mat3 R = rotation(0.4, -0.9, 0.2);
