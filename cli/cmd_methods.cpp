@@ -20,20 +20,6 @@ struct MethodsOptions {
   bool options = false;
 };
 
-const char* scope_name(const OptionInfo& o) {
-  switch (o.scope) {
-    case OptionScope::fits:
-      return "fits";
-    case OptionScope::operators:
-      return "operators";
-    case OptionScope::one_method:
-      return o.method.c_str();
-    case OptionScope::all:
-      break;
-  }
-  return "all";
-}
-
 int run_methods(const MethodsOptions& o) {
   if (!o.labels.empty()) {
     const auto dash = o.labels.find('-');
@@ -46,7 +32,7 @@ int run_methods(const MethodsOptions& o) {
   }
   if (o.options) {
     for (const OptionInfo& option : estimator_option_schema())
-      std::printf("%-16s %-9s default %-8s %s\n", option.name.c_str(), scope_name(option),
+      std::printf("%-16s %-9s default %-8s %s\n", option.name.c_str(), option.scope_name.c_str(),
                   option.default_text.c_str(), option.help.c_str());
     return 0;
   }

@@ -59,38 +59,33 @@ struct ValueText<double> {
   }
 };
 
-template <class E, std::size_t N>
-struct ChoiceText {
+// A choice: an enum whose value i is called names[i] (its k...Names array).
+template <class E>
+struct EnumNames;
+template <>
+struct EnumNames<VertexNormals> {
+  static constexpr std::span<const char* const> names{kVertexNormalsNames};
+};
+template <>
+struct EnumNames<Kernel> {
+  static constexpr std::span<const char* const> names{kKernelNames};
+};
+
+template <class E>
+  requires std::is_enum_v<E>
+struct ValueText<E> {
   static constexpr OptionType type = OptionType::choice;
-  static E parse(std::span<const char* const, N> names, std::string_view s,
-                 const std::string& name) {
-    for (std::size_t i = 0; i < N; ++i)
+  static E parse(std::string_view s, const std::string& name) {
+    const auto names = EnumNames<E>::names;
+    for (std::size_t i = 0; i < names.size(); ++i)
       if (s == names[i]) return static_cast<E>(i);
     std::string valid;
     for (const char* n : names) valid += (valid.empty() ? "" : ", ") + std::string(n);
     throw UsageError(name + ": unknown value '" + std::string(s) + "' (valid: " + valid + ")");
   }
-};
-
-template <>
-struct ValueText<VertexNormals> : ChoiceText<VertexNormals, std::size(kVertexNormalsNames)> {
-  static VertexNormals parse(std::string_view s, const std::string& name) {
-    return ChoiceText::parse(kVertexNormalsNames, s, name);
-  }
-  static std::string text(VertexNormals v) { return kVertexNormalsNames[static_cast<int>(v)]; }
+  static std::string text(E v) { return EnumNames<E>::names[static_cast<std::size_t>(v)]; }
   static std::vector<std::string> choices() {
-    return {std::begin(kVertexNormalsNames), std::end(kVertexNormalsNames)};
-  }
-};
-
-template <>
-struct ValueText<Kernel> : ChoiceText<Kernel, std::size(kKernelNames)> {
-  static Kernel parse(std::string_view s, const std::string& name) {
-    return ChoiceText::parse(kKernelNames, s, name);
-  }
-  static std::string text(Kernel k) { return kKernelNames[static_cast<int>(k)]; }
-  static std::vector<std::string> choices() {
-    return {std::begin(kKernelNames), std::end(kKernelNames)};
+    return {EnumNames<E>::names.begin(), EnumNames<E>::names.end()};
   }
 };
 
@@ -175,6 +170,9 @@ Option make_option(const char* name, std::string_view scope, std::string_view ro
   info.name = name;
   info.python_name = python_name(name);
   info.type = A::Text::type;
+  info.scope_name = std::string(scope);
+  for (char& c : info.scope_name)
+    if (c == '_') c = '-';
   if (scope == "all") {
     info.scope = OptionScope::all;
   } else if (scope == "fits") {
@@ -183,9 +181,6 @@ Option make_option(const char* name, std::string_view scope, std::string_view ro
     info.scope = OptionScope::operators;
   } else {
     info.scope = OptionScope::one_method;
-    info.method = std::string(scope);
-    for (char& c : info.method)
-      if (c == '_') c = '-';
   }
   info.role = role == "run" ? OptionRole::run : OptionRole::result;
   info.lowest = lowest;
@@ -213,17 +208,9 @@ const Option& find_option(std::string_view name) {
 }
 
 std::string scope_text(const OptionInfo& info) {
-  switch (info.scope) {
-    case OptionScope::fits:
-      return "the fits only (the methods with a degree)";
-    case OptionScope::operators:
-      return "the discrete operators only";
-    case OptionScope::one_method:
-      return "method '" + info.method + "' only";
-    case OptionScope::all:
-      break;
-  }
-  return "every method";
+  if (info.scope == OptionScope::fits) return "the fits only (the methods with a degree)";
+  if (info.scope == OptionScope::operators) return "the discrete operators only";
+  return "method '" + info.scope_name + "' only";
 }
 
 }  // namespace
@@ -269,7 +256,7 @@ void check_options_apply(const EstimatorOptions& options, const std::string& nam
     const bool applies = info.scope == OptionScope::all ||
                          (info.scope == OptionScope::fits && is_fit) ||
                          (info.scope == OptionScope::operators && !is_fit) ||
-                         (info.scope == OptionScope::one_method && info.method == name);
+                         (info.scope == OptionScope::one_method && info.scope_name == name);
     if (!applies && !o.is_default(options))
       throw UsageError(info.name + " applies to " + scope_text(info) + ", not to '" + name + "'");
   }

@@ -24,7 +24,7 @@ struct OptionInfo {
   std::string python_name;  ///< "ball_factor": Python's keyword and the C++ field
   OptionType type;
   OptionScope scope;
-  std::string method;  ///< scope one_method: the method's name ("normal-cycle")
+  std::string scope_name;  ///< "all", "fits", "operators", or the one method's name
   OptionRole role;
   double lowest, highest;            ///< valid range of a number
   std::vector<std::string> choices;  ///< a choice's names (the first is the default's)

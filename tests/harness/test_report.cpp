@@ -14,6 +14,7 @@
 #include "harness/results_table.h"
 #include "meshgen/generate.h"
 #include "tests/cli/cli_runner.h"
+#include "tests/harness/synthetic_rows.h"
 
 // GCC 12 reports a false -Wrestrict for short string assignments inlined at -O3 (GCC bug
 // 105329), as in bench/bench_estimators.cpp.
@@ -24,27 +25,7 @@ namespace {
 
 // H L2 errors e0 (h / 0.4)^rate on levels 1-3 of bump-48 (h = 0.4, 0.2, 0.1).
 std::vector<ErrorRow> rows_of(const std::string& method, double e0, double rate) {
-  std::vector<ErrorRow> rows;
-  for (int level = 1; level <= 3; ++level) {
-    ErrorRow r;
-    r.experiment = "report-test";
-    r.surface = "bump";
-    r.family = "bump-48";
-    r.level = level;
-    r.vertices = 100 << (2 * level);
-    r.h = 0.4 / (1 << (level - 1));
-    r.method = method;
-    r.degree = 2;
-    r.rings = "1.5";
-    r.noise = "none";
-    r.vertex_set = "all";
-    r.quantity = "H";
-    r.norm = "L2";
-    r.error = e0 * std::pow(r.h / 0.4, rate);
-    r.counted = r.vertices;
-    rows.push_back(r);
-  }
-  return rows;
+  return testing::synthetic_series("report-test", "bump-48", method, e0, rate);
 }
 
 Experiment experiment() {

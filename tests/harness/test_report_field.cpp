@@ -13,6 +13,7 @@
 #include "harness/report_field.h"
 #include "harness/results_table.h"
 #include "tests/cli/cli_runner.h"
+#include "tests/harness/synthetic_rows.h"
 
 namespace curvbench {
 namespace {
@@ -21,25 +22,7 @@ namespace fs = std::filesystem;
 
 // Three levels with h = 0.4, 0.2, 0.1 and errors e0 * (h/0.4)^rate, H L2 only.
 std::vector<ErrorRow> series(const std::string& method, double e0, double rate) {
-  std::vector<ErrorRow> rows;
-  for (int level = 1; level <= 3; ++level) {
-    ErrorRow r;
-    r.experiment = "field-estimators-test";
-    r.surface = "bump";
-    r.family = "bump-irregular";
-    r.level = level;
-    r.vertices = 100 << (2 * level);
-    r.h = 0.4 / (1 << (level - 1));
-    r.method = method;
-    r.noise = "none";
-    r.vertex_set = "all";
-    r.quantity = "H";
-    r.norm = "L2";
-    r.error = e0 * std::pow(r.h / 0.4, rate);
-    r.seconds = 1e-6 * 5.0 * r.vertices;  // 5 us per vertex
-    rows.push_back(r);
-  }
-  return rows;
+  return testing::synthetic_series("field-estimators-test", "bump-irregular", method, e0, rate);
 }
 
 TEST(ReportField, TablesRatesTimesAndWordsFollowTheNumbers) {

@@ -1,0 +1,38 @@
+// Synthetic error rows for the report tests: one method's H L2 series over levels 1-3 of a
+// family, h = 0.4, 0.2, 0.1 and errors e0 (h / 0.4)^rate, so that every rate is known exactly.
+#pragma once
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "harness/results_table.h"
+
+namespace curvbench::testing {
+
+inline std::vector<ErrorRow> synthetic_series(const std::string& experiment,
+                                              const std::string& family,
+                                              const std::string& method, double e0, double rate) {
+  std::vector<ErrorRow> rows;
+  for (int level = 1; level <= 3; ++level) {
+    ErrorRow r;
+    r.experiment = experiment;
+    r.surface = "bump";
+    r.family = family;
+    r.level = level;
+    r.vertices = 100 << (2 * level);
+    r.h = 0.4 / (1 << (level - 1));
+    r.method = method;
+    r.noise = "none";
+    r.vertex_set = "all";
+    r.quantity = "H";
+    r.norm = "L2";
+    r.error = e0 * std::pow(r.h / 0.4, rate);
+    r.counted = r.vertices;
+    r.seconds = 1e-6 * 5.0 * r.vertices;  // 5 us per vertex
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+}  // namespace curvbench::testing
