@@ -34,6 +34,7 @@
 #include "harness/estimate_columns.h"
 #include "mesh/colormap.h"
 #include "mesh/io.h"
+#include "mesh/mesh_checks.h"
 #include "methods/estimate_oriented.h"
 #include "methods/estimator.h"
 
@@ -105,7 +106,22 @@ int run_estimate(const EstimateOptions& o) {
   if (ext == "csv")
     csv = std::make_unique<EstimateCsvWriter>(o.output, report.source_vertex, eo.threads);
   double open_seconds = since(t_open);
+  // Failed and excluded vertices by what the mesh shows at them (mesh/mesh_checks.h), computed
+  // at the first block that has one.
+  std::vector<VertexDefect> defects;
+  std::array<std::array<int, kVertexDefectCount>, 2> by_defect{};  // [failed, excluded][defect]
+  const auto count_defects = [&](const Mesh& mesh, int first,
+                                 std::span<const VertexEstimate> out) {
+    for (size_t i = 0; i < out.size(); ++i) {
+      const bool failed = out[i].status == VertexStatus::failed;
+      if (!failed && out[i].status != VertexStatus::excluded) continue;
+      if (defects.empty()) defects = vertex_defects(mesh);
+      const VertexDefect d = defects[static_cast<size_t>(first) + i];
+      ++by_defect[failed ? 0 : 1][static_cast<size_t>(d)];
+    }
+  };
   const EstimateSink sink = [&](const Mesh& mesh, int first, std::span<const VertexEstimate> out) {
+    count_defects(mesh, first, out);
     if (csv) {
       csv->write(first, out);
       return;
@@ -157,12 +173,25 @@ int run_estimate(const EstimateOptions& o) {
   const double seconds = run.estimate_seconds;
   const double orient_seconds = total_seconds - run.estimate_seconds - run.sink_seconds;
 
-  const auto& counts = run.status_counts;
-  std::fprintf(stderr,
-               "curvbench estimate: %s on %s: %d vertices (ok %d, degree_reduced %d, failed %d, "
-               "excluded %d, disk_cut %d, sign_undetermined %d) in %.3f s (%.2f us/vertex) -> %s\n",
-               est->label().c_str(), o.mesh.c_str(), n, counts[0], counts[1], counts[2], counts[3],
-               counts[4], counts[5], seconds, n > 0 ? 1e6 * seconds / n : 0.0, o.output.c_str());
+  std::string counts;
+  for (int s = 0; s < kVertexStatusCount; ++s)
+    counts += std::string(s > 0 ? ", " : "") + to_string(static_cast<VertexStatus>(s)) + " " +
+              std::to_string(run.status_counts[static_cast<size_t>(s)]);
+  std::fprintf(stderr, "curvbench estimate: %s on %s: %d vertices (%s) in %.3f s (%.2f us/vertex) -> %s\n",
+               est->label().c_str(), o.mesh.c_str(), n, counts.c_str(), seconds,
+               n > 0 ? 1e6 * seconds / n : 0.0, o.output.c_str());
+  // Why: failed and excluded vertices by the mesh's defect there ("none": a singular fit).
+  for (int k = 0; k < 2; ++k) {
+    std::string why;
+    for (int d = 0; d < kVertexDefectCount; ++d)
+      if (const int c = by_defect[static_cast<size_t>(k)][static_cast<size_t>(d)]; c > 0)
+        why += std::string(why.empty() ? "" : ", ") +
+               (d == 0 ? "no mesh defect (a singular fit)" : to_string(static_cast<VertexDefect>(d))) +
+               " " + std::to_string(c);
+    if (!why.empty())
+      std::fprintf(stderr, "curvbench estimate: %s vertices by cause: %s\n",
+                   k == 0 ? "failed" : "excluded", why.c_str());
+  }
   if (o.timing) {
     // Per-stage wall times. Estimation and writing alternate block by block; each line is the sum
     // of its own parts: neighbourhoods+fit = normals, neighbourhoods and fits (MeshEstimation);

@@ -2,6 +2,7 @@
 // edge length, Euler characteristic, orientation. What the reader dropped (faces with fewer than
 // 3 vertices or a repeated index; with --skip-invalid, vertices with NaN/Inf coordinates and
 // their faces) is also reported as a one-line warning on stderr.
+#include <array>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -74,6 +75,14 @@ int run_info(const InfoOptions& o) {
   if (!mesh.is_consistently_oriented())
     std::printf(" (%d edges traversed twice in the same direction)", mesh.num_inconsistent_edges());
   std::printf("\n");
+  // What the estimators will not handle (the causes `estimate` counts failed vertices by).
+  std::array<int, kVertexDefectCount> defects{};
+  for (const VertexDefect d : vertex_defects(mesh)) ++defects[static_cast<size_t>(d)];
+  std::printf("hard for estimators:   ");
+  for (int d = 1; d < kVertexDefectCount; ++d)
+    std::printf("%s%s %d", d > 1 ? ", " : "", to_string(static_cast<VertexDefect>(d)),
+                defects[static_cast<size_t>(d)]);
+  std::printf(" (vertices)\n");
   if (!mesh.has_boundary() && mesh.is_consistently_oriented())
     std::printf("signed volume:         %.6g (%s)\n", vol,
                 vol > 0 ? "outward normals" : "inward normals");

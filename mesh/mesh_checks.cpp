@@ -56,16 +56,18 @@ int corner_of(const Mesh& mesh, int f, int v) {
 
 }  // namespace
 
+bool is_zero_area_face(const Mesh& mesh, int f) {
+  const Vec3 a = mesh.position(mesh.face_vertex(f, 0));
+  const Vec3 b = mesh.position(mesh.face_vertex(f, 1));
+  const Vec3 c = mesh.position(mesh.face_vertex(f, 2));
+  const double longest =
+      std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
+  return (b - a).cross(c - a).norm() <= kZeroAreaTolerance * longest;
+}
+
 int count_zero_area_faces(const Mesh& mesh) {
   int count = 0;
-  for (int f = 0; f < mesh.num_faces(); ++f) {
-    const Vec3 a = mesh.position(mesh.face_vertex(f, 0));
-    const Vec3 b = mesh.position(mesh.face_vertex(f, 1));
-    const Vec3 c = mesh.position(mesh.face_vertex(f, 2));
-    const double longest =
-        std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
-    if ((b - a).cross(c - a).norm() <= kZeroAreaTolerance * longest) ++count;
-  }
+  for (int f = 0; f < mesh.num_faces(); ++f) count += is_zero_area_face(mesh, f);
   return count;
 }
 
@@ -99,7 +101,7 @@ int count_duplicate_faces(const Mesh& mesh) {
   return count;
 }
 
-int count_nonmanifold_vertices(const Mesh& mesh) {
+std::vector<unsigned char> nonmanifold_vertex_flags(const Mesh& mesh) {
   // Corners 3f + k; join the two corners of each endpoint across every manifold edge.
   const int m = mesh.num_faces();
   DisjointSets corners(3 * m);
@@ -115,7 +117,7 @@ int count_nonmanifold_vertices(const Mesh& mesh) {
   }
   // A vertex is non-manifold when its corners fall into more than one set (fan).
   std::vector<int> seen(static_cast<size_t>(3) * m, -1);  // root -> last vertex that saw it
-  int count = 0;
+  std::vector<unsigned char> flags(static_cast<size_t>(mesh.num_vertices()), 0);
   for (int v = 0; v < mesh.num_vertices(); ++v) {
     int fans = 0;
     for (const int f : mesh.vertex_faces(v)) {
@@ -125,9 +127,14 @@ int count_nonmanifold_vertices(const Mesh& mesh) {
         ++fans;
       }
     }
-    if (fans > 1) ++count;
+    flags[static_cast<size_t>(v)] = fans > 1;
   }
-  return count;
+  return flags;
+}
+
+int count_nonmanifold_vertices(const Mesh& mesh) {
+  const std::vector<unsigned char> flags = nonmanifold_vertex_flags(mesh);
+  return static_cast<int>(std::count(flags.begin(), flags.end(), 1));
 }
 
 int count_components(const Mesh& mesh) {
@@ -169,6 +176,53 @@ MeshChecks check_mesh(const Mesh& mesh) {
   c.boundary_edges = mesh.num_boundary_edges();
   c.boundary_loops = count_boundary_loops(mesh);
   return c;
+}
+
+const char* to_string(VertexDefect defect) {
+  switch (defect) {
+    case VertexDefect::none:
+      return "none";
+    case VertexDefect::isolated:
+      return "isolated vertex";
+    case VertexDefect::small_component:
+      return "component of fewer than 7 vertices";
+    case VertexDefect::nonmanifold:
+      return "non-manifold neighbourhood";
+    case VertexDefect::zero_area_star:
+      return "zero-area faces only";
+    case VertexDefect::boundary:
+      return "boundary vertex";
+  }
+  return "unknown";
+}
+
+std::vector<VertexDefect> vertex_defects(const Mesh& mesh) {
+  const int n = mesh.num_vertices();
+  DisjointSets sets(n);
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    sets.unite(mesh.face_vertex(f, 0), mesh.face_vertex(f, 1));
+    sets.unite(mesh.face_vertex(f, 0), mesh.face_vertex(f, 2));
+  }
+  std::vector<int> component_size(static_cast<size_t>(n), 0);
+  for (int v = 0; v < n; ++v) ++component_size[static_cast<size_t>(sets.find(v))];
+  const std::vector<unsigned char> nonmanifold = nonmanifold_vertex_flags(mesh);
+  std::vector<VertexDefect> out(static_cast<size_t>(n), VertexDefect::none);
+  for (int v = 0; v < n; ++v) {
+    const auto faces = mesh.vertex_faces(v);
+    VertexDefect& d = out[static_cast<size_t>(v)];
+    if (faces.empty())
+      d = VertexDefect::isolated;
+    else if (component_size[static_cast<size_t>(sets.find(v))] < kSmallComponent)
+      d = VertexDefect::small_component;
+    else if (nonmanifold[static_cast<size_t>(v)])
+      d = VertexDefect::nonmanifold;
+    else if (std::all_of(faces.begin(), faces.end(),
+                         [&](int f) { return is_zero_area_face(mesh, f); }))
+      d = VertexDefect::zero_area_star;
+    else if (mesh.is_boundary_vertex(v))
+      d = VertexDefect::boundary;
+  }
+  return out;
 }
 
 }  // namespace curvbench

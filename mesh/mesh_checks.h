@@ -8,6 +8,9 @@
 // and none is run by read_mesh (only `info` needs them).
 #pragma once
 
+#include <cstdint>
+#include <vector>
+
 #include "mesh/mesh.h"
 
 namespace curvbench {
@@ -32,6 +35,12 @@ int count_duplicate_faces(const Mesh& mesh);
 /// endpoint of a non-manifold edge. Isolated vertices are not counted.
 int count_nonmanifold_vertices(const Mesh& mesh);
 
+/// Per vertex: whether its incident faces form more than one fan (as count_nonmanifold_vertices).
+std::vector<unsigned char> nonmanifold_vertex_flags(const Mesh& mesh);
+
+/// Whether face f is (numerically) zero-area, see kZeroAreaTolerance.
+bool is_zero_area_face(const Mesh& mesh, int f);
+
 /// Connected components of the faces (two faces are connected when they share a vertex).
 /// Isolated vertices are not components (see Mesh::num_isolated_vertices).
 int count_components(const Mesh& mesh);
@@ -55,5 +64,27 @@ struct MeshChecks {
 };
 
 MeshChecks check_mesh(const Mesh& mesh);
+
+/// A component with fewer vertices cannot give a quadratic fit its 6 coefficients and a centre.
+inline constexpr int kSmallComponent = 7;
+
+/// What, in the mesh alone, can keep an estimator from answering at a vertex: the first of
+/// isolated (no face), small_component (fewer than kSmallComponent vertices in its component),
+/// nonmanifold (its faces form several fans, or it ends a non-manifold edge), zero_area_star
+/// (every incident face zero-area), boundary; none otherwise. `curvbench estimate` counts its
+/// failed and excluded vertices by it, `curvbench info` lists the counts.
+enum class VertexDefect : std::uint8_t {
+  none,
+  isolated,
+  small_component,
+  nonmanifold,
+  zero_area_star,
+  boundary
+};
+inline constexpr int kVertexDefectCount = 6;
+const char* to_string(VertexDefect defect);
+
+/// The defect of every vertex. O(n + m).
+std::vector<VertexDefect> vertex_defects(const Mesh& mesh);
 
 }  // namespace curvbench

@@ -35,6 +35,8 @@ const char* to_string(VertexStatus status) {
       return "disk_cut";
     case VertexStatus::sign_undetermined:
       return "sign_undetermined";
+    case VertexStatus::partial:
+      return "partial";
   }
   return "unknown";
 }

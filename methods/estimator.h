@@ -42,10 +42,13 @@ enum class VertexStatus : std::uint8_t {
   sign_undetermined = 5,  ///< finite values, but the surface around the vertex cannot be oriented
                           ///< (non-orientable or non-manifold, mesh/orientation.h): the signs of
                           ///< the normal and the curvatures are arbitrary
+  partial = 6,  ///< the quantities that can be determined at the vertex are finite, the rest of
+                ///< what the method computes is NaN (e.g. Meyer's H and K where the edge tensor
+                ///< fit of the directions is singular: d1, d2 NaN)
 };
 
 /// The number of VertexStatus values (arrays indexed by status).
-inline constexpr int kVertexStatusCount = 6;
+inline constexpr int kVertexStatusCount = 7;
 
 const char* to_string(VertexStatus status);
 

@@ -180,7 +180,7 @@ def info_lines(path):
     return out
 
 
-STATUSES = ["ok", "degree_reduced", "disk_cut", "sign_undetermined", "failed", "excluded"]
+STATUSES = ["ok", "degree_reduced", "disk_cut", "sign_undetermined", "partial", "failed", "excluded"]
 
 
 def main():

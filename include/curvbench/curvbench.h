@@ -37,9 +37,11 @@ enum class Status : std::uint8_t {
   disk_cut = 4,        ///< fitted on part of the ring: the ring was not a disk and was cut (LSCM)
   sign_undetermined = 5,  ///< finite, but the surface there cannot be oriented (non-orientable
                           ///< or non-manifold): the signs of normal and curvatures are arbitrary
+  partial = 6,  ///< what can be determined at the vertex is finite, the rest NaN (e.g. Meyer's
+                ///< directions where its edge tensor fit is singular)
 };
 
-/// "ok", "degree_reduced", "failed", "excluded", "disk_cut", "sign_undetermined".
+/// "ok", "degree_reduced", "failed", "excluded", "disk_cut", "sign_undetermined", "partial".
 const char* status_name(Status status);
 
 /// The method and its options. The options (degree, rings, noisy, threads, vertex_normals,

@@ -92,7 +92,7 @@ int gather_rows(const MeshContext& ctx, int v, std::span<const int> nb, const Ve
                 Put&& put) {
   partial = false;
   const Vec3 p0 = ctx.mesh.position(v);
-  int rows = 0;
+  int rows = 0, turned_away = 0;
   if (include_centre) put(rows++, 0.0, 0.0, 1.0, Vec3::Zero().eval());
   for (size_t i = 0; i < nb.size() && rows < kMaxRows; ++i) {
     const Vec3 d = ctx.mesh.position(nb[i]) - p0;
@@ -103,10 +103,20 @@ int gather_rows(const MeshContext& ctx, int v, std::span<const int> nb, const Ve
     }
     const double g =
         safeguard ? normal_safeguard_gamma(ctx.approx_normals.row(nb[i]).transpose(), m0) : 1.0;
-    if (!(g > 0.0)) continue;
+    if (!(g > 0.0)) {
+      ++turned_away;
+      continue;
+    }
     const Vec2 q = uv - origin;
     put(rows++, q.x(), q.y(), g, d);
   }
+  // The normal safeguard leaves at least the rows of a plane (include_centre: c00, c10, c01):
+  // where every neighbour's normal turns away (the vertices of a tetrahedron, an octahedron),
+  // the neighbours come back with gamma = 1, so that the safeguarded QR's degree reduction still
+  // gives the normal (degree 1, degree_reduced) instead of a failed vertex.
+  const int plane_rows = include_centre ? 3 : 2;
+  if (rows < plane_rows && turned_away > 0)
+    return gather_rows(ctx, v, nb, origin, uv_of, m0, include_centre, false, partial, put);
   return rows;
 }
 

@@ -34,8 +34,10 @@
 //           over an edge's two faces).
 // Boundary vertices: the paper's formulas need the full 1-ring (a boundary vertex's angle
 // deficit and cotangent sum measure the boundary curve as well), and it gives no boundary
-// variant: status excluded, values NaN. A vertex whose tensor fit is singular or whose values are
-// not finite (degenerate faces) is failed.
+// variant: status excluded, values NaN. A vertex whose tensor fit of the directions is singular
+// (two edge directions only, as at a valence-4 vertex of a flat grid) keeps H, K, k1, k2 and the
+// normal with d1, d2 NaN: status partial. A vertex whose values are not finite (degenerate faces)
+// is failed.
 // Cost: one pass over the incident faces (each face's cotangents and mixed area computed there,
 // no per-mesh arrays) and one atan2 per vertex.
 #include <cmath>
@@ -104,7 +106,9 @@ class MeyerEstimator final : public OperatorEstimator {
       const double cot = g.cot[0];
       const double r = zr * cot - zi, t = zr + zi * cot;
       const double scale = 1.0 / (std::abs(r) + std::abs(t));  // keeps |z| near 1
-      if (zi > 0.0 && t < 0.0) ++turns;
+      // A pass through pi: from the upper half plane, or from the negative real axis itself (a
+      // partial sum of exactly pi, as after two right angles), into the lower one.
+      if (zi >= 0.0 && t < 0.0) ++turns;
       zr = r * scale;
       zi = t * scale;
       // cot(angle at x_k) (x_i - x_j) + cot(angle at x_j) (x_i - x_k), x_j - x_i = a.
@@ -127,7 +131,14 @@ class MeyerEstimator final : public OperatorEstimator {
     const double det = s11 * s22 - s12 * s12;
     const int points = static_cast<int>(faces.size());
     if (!(det > 0.0)) {
-      set_failed(1.0, points, out);
+      // The tensor fit of the directions is singular (e.g. valence 4 with two collinear pairs of
+      // edges: two edge directions only); H, K, k1 and k2 do not need it: status partial.
+      ComputedQuantities determined = computes();
+      determined.directions = false;
+      if (set_operator_quantities(c, determined, points, 1.0, out))
+        out.status = VertexStatus::partial;
+      else
+        set_failed(1.0, points, out);
       return;
     }
     const double r1 = rk1 - 2.0 * c.H * rv1, r2 = rk2 - 2.0 * c.H * rv2;

@@ -92,3 +92,48 @@ TEST(Cli, BadInputExits2WithOneLineNamingTheFile) {
 
 }  // namespace
 }  // namespace curvbench
+
+namespace curvbench {
+namespace {
+
+// What the estimators will not handle, from the mesh alone: `info` lists it, and `estimate`
+// counts its failed vertices by it (mesh/mesh_checks.h VertexDefect). An octahedron (six
+// vertices, too few for a quadratic's 6 coefficients and a centre) beside a larger component.
+TEST(Cli, InfoListsAndEstimateCountsTheCausesOfFailedVertices) {
+  const auto dir = testing::fresh_dir("info_causes");
+  const auto path = dir / "two.off";
+  std::ofstream out(path);
+  // A flat 5 x 5 grid of squares (36 vertices, 20 on the boundary), then the octahedron (6
+  // vertices) beside it.
+  out << "OFF\n42 58 0\n";
+  for (int j = 0; j <= 5; ++j)
+    for (int i = 0; i <= 5; ++i) out << i << " " << j << " 0\n";
+  out << "11 0 0\n9 0 0\n10 1 0\n10 -1 0\n10 0 1\n10 0 -1\n";
+  for (int j = 0; j < 5; ++j)
+    for (int i = 0; i < 5; ++i) {
+      const int a = 6 * j + i;
+      out << "3 " << a << " " << a + 1 << " " << a + 7 << "\n3 " << a << " " << a + 7 << " "
+          << a + 6 << "\n";
+    }
+  for (const char* f : {"3 36 38 40\n", "3 38 37 40\n", "3 37 39 40\n", "3 39 36 40\n",
+                        "3 38 36 41\n", "3 37 38 41\n", "3 39 37 41\n", "3 36 39 41\n"})
+    out << f;
+  out.close();
+  const auto r = testing::run_cli("info " + path.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string& info = r.output;
+  EXPECT_NE(info.find("hard for estimators:   isolated vertex 0, component of fewer than 7 "
+                      "vertices 6, non-manifold neighbourhood 0, zero-area faces only 0, "
+                      "boundary vertex 20 (vertices)"),
+            std::string::npos)
+      << info;
+  const auto est = testing::run_cli("estimate " + path.string() + " --method quadric --output " +
+                                    (dir / "q.csv").string());
+  ASSERT_EQ(est.exit_code, 0) << est.output;
+  EXPECT_NE(est.output.find("failed vertices by cause: component of fewer than 7 vertices 6"),
+            std::string::npos)
+      << est.output;
+}
+
+}  // namespace
+}  // namespace curvbench
