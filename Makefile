@@ -51,9 +51,11 @@ bench: build
 	@bash tools/bench.sh $(BUILD)
 
 # Every method on the sample meshes of Debian's libcgal-demo (fetched at run time with apt-get
-# download into $(BUILD)/realmeshes/) -> results/REAL_MESHES.md.
+# download into $(BUILD)/realmeshes/) -> results/REAL_MESHES.md. CORPUS=all: every method at its
+# default on every mesh file of the package (timeout CORPUS_TIMEOUT, default 300 s, per run) -> the
+# corpus section of results/REAL_MESHES.md (tools/realmeshes_corpus.py).
 realmeshes: build
-	@bash tools/realmeshes.sh $(BUILD)
+	@CORPUS='$(CORPUS)' bash tools/realmeshes.sh $(BUILD)
 
 test-sanitize: deps
 	@cmake -S . -B $(SANITIZE_BUILD) -DCURVBENCH_SANITIZE=ON -DCURVBENCH_BUILD_BENCH=OFF \

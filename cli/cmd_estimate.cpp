@@ -186,7 +186,10 @@ int run_estimate(const EstimateOptions& o) {
     for (int d = 0; d < kVertexDefectCount; ++d)
       if (const int c = by_defect[static_cast<size_t>(k)][static_cast<size_t>(d)]; c > 0)
         why += std::string(why.empty() ? "" : ", ") +
-               (d == 0 ? "no mesh defect (a singular fit)" : to_string(static_cast<VertexDefect>(d))) +
+               (d > 0    ? to_string(static_cast<VertexDefect>(d))
+                : k == 0 ? "no mesh defect (a singular fit)"
+                         : "no mesh defect (the method's own rule, e.g. a region reaching the "
+                           "boundary)") +
                " " + std::to_string(c);
     if (!why.empty())
       std::fprintf(stderr, "curvbench estimate: %s vertices by cause: %s\n",

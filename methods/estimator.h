@@ -121,6 +121,9 @@ class Estimator {
   virtual std::string display_name() const;
   /// False for a degree-free method (a discrete operator, not a degree-d fit).
   virtual bool takes_degree() const { return true; }
+  /// True for a fit of the paper's weighted least-squares framework on rings (LHF, LOP, LSCM):
+  /// the ones that read the options qr-tol, weight-power, safeguard and centre.
+  virtual bool ring_fit() const { return false; }
   /// Display name with the degree for a fit ("LHF-2", "Xu-2"), without for a degree-free
   /// method ("Meyer").
   std::string label() const;

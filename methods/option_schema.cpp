@@ -177,6 +177,8 @@ Option make_option(const char* name, std::string_view scope, std::string_view ro
     info.scope = OptionScope::all;
   } else if (scope == "fits") {
     info.scope = OptionScope::fits;
+  } else if (scope == "ring_fits") {
+    info.scope = OptionScope::ring_fits;
   } else if (scope == "operators") {
     info.scope = OptionScope::operators;
   } else {
@@ -209,6 +211,8 @@ const Option& find_option(std::string_view name) {
 
 std::string scope_text(const OptionInfo& info) {
   if (info.scope == OptionScope::fits) return "the fits only (the methods with a degree)";
+  if (info.scope == OptionScope::ring_fits)
+    return "the fits of the weighted least-squares framework only (lhf, lop, lscm)";
   if (info.scope == OptionScope::operators) return "the discrete operators only";
   return "method '" + info.scope_name + "' only";
 }
@@ -250,15 +254,17 @@ void validate_options(const EstimatorOptions& options) {
   for (const Option& o : options_table()) o.validate(options, o.info);
 }
 
-void check_options_apply(const EstimatorOptions& options, const std::string& name, bool is_fit) {
+void check_options_apply(const EstimatorOptions& options, const OptionTarget& target) {
   for (const Option& o : options_table()) {
     const OptionInfo& info = o.info;
     const bool applies = info.scope == OptionScope::all ||
-                         (info.scope == OptionScope::fits && is_fit) ||
-                         (info.scope == OptionScope::operators && !is_fit) ||
-                         (info.scope == OptionScope::one_method && info.scope_name == name);
+                         (info.scope == OptionScope::fits && target.fit) ||
+                         (info.scope == OptionScope::ring_fits && target.ring_fit) ||
+                         (info.scope == OptionScope::operators && !target.fit) ||
+                         (info.scope == OptionScope::one_method && info.scope_name == target.name);
     if (!applies && !o.is_default(options))
-      throw UsageError(info.name + " applies to " + scope_text(info) + ", not to '" + name + "'");
+      throw UsageError(info.name + " applies to " + scope_text(info) + ", not to '" +
+                       target.name + "'");
   }
 }
 

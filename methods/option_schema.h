@@ -14,17 +14,17 @@ namespace curvbench {
 
 enum class OptionType : std::uint8_t { boolean, integer, real, choice };
 /// Which methods take an option (a value other than its default elsewhere is an error).
-enum class OptionScope : std::uint8_t { all, fits, operators, one_method };
+enum class OptionScope : std::uint8_t { all, fits, ring_fits, operators, one_method };
 /// result: changes the estimates (experiment method lines, case keys); run: how they are
 /// computed, not what (threads, kernel).
 enum class OptionRole : std::uint8_t { result, run };
 
 struct OptionInfo {
   std::string name;         ///< "ball-factor": the experiment key and the CLI flag --ball-factor
-  std::string python_name;  ///< "ball_factor": Python's keyword and the C++ field
+  std::string python_name;  ///< "ball_factor": Python's keyword (name with '_' for '-')
   OptionType type;
   OptionScope scope;
-  std::string scope_name;  ///< "all", "fits", "operators", or the one method's name
+  std::string scope_name;  ///< "all", "fits", "ring-fits", "operators", or a method's name
   OptionRole role;
   double lowest, highest;            ///< valid range of a number
   std::vector<std::string> choices;  ///< a choice's names (the first is the default's)
@@ -56,8 +56,16 @@ bool option_is_default(const EstimatorOptions& options, const OptionInfo& option
 /// Checks every option's range; throws UsageError "<name>: <problem>" at the first bad one.
 void validate_options(const EstimatorOptions& options);
 
-/// Checks that every option set away from its default suits the method (`name`, and whether it
-/// is a degree-d fit); throws UsageError "<option> applies to ... only, not to '<name>'".
-void check_options_apply(const EstimatorOptions& options, const std::string& name, bool is_fit);
+/// What an estimator is, for the scopes: its name, whether it is a degree-d fit, whether it is a
+/// fit of the paper's framework on rings (Estimator::ring_fit()).
+struct OptionTarget {
+  std::string name;
+  bool fit = false;
+  bool ring_fit = false;
+};
+
+/// Checks that every option set away from its default suits the method; throws UsageError
+/// "<option> applies to ... only, not to '<name>'".
+void check_options_apply(const EstimatorOptions& options, const OptionTarget& target);
 
 }  // namespace curvbench

@@ -100,7 +100,7 @@ std::string valid_names() {
 
 // Every option set away from its default must suit the method (methods/option_schema.h).
 std::unique_ptr<Estimator> checked(std::unique_ptr<Estimator> est) {
-  check_options_apply(est->options(), est->name(), est->takes_degree());
+  check_options_apply(est->options(), {est->name(), est->takes_degree(), est->ring_fit()});
   return est;
 }
 
@@ -113,6 +113,7 @@ const Registration* find(const std::string& name) {
 }  // namespace
 
 std::unique_ptr<Estimator> make_estimator(const std::string& name, EstimatorOptions options) {
+  validate_options(options);  // the option table's ranges, with its messages, first
   std::string base = lower(name);
   const Registration* reg = find(base);
   bool attached = false;
@@ -128,7 +129,12 @@ std::unique_ptr<Estimator> make_estimator(const std::string& name, EstimatorOpti
           throw UsageError("method '" + reg->info.name +
                            "' takes no degree (it is not a polynomial fit): write '" +
                            reg->info.name + "', not '" + name + "'");
-        options.degree = std::stoi(base.substr(dash + 1));
+        const int degree = std::stoi(base.substr(dash + 1));
+        if (options.degree != 0 && options.degree != degree)
+          throw UsageError("method " + name + " names degree " + std::to_string(degree) +
+                           " but degree is " + std::to_string(options.degree));
+        options.degree = degree;
+        validate_options(options);
         attached = true;
       }
     }

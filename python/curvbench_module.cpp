@@ -176,6 +176,8 @@ py::array numpy_status_names(const py::array_t<std::uint8_t>& codes) {
 // A keyword argument as the option table's typed value (set_option checks it against the type).
 OptionValue option_value(const py::handle& x) {
   if (py::isinstance<py::bool_>(x)) return x.cast<bool>();
+  if (py::hasattr(x, "dtype") && x.attr("dtype").attr("kind").cast<std::string>() == "b")
+    return x.attr("item")().cast<bool>();  // numpy.bool_
   if (py::isinstance<py::str>(x)) return x.cast<std::string>();
   if (py::isinstance<py::float_>(x)) return x.cast<double>();
   if (py::hasattr(x, "__index__")) return x.attr("__index__")().cast<long long>();

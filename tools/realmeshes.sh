@@ -5,27 +5,97 @@
 # results/realmeshes/ (tools/render_ply.py, gnuplot). The package is fetched at run time with
 # `apt-get download` (needs the Debian archive; `apt-get update` as root if the package lists are
 # missing) into $WORK (default build/realmeshes/, ignored); nothing is committed.
-# Usage: tools/realmeshes.sh BUILD_DIR
+# CORPUS=all (`make realmeshes CORPUS=all`): instead, every method at its default (the names of
+# `curvbench methods`; fits at their default degree) with 2 threads on every file of data.tar.gz
+# that curvbench reads (.off .obj .ply), each run under `timeout $CORPUS_TIMEOUT` (default 300 s),
+# and tools/realmeshes_corpus.py writes the summary (files, refusals, crashes, time-outs, failed
+# vertices by method and cause) as the section between `<!-- corpus: begin -->` and
+# `<!-- corpus: end -->` of $CORPUS_REPORT (default results/REAL_MESHES.md; the rest of the file is
+# left alone, and the default run keeps that section). Other variables: CORPUS_METHODS (default:
+# the first column of `curvbench methods`; set it for a binary without that subcommand),
+# CORPUS_RUNS (logs and exit codes; default $WORK/corpus).
+# Usage: [CORPUS=all] tools/realmeshes.sh BUILD_DIR
 set -euo pipefail
 BUILD=${1:-build}
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 WORK=${WORK:-$BUILD/realmeshes}
 MESHES=${MESHES:-"bunny00 armadillo refined_elephant fandisk_large ChineseDragon-10kv cheese blade man bear"}
 CB="$BUILD/curvbench"
-# Every registered method: the fits at degrees 2-4, the degree-free operators once.
-METHODS=${METHODS:-$("$CB" methods --labels 2-4 | tr '\n' ' ')}
+CORPUS=${CORPUS:-}
+case "$CORPUS" in
+  "" | all) ;;
+  *) echo "realmeshes: CORPUS must be empty (the sample meshes) or 'all' (every mesh file)" >&2; exit 2 ;;
+esac
 REF=${REF:-lhf-4}  # the reference of the agreement columns and of the pictures
 mkdir -p "$WORK"
 DATA="$WORK/data/meshes"
-if [ ! -d "$DATA" ]; then
-  echo "realmeshes: fetching libcgal-demo (apt-get download) into $WORK" >&2
-  ( cd "$WORK" && (apt-get download libcgal-demo >/dev/null 2>&1 ||
-      { [ "$(id -u)" = 0 ] && apt-get update >/dev/null && apt-get download libcgal-demo; } ||
-      { echo "realmeshes: cannot download libcgal-demo (run 'apt-get update' as root?)" >&2; exit 2; }) )
-  deb=$(ls "$WORK"/libcgal-demo_*.deb | head -1)
-  dpkg-deb -x "$deb" "$WORK/pkg"
-  tar -xzf "$WORK/pkg/usr/share/doc/libcgal-dev/data.tar.gz" -C "$WORK" data/meshes
+TARBALL="$WORK/pkg/usr/share/doc/libcgal-dev/data.tar.gz"
+# fetch MEMBER: extracts MEMBER (data/meshes, or data: everything) of the package's data.tar.gz
+# into $WORK, downloading and unpacking the package first unless that was done.
+fetch() {
+  if [ ! -f "$TARBALL" ]; then
+    if ! ls "$WORK"/libcgal-demo_*.deb >/dev/null 2>&1; then
+      echo "realmeshes: fetching libcgal-demo (apt-get download) into $WORK" >&2
+      ( cd "$WORK" && (apt-get download libcgal-demo >/dev/null 2>&1 ||
+          { [ "$(id -u)" = 0 ] && apt-get update >/dev/null && apt-get download libcgal-demo; } ||
+          { echo "realmeshes: cannot download libcgal-demo (run 'apt-get update' as root?)" >&2; exit 2; }) )
+    fi
+    deb=$(ls "$WORK"/libcgal-demo_*.deb | head -1)
+    dpkg-deb -x "$deb" "$WORK/pkg"
+  fi
+  tar -xzf "$TARBALL" -C "$WORK" "$1"
+}
+
+if [ "$CORPUS" = all ]; then
+  # Every file of data.tar.gz (meshes/, points_3/, images/); the stamp marks a complete extraction.
+  [ -f "$WORK/.data-all" ] || { fetch data && touch "$WORK/.data-all"; }
+  TIMEOUT=${CORPUS_TIMEOUT:-300}
+  RUNS=${CORPUS_RUNS:-$WORK/corpus}
+  REPORT=${CORPUS_REPORT:-$ROOT/results/REAL_MESHES.md}
+  # The method names: the lines of `curvbench methods` whose second column is a degree range or -.
+  CMETHODS=${CORPUS_METHODS:-$("$CB" methods | awk '$2 ~ /^([0-9]+\.\.[0-9]+|-)$/ { print $1 }' | tr '\n' ' ')}
+  [ -n "${CMETHODS// /}" ] || { echo "realmeshes: no methods (set CORPUS_METHODS)" >&2; exit 2; }
+  CBABS="$(cd "$(dirname "$CB")" && pwd)/$(basename "$CB")"
+  DATAALL="$(cd "$WORK/data" && pwd)"
+  mkdir -p "$RUNS"
+  RUNS="$(cd "$RUNS" && pwd)"
+  rm -rf -- "$RUNS/runs"
+  # run OUT CMD...: CMD in data/ (so messages name files as data/-relative paths) under the time
+  # limit; stdout to OUT.txt, stderr to OUT.log, "exit-code seconds" to OUT.rc (124: timed out;
+  # 128+n: signal n).
+  run() {
+    local out=$1 t0=$SECONDS rc=0
+    shift
+    ( cd "$DATAALL" && exec timeout -k 10 "$TIMEOUT" "$@" ) > "$out.txt" 2> "$out.log" || rc=$?
+    echo "$rc $(( SECONDS - t0 ))" > "$out.rc"
+    [ -s "$out.txt" ] || rm -f "$out.txt"
+  }
+  mapfile -t FILES < <(cd "$DATAALL" && find . -type f \( -iname '*.off' -o -iname '*.obj' -o -iname '*.ply' \) |
+    sed 's|^\./||' | LC_ALL=C sort)
+  start=$(date +%s)
+  i=0
+  for f in "${FILES[@]}"; do
+    i=$(( i + 1 ))
+    echo "realmeshes: corpus $i/${#FILES[@]} $f" >&2
+    d="$RUNS/runs/$f"
+    mkdir -p "$d"
+    run "$d/info" "$CBABS" info "$f"
+    for method in $CMETHODS; do
+      run "$d/$method" "$CBABS" estimate "$f" --method "$method" --threads 2 --output "$RUNS/out.csv"
+      rm -f "$RUNS/out.csv"
+    done
+  done
+  echo "realmeshes: corpus of ${#FILES[@]} files run in $(( $(date +%s) - start )) s" >&2
+  # shellcheck disable=SC2086
+  /usr/bin/python3 "$ROOT/tools/realmeshes_corpus.py" "$DATAALL" "$RUNS/runs" "$REPORT" \
+    --methods $CMETHODS --timeout "$TIMEOUT" --binary "$("$CB" --version 2>/dev/null || echo "$CB")"
+  echo "realmeshes: wrote the corpus section of $REPORT" >&2
+  exit 0
 fi
+
+# Every registered method: the fits at degrees 2-4, the degree-free operators once.
+METHODS=${METHODS:-$("$CB" methods --labels 2-4 | tr '\n' ' ')}
+[ -d "$DATA" ] || fetch data/meshes
 start=$(date +%s)
 for m in $MESHES; do
   mesh="$DATA/$m.off"
@@ -53,6 +123,12 @@ for r in $RENDER; do
     "$ROOT/results/realmeshes/$m.H.png" \
     --up "$up" --azimuth "$az" --elevation "$el" --title "$m: mean curvature H (${REF^^})"
 done
+# The section of CORPUS=all (between its marker lines) survives the rewrite of the report.
+keep=$(mktemp)
+[ ! -f "$ROOT/results/REAL_MESHES.md" ] ||
+  sed -n '/^<!-- corpus: begin -->$/,/^<!-- corpus: end -->$/p' "$ROOT/results/REAL_MESHES.md" > "$keep"
 /usr/bin/python3 "$ROOT/tools/realmeshes_report.py" "$WORK" "$ROOT/results/REAL_MESHES.md" \
   --meshes $MESHES --methods $METHODS --reference "$REF"
+[ ! -s "$keep" ] || { echo; cat "$keep"; } >> "$ROOT/results/REAL_MESHES.md"
+rm -f "$keep"
 echo "realmeshes: wrote results/REAL_MESHES.md" >&2

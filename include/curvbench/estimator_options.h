@@ -12,8 +12,10 @@
 //             name with '-' as '_'
 //   default   the value meaning "not given"
 //   scope     which methods take it (any other value than the default elsewhere is an error):
-//             all; fits (the degree-d fits); operators (the degree-free discrete operators); or
-//             one method, spelled as its name with '_' for '-' (normal_cycle)
+//             all; fits (the degree-d fits); ring_fits (the fits of the paper's weighted
+//             least-squares framework on rings: LHF, LOP, LSCM; Estimator::ring_fit()); operators
+//             (the degree-free discrete operators); or one method, spelled as its name with '_'
+//             for '-' (normal_cycle)
 //   role      result: it changes the estimates (an experiment's method line may set it, and it
 //             is part of a stored case's key); run: how they are computed, not what (threads,
 //             kernel: the command line, C++ and Python only)
@@ -46,16 +48,16 @@ inline constexpr const char* kKernelNames[] = {"batched", "scalar"};
     "neighbourhood in rings 1, 1.5, 2, ... (0: the method's default: (d+1)/2 for a fit, "          \
     "+0.5 if noisy; Xu 1; quadric 5; the other operators take the 1-ring only)")                   \
   X(bool, noisy, "noisy", false, all, result, 0, 1,                                                \
-    "noisy input: the default ring + 0.5 (paper section 5.3)")                                     \
+    "noisy input: a fit's default ring + 0.5 (paper section 5.3); operators ignore it")            \
   X(bool, adaptive, "adaptive", true, fits, result, 0, 1,                                          \
     "grow the ring by half rings until the fit has enough points (paper section 4.1)")             \
-  X(double, qr_tolerance, "qr-tol", 1e-3, fits, result, 0.0, 1.0,                                  \
+  X(double, qr_tolerance, "qr-tol", 1e-3, ring_fits, result, 0.0, 1e300,                           \
     "|R_kk| threshold of the safeguarded QR below which the degree is lowered (section 5.4)")      \
-  X(double, weight_power, "weight-power", -1.0, fits, result, -1e300, 1e300,                       \
+  X(double, weight_power, "weight-power", -1.0, ring_fits, result, -1e300, 1e300,                  \
     "exponent p of the distance weights (|u|^2+eps)^(-p); negative: eq. (15)'s d/4")               \
-  X(bool, normal_safeguard, "safeguard", true, fits, result, 0, 1,                                 \
+  X(bool, normal_safeguard, "safeguard", true, ring_fits, result, 0, 1,                            \
     "weight gamma_i = max(0, m_i . m_0) of eq. (15): drop points whose normal turns away")         \
-  X(bool, include_centre, "centre", true, fits, result, 0, 1,                                      \
+  X(bool, include_centre, "centre", true, ring_fits, result, 0, 1,                                 \
     "fit the constant term with the vertex as a row (no: interpolate through the vertex)")         \
   X(VertexNormals, vertex_normals, "vertex-normals", VertexNormals::method_default, operators,     \
     result, 0, 0,                                                                                  \
@@ -64,7 +66,7 @@ inline constexpr const char* kKernelNames[] = {"batched", "scalar"};
     "fit 6 coefficients (a constant term) instead of libigl's 5")                                  \
   X(double, ball_factor, "ball-factor", 0.0, normal_cycle, result, 0.0, 1e6,                       \
     "the ball of radius C times the mean edge length instead of the 1-ring (0: the 1-ring)")      \
-  X(int, threads, "threads", 0, all, run, 0, 4096,                                                 \
+  X(int, threads, "threads", 0, all, run, 0, 1 << 20,                                               \
     "OpenMP threads (0: all cores); the results do not depend on it")                             \
   X(Kernel, kernel, "kernel", Kernel::batched, all, run, 0, 0,                                     \
     "fitting kernel of LHF/LOP degree 1-4: batched (several vertices per SIMD instruction) or "    \

@@ -95,6 +95,7 @@ class ParamScratch {
 
 class RingFitEstimator : public Estimator {
  public:
+  bool ring_fit() const final { return true; }
   std::unique_ptr<Workspace> make_workspace(const Mesh& mesh) const final;
   void estimate(const MeshContext& ctx, int v, Workspace& ws, VertexEstimate& out) const final;
   /// The batched kernel (methods/kernels/batched_fit.h) when uses_batched_kernel(), else estimate() per

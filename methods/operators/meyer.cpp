@@ -128,9 +128,13 @@ class MeyerEstimator final : public OperatorEstimator {
     c.k1 = c.H + disc;
     c.k2 = c.H - disc;
 
+    // det >= 0 (Cauchy-Schwarz), 0 when every edge direction lies on one line or on two
+    // perpendicular lines; relative to (s11 + s22)^2 (the summed weights squared), rounding leaves
+    // it near 1e-32 there, a genuine direction spread of angle delta leaves about delta^2.
     const double det = s11 * s22 - s12 * s12;
+    const double scale = (s11 + s22) * (s11 + s22);
     const int points = static_cast<int>(faces.size());
-    if (!(det > 0.0)) {
+    if (!(det > 1e-12 * scale)) {
       // The tensor fit of the directions is singular (e.g. valence 4 with two collinear pairs of
       // edges: two edge directions only); H, K, k1 and k2 do not need it: status partial.
       ComputedQuantities determined = computes();

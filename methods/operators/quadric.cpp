@@ -21,8 +21,8 @@
 // w ~ -(u^2 + v^2)/(2r), so k = -1/r directly (libigl negates its eigenvalues and reports +1/r).
 // Choices (libigl's defaults): the area-weighted vertex normal for the frame and the
 // projection-plane check (option EstimatorOptions::vertex_normals); 5 coefficients through the
-// vertex (option EstimatorOptions::quadric_constant: 6); ring 5 (option ring, `--rings`, any
-// integer >= 1).
+// vertex (option EstimatorOptions::quadric_constant: 6); ring 5 (option rings, `--rings`, an
+// integer 1..64).
 // Boundary vertices: the k-ring is one-sided but the fit is defined (as in libigl): status ok.
 // Cost: O(k^2) points per vertex; the k-ring by a breadth-first search over per-mesh neighbour
 // lists (prepare()), in the order of mesh/rings.h, without branches on the visited marks.

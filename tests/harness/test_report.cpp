@@ -23,15 +23,15 @@
 namespace curvbench {
 namespace {
 
-// H L2 errors e0 (h / 0.4)^rate on levels 1-3 of bump-48 (h = 0.4, 0.2, 0.1).
+// H L2 errors e0 (h / 0.4)^rate on levels 1-3 of torus-unstructured (h = 0.4, 0.2, 0.1).
 std::vector<ErrorRow> rows_of(const std::string& method, double e0, double rate) {
-  return testing::synthetic_series("report-test", "bump-48", method, e0, rate);
+  return testing::synthetic_series("report-test", "torus-unstructured", method, e0, rate);
 }
 
 Experiment experiment() {
   return parse_experiment_text(
       "name report-test\ntitle \"A report test\"\nsection 5.2\n"
-      "mesh bump-48 levels=1,2,3\nmethod lhf-2\nmethod lhf-4\n"
+      "mesh torus-unstructured levels=1,2,3\nmethod lhf-2\nmethod lhf-4\n"
       "panel rt-h \"Report test. L2 errors in H.\" H L2\n",
       "report-test.exp");
 }
@@ -49,7 +49,8 @@ TEST(WriteReport, FigureSectionHasCaptionsErrorsAndRates) {
   const std::string md = testing::slurp(path);
   EXPECT_NE(md.find("## report-test: A report test (paper §5.2)"), std::string::npos);
   EXPECT_NE(md.find("### Report test. L2 errors in H."), std::string::npos);
-  EXPECT_NE(md.find("**" + mesh_family("bump-48").caption + "** (`bump-48`"), std::string::npos)
+  EXPECT_NE(md.find("**" + mesh_family("torus-unstructured").caption + "** (`torus-unstructured`"),
+            std::string::npos)
       << "the caption comes from the family table";
   // Rates from the first and the last level: exactly 2 and 4 (printed with two decimals).
   const auto row = [&](const std::string& method) {

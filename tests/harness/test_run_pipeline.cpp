@@ -64,6 +64,7 @@ TEST(RunPipeline, FullRunThenRerunReusesEveryCaseWithTheSameBytes) {
   const PipelineResult rebuilt = run_pipeline(report);
   EXPECT_EQ(rebuilt.computed, 0);
   EXPECT_EQ(testing::slurp(dir / "pipeline-test.csv"), csv);
+  ::unsetenv("SOURCE_DATE_EPOCH");
 }
 
 TEST(RunPipeline, ShardsStoreTheirCasesAndReportOnlyNamesWhatIsMissing) {
