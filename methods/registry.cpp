@@ -163,8 +163,12 @@ std::unique_ptr<Estimator> make_estimator(const std::string& name, EstimatorOpti
 }
 
 void register_estimator(const MethodInfo& info, EstimatorFactory factory) {
-  if (info.name.empty() || info.name != lower(info.name) || factory == nullptr)
-    throw UsageError("register_estimator: a method needs a lower-case name and a factory");
+  if (info.name.empty() || info.name != lower(info.name) || factory == nullptr ||
+      info.name.find_first_of(" ,=\"#") != std::string::npos)
+    throw UsageError("register_estimator: a method needs a lower-case name without spaces, "
+                     "commas, '=', quotes or '#', and a factory");
+  if (info.name == "external" || info.name == "all-operators")
+    throw UsageError("register_estimator: '" + info.name + "' is a keyword of experiment files");
   if (find(info.name) != nullptr)
     throw UsageError("register_estimator: method '" + info.name + "' exists already");
   if (info.min_degree < 0 || info.min_degree > info.max_degree ||

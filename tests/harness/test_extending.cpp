@@ -101,6 +101,8 @@ TEST(Extending, RegistrationErrors) {
                UsageError);
   EXPECT_THROW(register_estimator({"Toy2", 0, 0, {}, 1.0, ""}, &make_toy_normal), UsageError);
   EXPECT_THROW(register_estimator({"toy3", 0, 2, {}, 1.0, ""}, &make_toy_normal), UsageError);
+  EXPECT_THROW(register_estimator({"external", 0, 0, {}, 1.0, ""}, &make_toy_normal), UsageError);
+  EXPECT_THROW(register_estimator({"toy four", 0, 0, {}, 1.0, ""}, &make_toy_normal), UsageError);
   EXPECT_THROW(register_mesh_family({"toy-sphere", 1, "", "", "none"}, &toy_sphere), UsageError);
   // An option of the fits given to the toy operator is refused as for any operator.
   EstimatorOptions fit_only;
