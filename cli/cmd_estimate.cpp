@@ -20,6 +20,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <memory>
 #include <span>
 #include <string>
@@ -106,18 +107,20 @@ int run_estimate(const EstimateOptions& o) {
   if (ext == "csv")
     csv = std::make_unique<EstimateCsvWriter>(o.output, report.source_vertex, eo.threads);
   double open_seconds = since(t_open);
-  // Failed and excluded vertices by what the mesh shows at them (mesh/mesh_checks.h), computed
-  // at the first block that has one.
+  // Failed, excluded and partial vertices by what the mesh shows at them (mesh/mesh_checks.h),
+  // computed at the first block that has one.
+  constexpr VertexStatus kExplained[] = {VertexStatus::failed, VertexStatus::excluded,
+                                         VertexStatus::partial};
   std::vector<VertexDefect> defects;
-  std::array<std::array<int, kVertexDefectCount>, 2> by_defect{};  // [failed, excluded][defect]
-  const auto count_defects = [&](const Mesh& mesh, int first,
-                                 std::span<const VertexEstimate> out) {
+  std::array<std::array<int, kVertexDefectCount>, std::size(kExplained)> by_defect{};
+  const auto count_defects = [&](const Mesh& mesh, int first, std::span<const VertexEstimate> out) {
     for (size_t i = 0; i < out.size(); ++i) {
-      const bool failed = out[i].status == VertexStatus::failed;
-      if (!failed && out[i].status != VertexStatus::excluded) continue;
+      const auto k = static_cast<size_t>(
+          std::find(std::begin(kExplained), std::end(kExplained), out[i].status) -
+          std::begin(kExplained));
+      if (k == std::size(kExplained)) continue;
       if (defects.empty()) defects = vertex_defects(mesh);
-      const VertexDefect d = defects[static_cast<size_t>(first) + i];
-      ++by_defect[failed ? 0 : 1][static_cast<size_t>(d)];
+      ++by_defect[k][static_cast<size_t>(defects[static_cast<size_t>(first) + i])];
     }
   };
   const EstimateSink sink = [&](const Mesh& mesh, int first, std::span<const VertexEstimate> out) {
@@ -177,23 +180,26 @@ int run_estimate(const EstimateOptions& o) {
   for (int s = 0; s < kVertexStatusCount; ++s)
     counts += std::string(s > 0 ? ", " : "") + to_string(static_cast<VertexStatus>(s)) + " " +
               std::to_string(run.status_counts[static_cast<size_t>(s)]);
-  std::fprintf(stderr, "curvbench estimate: %s on %s: %d vertices (%s) in %.3f s (%.2f us/vertex) -> %s\n",
+  std::fprintf(stderr,
+               "curvbench estimate: %s on %s: %d vertices (%s) in %.3f s (%.2f us/vertex) -> %s\n",
                est->label().c_str(), o.mesh.c_str(), n, counts.c_str(), seconds,
                n > 0 ? 1e6 * seconds / n : 0.0, o.output.c_str());
-  // Why: failed and excluded vertices by the mesh's defect there ("none": a singular fit).
-  for (int k = 0; k < 2; ++k) {
+  // Why: failed, excluded and partial vertices by the mesh's defect there ("none": a singular fit
+  // or, for excluded, the method's own rule).
+  for (size_t k = 0; k < std::size(kExplained); ++k) {
     std::string why;
     for (int d = 0; d < kVertexDefectCount; ++d)
       if (const int c = by_defect[static_cast<size_t>(k)][static_cast<size_t>(d)]; c > 0)
         why += std::string(why.empty() ? "" : ", ") +
-               (d > 0    ? to_string(static_cast<VertexDefect>(d))
-                : k == 0 ? "no mesh defect (a singular fit)"
-                         : "no mesh defect (the method's own rule, e.g. a region reaching the "
-                           "boundary)") +
+               (d > 0 ? to_string(static_cast<VertexDefect>(d))
+                : kExplained[k] == VertexStatus::excluded
+                    ? "no mesh defect (the method's own rule, e.g. a region reaching the "
+                      "boundary)"
+                    : "no mesh defect (a singular fit)") +
                " " + std::to_string(c);
     if (!why.empty())
       std::fprintf(stderr, "curvbench estimate: %s vertices by cause: %s\n",
-                   k == 0 ? "failed" : "excluded", why.c_str());
+                   to_string(kExplained[k]), why.c_str());
   }
   if (o.timing) {
     // Per-stage wall times. Estimation and writing alternate block by block; each line is the sum

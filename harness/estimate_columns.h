@@ -4,9 +4,9 @@
 //   CSV  vertex,nx,ny,nz,k1,k2,H,K,d1x,d1y,d1z,d2x,d2y,d2z,degree,points,status
 //        numbers as the shortest text that reads back to the exact double (std::to_chars),
 //        "nan" for NaN, the status as a word (ok, degree_reduced, failed, excluded, disk_cut,
-//        sign_undetermined, partial)
+//        sign_undetermined, partial, reprojected)
 //   PLY  nx,ny,nz,k1,k2,H,K,d1x,d1y,d1z,d2x,d2y,d2z,degree,points,ring,status
-//        status as its integer code 0..6
+//        status as its integer code 0..7
 // Both are written block by block as the estimates come (EstimateCsvWriter, PlyWriter with
 // estimate_ply_types / estimate_ply_row), or at once from a whole vector (the same bytes).
 #pragma once

@@ -37,6 +37,8 @@ const char* to_string(VertexStatus status) {
       return "sign_undetermined";
     case VertexStatus::partial:
       return "partial";
+    case VertexStatus::reprojected:
+      return "reprojected";
   }
   return "unknown";
 }

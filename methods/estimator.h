@@ -39,16 +39,21 @@ enum class VertexStatus : std::uint8_t {
   excluded = 3,           ///< not computed by design (e.g. Xu at a boundary vertex): values NaN
   disk_cut = 4,           ///< fitted at the requested degree on part of the ring's points: the
                           ///< ring is not a topological disk, cut to one around the vertex (LSCM)
-  sign_undetermined = 5,  ///< finite values, but the surface around the vertex cannot be oriented
-                          ///< (non-orientable or non-manifold, mesh/orientation.h): the signs of
-                          ///< the normal and the curvatures are arbitrary
-  partial = 6,  ///< the quantities that can be determined at the vertex are finite, the rest of
-                ///< what the method computes is NaN (e.g. Meyer's H and K where the edge tensor
-                ///< fit of the directions is singular: d1, d2 NaN)
+  sign_undetermined = 5,  ///< an estimate (finite values; NaN where it would be partial), but the
+                          ///< surface around the vertex cannot be oriented (non-orientable or
+                          ///< non-manifold, mesh/orientation.h): the signs of the normal and the
+                          ///< curvatures are arbitrary
+  partial = 6,      ///< the quantities that can be determined at the vertex are finite, the rest of
+                    ///< what the method computes is NaN (e.g. Meyer's H and K where the edge tensor
+                    ///< fit of the directions is singular: d1, d2 NaN; or only the normal
+                    ///< where a fit of the curvatures is singular)
+  reprojected = 7,  ///< LSCM: the map of the ring folded it (the fitted normal turned more than
+                    ///< 90 degrees from the mesh's vertex normal); fitted on the ring's
+                    ///< orthogonal projection onto the tangent plane instead (LOP's map)
 };
 
 /// The number of VertexStatus values (arrays indexed by status).
-inline constexpr int kVertexStatusCount = 7;
+inline constexpr int kVertexStatusCount = 8;
 
 const char* to_string(VertexStatus status);
 
@@ -139,8 +144,9 @@ class Estimator {
   virtual double default_ring() const;
 
   /// The starting neighbourhood of vertex v, the same for every ring-based method (paper §4.1,
-  /// docs/algorithms.md §1.2): ring r0 = options().rings or default_ring(); when options().adaptive,
-  /// grown by half rings until min_neighbours(degree) neighbours or ring 2 r0. Returns r0.
+  /// docs/algorithms.md §1.2): ring r0 = options().rings or default_ring(); when
+  /// options().adaptive, grown by half rings until min_neighbours(degree) neighbours or ring 2 r0.
+  /// Returns r0.
   double collect_neighbourhood(RingCollector& rings, int v) const;
   /// The same, served from ctx.neighbourhoods when that table holds this neighbourhood (same
   /// spec, and faces if neighbourhood_use() reads them): identical neighbours, order, faces and
@@ -198,8 +204,8 @@ std::unique_ptr<Estimator> make_estimator(const std::string& name, EstimatorOpti
 /// One line of the registry (methods/registry.cpp): what the rest of the project needs to know
 /// of a method besides its estimator.
 struct MethodInfo {
-  std::string name;                ///< --method name, e.g. "lhf"
-  int min_degree = 0;              ///< degrees of a fit; 0, 0 for a degree-free operator
+  std::string name;    ///< --method name, e.g. "lhf"
+  int min_degree = 0;  ///< degrees of a fit; 0, 0 for a degree-free operator
   int max_degree = 0;
   std::vector<int> bench_degrees;  ///< make bench's rows (0: a degree-free operator, once)
   double cost = 1.0;               ///< seconds per vertex relative to LHF-2 (shard balance)

@@ -48,29 +48,43 @@ bool set_quantities(const Curvature& c, int degree, int requested, int points, d
 
 bool set_operator_quantities(const Curvature& c, const ComputedQuantities& computed, int points,
                              double ring, VertexEstimate& out) {
-  const bool finite = (!computed.normal || c.normal.allFinite()) &&
-                      (!computed.principal || (std::isfinite(c.k1) && std::isfinite(c.k2))) &&
-                      (!computed.mean || std::isfinite(c.H)) &&
-                      (!computed.gaussian || std::isfinite(c.K)) &&
-                      (!computed.directions || (c.d1.allFinite() && c.d2.allFinite()));
-  if (!finite) return false;
   out = VertexEstimate{};  // NaN everywhere
-  if (computed.normal) out.normal = c.normal;
-  if (computed.principal) {
+  int kept = 0, missing = 0;
+  // Copies a computed group of values if all of it is finite; counts it as kept or missing.
+  const auto take = [&](bool is_computed, bool finite, auto&& copy) {
+    if (!is_computed) return;
+    if (finite) {
+      copy();
+      ++kept;
+    } else {
+      ++missing;
+    }
+  };
+  take(computed.normal, c.normal.allFinite(), [&] { out.normal = c.normal; });
+  take(computed.principal, std::isfinite(c.k1) && std::isfinite(c.k2), [&] {
     out.k1 = c.k1;
     out.k2 = c.k2;
-  }
-  if (computed.mean) out.H = c.H;
-  if (computed.gaussian) out.K = c.K;
-  if (computed.directions) {
+  });
+  take(computed.mean, std::isfinite(c.H), [&] { out.H = c.H; });
+  take(computed.gaussian, std::isfinite(c.K), [&] { out.K = c.K; });
+  take(computed.directions, c.d1.allFinite() && c.d2.allFinite(), [&] {
     out.d1 = c.d1;
     out.d2 = c.d2;
-  }
+  });
   out.degree = 0;
   out.points = points;
   out.ring = ring;
-  out.status = VertexStatus::ok;
-  return true;
+  out.status = missing == 0 ? VertexStatus::ok : VertexStatus::partial;
+  if (kept > 0) return true;
+  set_failed(ring, points, out);
+  return false;
+}
+
+void set_normal_only(const Vec3& normal, int points, double ring, VertexEstimate& out) {
+  set_no_estimate(VertexStatus::failed, ring, points, out);
+  if (!normal.allFinite() || !(normal.squaredNorm() > 0.25)) return;  // no unit normal
+  out.normal = normal;
+  out.status = VertexStatus::partial;
 }
 
 void mark_sign_undetermined(std::span<const unsigned char> undetermined,

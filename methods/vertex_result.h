@@ -28,14 +28,22 @@ void set_excluded(double ring, int points, VertexEstimate& out);
 bool set_quantities(const Curvature& c, int degree, int requested, int points, double ring,
                     VertexEstimate& out);
 
-/// A degree-free method's estimate (degree 0, status ok): copies the quantities `computed` says
-/// the method computes and leaves the others NaN. Returns false, leaving out untouched, if a
-/// computed value is not finite.
+/// A degree-free method's estimate (degree 0): copies the quantities `computed` says the method
+/// computes and leaves the others NaN. Status ok if every computed quantity is finite; partial
+/// if only some are (the others NaN: e.g. H and K without the directions); returns false, with
+/// `out` set failed, if none is.
 bool set_operator_quantities(const Curvature& c, const ComputedQuantities& computed, int points,
                              double ring, VertexEstimate& out);
 
-/// Marks every vertex v with undetermined[v] != 0 and finite values (ok, degree_reduced,
-/// disk_cut) as sign_undetermined (mesh/orientation.h); failed and excluded rows stay as they are.
+/// Where a method's fit of the curvatures is singular but it has the vertex normal its frame is
+/// built on: that normal, every other value NaN, degree 0, status partial (failed if the normal
+/// is not finite).
+void set_normal_only(const Vec3& normal, int points, double ring, VertexEstimate& out);
+
+/// Marks every vertex v with undetermined[v] != 0 and an estimate (ok, degree_reduced, disk_cut,
+/// partial: values NaN where partial) as sign_undetermined (mesh/orientation.h); failed and
+/// excluded rows stay as they are. The sign problem wins over partial: a row's NaNs say what is
+/// missing, its status that the signs of what is there are arbitrary.
 /// `undetermined` and `estimates` start at the same vertex (a block: both subspans).
 void mark_sign_undetermined(std::span<const unsigned char> undetermined,
                             std::span<VertexEstimate> estimates);

@@ -169,7 +169,8 @@ struct PyExact {
 py::array numpy_status_names(const py::array_t<std::uint8_t>& codes) {
   const py::module_ np = py::module_::import("numpy");
   const py::object names = np.attr("array")(py::make_tuple(
-      "ok", "degree_reduced", "failed", "excluded", "disk_cut", "sign_undetermined", "partial"));
+      "ok", "degree_reduced", "failed", "excluded", "disk_cut", "sign_undetermined", "partial",
+      "reprojected"));
   return names.attr("__getitem__")(codes);
 }
 
@@ -376,11 +377,12 @@ PYBIND11_MODULE(curvbench, m) {
                     "at a boundary vertex), 'disk_cut' (fitted on part of a ring that was not a "
                     "disk), 'sign_undetermined' (finite, but the surface there cannot be "
                     "oriented) or 'partial' (what can be determined there is finite, the rest "
-                    "NaN, e.g. Meyer's directions where its tensor fit is singular).")
+                    "NaN, e.g. Meyer's directions where its tensor fit is singular) or 'reprojected' "
+                    "(LSCM: the map folded the ring, fitted on its projection instead).")
       .def_readonly(
           "status_code", &PyEstimate::status_code,
           "(n,) uint8 status as 0 ok, 1 degree_reduced, 2 failed, 3 excluded, 4 disk_cut, "
-          "5 sign_undetermined, 6 partial.")
+          "5 sign_undetermined, 6 partial, 7 reprojected.")
       .def("__len__", [](const PyEstimate& e) { return e.estimates.size(); })
       .def("__repr__", [](const PyEstimate& e) {
         return "<curvbench.Estimate " + e.method + " of " + std::to_string(e.estimates.size()) +

@@ -180,7 +180,8 @@ def info_lines(path):
     return out
 
 
-STATUSES = ["ok", "degree_reduced", "disk_cut", "sign_undetermined", "partial", "failed", "excluded"]
+STATUSES = ["ok", "degree_reduced", "disk_cut", "sign_undetermined", "partial", "reprojected",
+            "failed", "excluded"]
 
 
 def main():

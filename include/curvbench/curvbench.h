@@ -38,10 +38,13 @@ enum class Status : std::uint8_t {
   sign_undetermined = 5,  ///< finite, but the surface there cannot be oriented (non-orientable
                           ///< or non-manifold): the signs of normal and curvatures are arbitrary
   partial = 6,  ///< what can be determined at the vertex is finite, the rest NaN (e.g. Meyer's
-                ///< directions where its edge tensor fit is singular)
+                ///< directions where its edge tensor fit is singular, or only the normal)
+  reprojected = 7,  ///< LSCM: the map folded the ring (its normal turned more than 90 degrees
+                    ///< from the mesh's); fitted on the ring's projection onto the tangent plane
 };
 
-/// "ok", "degree_reduced", "failed", "excluded", "disk_cut", "sign_undetermined", "partial".
+/// "ok", "degree_reduced", "failed", "excluded", "disk_cut", "sign_undetermined", "partial",
+/// "reprojected".
 const char* status_name(Status status);
 
 /// The method and its options. The options (degree, rings, noisy, threads, vertex_normals,

@@ -54,6 +54,7 @@ class LscmEstimator final : public RingFitEstimator {
   }
 
   bool use_normal_safeguard() const override { return settings_.normal_safeguard; }
+  bool rejects_turned_normal() const override { return true; }
 
  private:
   bool cgal_;

@@ -1,4 +1,5 @@
-// LSCM-d: ring fitting on a local least-squares conformal map (paper §4.2.3; docs/algorithms.md §8).
+// LSCM-d: ring fitting on a local least-squares conformal map (paper §4.2.3; docs/algorithms.md
+// §8).
 //
 // Per vertex the shared driver (ring_fit_estimator.h) collects the ring of the degree (default
 // (d+1)/2, adaptive half-ring growth), and this estimator maps the ring faces F_r to the plane

@@ -4,9 +4,9 @@
 // The issue requires lscm-fast to give the same parameterization as CGAL's LSCM_parameterizer_3
 // up to a similarity, so by default it copies CGAL's choices: the two pins are the extremes along
 // the longest axis of the bounding box (Two_vertices_parameterizer_3) and the conformal energy is
-// not divided by triangle area. docs/algorithms.md §8's variant (farthest pair, Levy's 1/A_T energy)
-// is LscmMapOptions{LscmPins::farthest_pair, true}; it differs from CGAL's map by more than a
-// similarity on curved patches (tests/methods/test_lscm.cpp measures by how much).
+// not divided by triangle area. docs/algorithms.md §8's variant (farthest pair, Levy's 1/A_T
+// energy) is LscmMapOptions{LscmPins::farthest_pair, true}; it differs from CGAL's map by more than
+// a similarity on curved patches (tests/methods/test_lscm.cpp measures by how much).
 #include "methods/fits/lscm.h"
 
 namespace curvbench {

@@ -11,10 +11,10 @@
 #include "core/shape_operator.h"
 #include "core/text.h"
 #include "mesh/rings.h"
+#include "methods/fits/weights.h"
 #include "methods/kernels/batched_curvature.h"
 #include "methods/kernels/batched_fit.h"
 #include "methods/vertex_result.h"
-#include "methods/fits/weights.h"
 
 namespace curvbench {
 
@@ -172,18 +172,24 @@ void set_fit_curvature(const Curvature& c, int degree, int rows, int requested, 
     out.status = VertexStatus::disk_cut;
 }
 
-// The quantities of a fit of degree >= 1 (core/shape_operator.h) and the status.
+constexpr double kMinMappedNormalCosine = 0.0;  // cos 90 degrees
+
+// The curvature of a fit of degree >= 1 (core/shape_operator.h) on the route.
+Curvature fit_curvature(FitRoute route, const LocalFrame& frame, const FitResult& fit) {
+  const auto& t = fit.taylor;
+  return route == FitRoute::height
+             ? curvature_from_height(frame.t1, frame.t2, frame.m, t(kFu, 0), t(kFv, 0), t(kFuu, 0),
+                                     t(kFuv, 0), t(kFvv, 0))
+             : curvature_from_parametric(t.row(kFu).transpose(), t.row(kFv).transpose(),
+                                         t.row(kFuu).transpose(), t.row(kFuv).transpose(),
+                                         t.row(kFvv).transpose());
+}
+
+// The quantities of a fit of degree >= 1 and the status.
 void set_fit_quantities(FitRoute route, const LocalFrame& frame, const FitResult& fit,
                         int requested, double ring, bool partial, VertexEstimate& out) {
-  const auto& t = fit.taylor;
-  const Curvature c =
-      route == FitRoute::height
-          ? curvature_from_height(frame.t1, frame.t2, frame.m, t(kFu, 0), t(kFv, 0), t(kFuu, 0),
-                                  t(kFuv, 0), t(kFvv, 0))
-          : curvature_from_parametric(t.row(kFu).transpose(), t.row(kFv).transpose(),
-                                      t.row(kFuu).transpose(), t.row(kFuv).transpose(),
-                                      t.row(kFvv).transpose());
-  set_fit_curvature(c, fit.degree, fit.rows, requested, ring, partial, out);
+  set_fit_curvature(fit_curvature(route, frame, fit), fit.degree, fit.rows, requested, ring,
+                    partial, out);
 }
 
 }  // namespace
@@ -196,36 +202,59 @@ void RingFitEstimator::estimate(const MeshContext& ctx, int v, Workspace& base,
   const int d = options_.degree;
   const int min_nb = min_neighbours(d);
   const bool safeguard = use_normal_safeguard();
-  const double r0 = collect_neighbourhood(ctx, ws.rings, v);
-  const double max_ring = 2.0 * r0;
-  double ring = ws.rings.ring();
-  FitResult fit;
-  bool have_fit = false;
-  bool fit_partial = false;
-  double fit_ring = ring;
-  for (;;) {
-    const RingView view{
-        ctx.mesh, ctx.approx_normals, v, ws.rings.ring(), ws.rings.neighbours(), ws.rings.faces(),
-        frame};
-    const bool hook_ok = parameterize(view, ws.uv, ws.param.get());
-    FitResult attempt;
-    if (fit_current_ring(*this, hook_ok, ctx, v, frame, safeguard, ws, attempt)) {
-      fit = attempt;
-      have_fit = true;
-      fit_partial = ws.partial;
-      fit_ring = ring;
+  // The fit with the rank-failure rule, on the method's parameterization or (project) on the
+  // orthogonal projection onto the frame plane (LOP's: the base class's parameterize()).
+  const auto fit_with_growth = [&](bool project, FitResult& fit, bool& fit_partial,
+                                   double& fit_ring) {
+    const double r0 = collect_neighbourhood(ctx, ws.rings, v);
+    const double max_ring = 2.0 * r0;
+    double ring = ws.rings.ring();
+    bool have_fit = false;
+    fit_ring = ring;
+    for (;;) {
+      const RingView view{
+          ctx.mesh, ctx.approx_normals, v, ws.rings.ring(), ws.rings.neighbours(), ws.rings.faces(),
+          frame};
+      const bool hook_ok = project ? RingFitEstimator::parameterize(view, ws.uv, nullptr)
+                                   : parameterize(view, ws.uv, ws.param.get());
+      FitResult attempt;
+      if (fit_current_ring(*this, hook_ok, ctx, v, frame, safeguard, ws, attempt)) {
+        fit = attempt;
+        have_fit = true;
+        fit_partial = ws.partial;
+        fit_ring = ring;
+      }
+      // Rank-failure rule (docs/algorithms.md §1.2, [C2]): grow by half a ring up to 2 r0.
+      const bool reduced = !have_fit || fit.degree < d;
+      if (!options_.adaptive || !reduced || ring >= max_ring - 1e-9) break;
+      const size_t before_v = ws.rings.neighbours().size();
+      const size_t before_f = ws.rings.num_faces();
+      ring = ws.rings.collect_at_least(v, ring + 0.5, min_nb, max_ring);
+      if (ws.rings.neighbours().size() == before_v && ws.rings.num_faces() == before_f)
+        break;  // the component is exhausted: nothing new to fit
     }
-    // Rank-failure rule (docs/algorithms.md §1.2, [C2]): grow by half a ring up to 2 r0.
-    const bool reduced = !have_fit || fit.degree < d;
-    if (!options_.adaptive || !reduced || ring >= max_ring - 1e-9) break;
-    const size_t before_v = ws.rings.neighbours().size();
-    const size_t before_f = ws.rings.num_faces();
-    ring = ws.rings.collect_at_least(v, ring + 0.5, min_nb, max_ring);
-    if (ws.rings.neighbours().size() == before_v && ws.rings.num_faces() == before_f)
-      break;  // the component is exhausted: nothing new to fit
+    if (!have_fit) fit.rows = 0;
+    return have_fit && fit.degree >= 1;
+  };
+  FitResult fit;
+  bool fit_partial = false;
+  double fit_ring = 0.0;
+  if (!fit_with_growth(false, fit, fit_partial, fit_ring)) {
+    set_failed(fit_ring, fit.rows, out);
+    return;
   }
-  if (!have_fit || fit.degree < 1) {
-    set_failed(fit_ring, have_fit ? fit.rows : 0, out);
+  // A map that folds the ring (a ring wrapped around a hole, or a whole small closed surface such
+  // as the 1.5-ring of a tetrahedron: the fitted x_u x x_v turns more than 90 degrees from the
+  // mesh's vertex normal m0) gives no tangent plane: the same fit on the orthogonal projection of
+  // the ring instead, status reprojected.
+  if (rejects_turned_normal() &&
+      !(fit_curvature(route_, frame, fit).normal.dot(m0) > kMinMappedNormalCosine)) {
+    if (!fit_with_growth(true, fit, fit_partial, fit_ring)) {
+      set_failed(fit_ring, fit.rows, out);
+      return;
+    }
+    set_fit_quantities(route_, frame, fit, d, fit_ring, false, out);
+    if (out.status != VertexStatus::failed) out.status = VertexStatus::reprojected;
     return;
   }
   set_fit_quantities(route_, frame, fit, d, fit_ring, fit_partial, out);

@@ -65,8 +65,8 @@
 
 #include "core/types.h"
 #include "methods/estimator.h"
-#include "methods/local_frame.h"
 #include "methods/fits/polynomial_fit.h"
+#include "methods/local_frame.h"
 
 namespace curvbench {
 
@@ -98,8 +98,8 @@ class RingFitEstimator : public Estimator {
   bool ring_fit() const final { return true; }
   std::unique_ptr<Workspace> make_workspace(const Mesh& mesh) const final;
   void estimate(const MeshContext& ctx, int v, Workspace& ws, VertexEstimate& out) const final;
-  /// The batched kernel (methods/kernels/batched_fit.h) when uses_batched_kernel(), else estimate() per
-  /// vertex. Per vertex: the same neighbourhood, rows, weights and formulas as estimate(); a
+  /// The batched kernel (methods/kernels/batched_fit.h) when uses_batched_kernel(), else estimate()
+  /// per vertex. Per vertex: the same neighbourhood, rows, weights and formulas as estimate(); a
   /// vertex the batch cannot finish at the requested degree (too few rows, a column failing the
   /// safeguard, so degree reduction or adaptive growth) goes through estimate().
   void estimate_batch(const MeshContext& ctx, int first, int count, Workspace& ws,
@@ -143,6 +143,9 @@ class RingFitEstimator : public Estimator {
                             ParamScratch* scratch) const;
   virtual std::unique_ptr<ParamScratch> make_param_scratch(const Mesh& mesh) const;
   virtual bool use_normal_safeguard() const { return options().normal_safeguard; }
+  /// True if a fitted normal more than 60 degrees from the mesh's vertex normal is no answer (a
+  /// map of the ring that can fold a whole small closed surface onto the plane: LSCM).
+  virtual bool rejects_turned_normal() const { return false; }
   /// Whether the batched kernel may fit this method. It computes the default projection of
   /// parameterize() inline, so only a method that keeps that hook may return true (LHF, LOP); a
   /// method that overrides parameterize() keeps the default false.

@@ -28,8 +28,8 @@
 #include "core/errors.h"
 #include "core/shape_operator.h"
 #include "methods/estimator.h"
-#include "methods/local_frame.h"
 #include "methods/fits/polynomial_fit.h"
+#include "methods/local_frame.h"
 #include "methods/vertex_result.h"
 
 namespace curvbench {

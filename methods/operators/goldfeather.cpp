@@ -32,7 +32,9 @@
 // are usable; the upper-left 3x3 block of the same normal equations), status degree_reduced. We
 // keep the normal rows rather than fit positions only because the method's premise is that
 // adjacent normals carry the curvature information; where none are usable the two coincide.
-// Failed: fewer than 3 neighbours, or the quadratic numerically singular too.
+// The quadratic numerically singular too (e.g. the neighbours on two lines through p): the normal
+// n only, status partial; also where fewer than 3 neighbours leave nothing to fit. Failed: no
+// vertex normal (an isolated vertex).
 // Boundary vertices: the fit needs no closed 1-ring (at least 3 neighbours give 9 >= 7 equations):
 // computed on the neighbours they have, status ok (degree_reduced as above).
 // Cost: per neighbour 47 monomial sums; per vertex one 7x7 system (and a 3x3 one where the 7x7 is
@@ -202,15 +204,16 @@ class GoldfeatherEstimator final : public OperatorEstimator {
     auto& ws = static_cast<GoldfeatherWorkspace&>(base);
     ws.rings.collect_integer(v, 1);
     const int points = static_cast<int>(ws.rings.neighbours().size());
-    if (points < 3) {
-      set_failed(1.0, points, out);
+    const OperatorMeshData& data = mesh_data(ctx);
+    const Vec3 n = data.normal(ctx, v);
+    if (points < 3 || !n.allFinite()) {
+      set_normal_only(n, points, 1.0, out);
       return;
     }
-    const OperatorMeshData& data = mesh_data(ctx);
-    const LocalFrame frame = make_local_frame(data.normal(ctx, v));
+    const LocalFrame frame = make_local_frame(n);
     const double s = local_coordinates(ctx.mesh, v, frame, ws);
     if (s == 0.0) {
-      set_failed(1.0, points, out);
+      set_normal_only(n, points, 1.0, out);
       return;
     }
     // Scaled coordinates X = x/s, Z = z/s: unknowns (A s, B s, C s, D s^2, E s^2, F s^2, G s^2);
@@ -227,7 +230,7 @@ class GoldfeatherEstimator final : public OperatorEstimator {
     double w[3];
     VertexStatus status = VertexStatus::ok;
     if (!solve(sums, s, w, status)) {
-      set_failed(1.0, points, out);
+      set_normal_only(frame.m, points, 1.0, out);
       return;
     }
     set_result(curvature_from_tangent_tensor(frame.m, w[0], w[1], w[2], frame.t1, frame.t2), status,
@@ -324,7 +327,7 @@ class GoldfeatherEstimator final : public OperatorEstimator {
         if (points[l] == 0) {
           estimate(ctx, first + b + l, base, o);
         } else if (!solved[l]) {
-          set_failed(1.0, points[l], o);
+          set_normal_only(frames.frame(l).m, points[l], 1.0, o);
         } else if (curvature.regular[static_cast<size_t>(l)]) {
           set_result(curvature.curvature(l), status[l], points[l], o);
         } else {
@@ -338,11 +341,8 @@ class GoldfeatherEstimator final : public OperatorEstimator {
 
  private:
   void set_result(const Curvature& c, VertexStatus status, int points, VertexEstimate& out) const {
-    if (!set_operator_quantities(c, computes(), points, 1.0, out)) {
-      set_failed(1.0, points, out);
-      return;
-    }
-    out.status = status;
+    if (set_operator_quantities(c, computes(), points, 1.0, out) && out.status == VertexStatus::ok)
+      out.status = status;
   }
 
   // The normal equations from the sums and the cubic (or the quadratic fallback): the Weingarten

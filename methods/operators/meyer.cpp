@@ -46,8 +46,8 @@
 #include <string>
 
 #include "core/shape_operator.h"
-#include "methods/operators/face_geometry.h"
 #include "methods/local_frame.h"
+#include "methods/operators/face_geometry.h"
 #include "methods/operators/operator_estimator.h"
 #include "methods/vertex_result.h"
 

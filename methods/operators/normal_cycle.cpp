@@ -41,8 +41,8 @@
 #include "core/huge_pages.h"
 #include "core/shape_operator.h"
 #include "core/text.h"
-#include "methods/operators/face_geometry.h"
 #include "methods/local_frame.h"
+#include "methods/operators/face_geometry.h"
 #include "methods/operators/operator_estimator.h"
 #include "methods/vertex_result.h"
 

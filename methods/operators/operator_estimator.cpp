@@ -17,7 +17,8 @@ OperatorEstimator::OperatorEstimator(EstimatorOptions options, VertexNormals def
     throw UsageError("a discrete operator takes no degree (got " + std::to_string(options_.degree) +
                      ")");
   if (!ring_option && options_.rings != 0.0 && options_.rings != 1.0)
-    throw UsageError("this method uses the 1-ring only (got ring " + format_g(options_.rings) + ")");
+    throw UsageError("this method uses the 1-ring only (got ring " + format_g(options_.rings) +
+                     ")");
 }
 
 VertexNormals OperatorEstimator::normal_weighting() const {

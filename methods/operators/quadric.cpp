@@ -4,15 +4,18 @@
 //
 // Per vertex v with unit normal n (see "Choices") and its local frame (t1, t2, n):
 //   neighbourhood  the k-ring of v (k = options().rings, default 5, libigl's default radius in
-//                  k-ring mode), centre included; fewer than 6 points: failed (as libigl);
+//                  k-ring mode), centre included; fewer than 6 points: the normal n only,
+//                  status partial (libigl fails the vertex);
 //                  neighbours whose normal faces away (n_i . n <= 0) are dropped when at least
 //                  6 points remain (libigl's projection-plane check)
 //   points         (u, v, w) = ((x - x_v) . t1, (x - x_v) . t2, (x - x_v) . n)
 //   fit            w = a u^2 + b u v + c v^2 + d u + e v  (+ f with quadric_constant), unweighted
 //                  least squares (coordinates scaled by their RMS distance for conditioning;
 //                  normal equations); where the facing points give a rank-deficient system,
-//                  the fit is redone over the whole k-ring; rank-deficient there too fails the
-//                  vertex, where libigl's SVD would return its minimum-norm solution
+//                  the fit is redone over the whole k-ring; rank-deficient there too (e.g. a
+//                  boundary vertex of a strip one triangle wide: points on two lines) gives
+//                  the normal n only, status partial, where libigl's SVD would return its
+//                  minimum-norm solution
 //   quantities     the height-function column of paper Table 1 at (0, 0) with f_u = d, f_v = e,
 //                  f_uu = 2a, f_uv = b, f_vv = 2c (curvature_from_height): libigl's fundamental
 //                  forms E, F, G, L, M, N of the quadric give the same shape operator. The
@@ -168,12 +171,12 @@ class QuadricEstimator final : public OperatorEstimator {
       layer_begin = layer_end;
     }
     const std::span<const int> nb(found + 1, size - 1);
-    if (1 + static_cast<int>(nb.size()) < kMinPoints) {
-      set_failed(ring, 1 + static_cast<int>(nb.size()), out);
-      return;
-    }
     const VertexMatrix& normals = data.normals.rows() > 0 ? data.normals : ctx.approx_normals;
     const Vec3 n = normals.row(v).transpose();
+    if (1 + static_cast<int>(nb.size()) < kMinPoints) {
+      set_normal_only(n, 1 + static_cast<int>(nb.size()), ring, out);
+      return;
+    }
     ws.keep.clear();
     for (int w : nb)
       if (normals.row(w).dot(n) > 0.0) ws.keep.push_back(w);
@@ -186,7 +189,7 @@ class QuadricEstimator final : public OperatorEstimator {
       ws.keep.assign(nb.begin(), nb.end());
       if (fit(mesh, v, frame, ring, ws, out)) return;
     }
-    set_failed(ring, 1 + static_cast<int>(ws.keep.size()), out);
+    set_normal_only(n, 1 + static_cast<int>(ws.keep.size()), ring, out);
   }
 
  private:
@@ -233,7 +236,8 @@ class QuadricEstimator final : public OperatorEstimator {
     const Curvature c =
         curvature_from_height(frame.t1, frame.t2, frame.m, coef(3), coef(4), 2.0 * coef(0) * inv,
                               coef(1) * inv, 2.0 * coef(2) * inv);
-    return set_operator_quantities(c, computes(), points, ring, out);
+    return set_operator_quantities(c, computes(), points, ring, out) &&
+           out.status == VertexStatus::ok;
   }
 
   // The normal equations of the rows (u^2, u v, v^2, u, v[, 1]) . coef = w over the points

@@ -37,8 +37,8 @@
 
 #include "core/huge_pages.h"
 #include "core/shape_operator.h"
-#include "methods/operators/face_geometry.h"
 #include "methods/local_frame.h"
+#include "methods/operators/face_geometry.h"
 #include "methods/operators/operator_estimator.h"
 #include "methods/vertex_result.h"
 
@@ -168,8 +168,8 @@ class RusinkiewiczEstimator final : public OperatorEstimator {
     const auto& data = static_cast<const RusinkiewiczData&>(*ctx.data);
     const VertexSums& sums = data.sums[static_cast<size_t>(v)];
     const double total = sums.total;
-    if (points == 0 || !(total > 0.0)) {
-      set_failed(1.0, points, out);
+    if (points == 0 || !(total > 0.0)) {  // no face tensor to average: the normal only
+      set_normal_only(data.normal(ctx, v), points, 1.0, out);
       return;
     }
     const Curvature c =

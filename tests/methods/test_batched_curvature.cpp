@@ -1,5 +1,5 @@
-// The lane-wise frames and height-function curvature (methods/kernels/batched_curvature.h) against the
-// scalar functions they mirror: bit for bit on every regular lane, and the scalar functions'
+// The lane-wise frames and height-function curvature (methods/kernels/batched_curvature.h) against
+// the scalar functions they mirror: bit for bit on every regular lane, and the scalar functions'
 // special cases (zero or non-finite input, zero gradient, exact umbilic, huge values) flagged as
 // not regular so that the caller takes the scalar path.
 #include <gtest/gtest.h>

@@ -240,8 +240,8 @@ TEST(Sphere, EveryOperatorGivesMinusHalf) {
       if (c.mean) h_err = std::max(h_err, std::abs(q.H + 0.5) / 0.5);
       if (c.normal) n_err = std::max(n_err, (q.normal - mesh.position(v).normalized()).norm());
     }
-    std::printf("%-13s level 4: max relative H error %.3e, normal %.3e\n", info.name.c_str(),
-                h_err, n_err);
+    std::printf("%-13s level 4: max relative H error %.3e, normal %.3e\n", info.name.c_str(), h_err,
+                n_err);
     EXPECT_LT(h_err, 0.05) << info.name;  // H = -1/2: outward normals, B = n . x_uu
     EXPECT_LT(n_err, 0.01) << info.name;
   }
@@ -596,8 +596,9 @@ TEST(Registry, NamesDegreesAndErrors) {
 }  // namespace
 }  // namespace curvbench
 
-// ---- the interface of the discrete operators: degree-free methods, interior-only scoring, prepare(),
-// per-vertex exceptions, quantities a method does not compute -----------------------------------
+// ---- the interface of the discrete operators: degree-free methods, interior-only scoring,
+// prepare(), per-vertex exceptions, quantities a method does not compute
+// -----------------------------------
 
 namespace curvbench {
 namespace {

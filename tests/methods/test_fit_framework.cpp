@@ -7,11 +7,11 @@
 
 #include "meshgen/random.h"
 #include "methods/fits/least_squares.h"
-#include "methods/local_frame.h"
 #include "methods/fits/polynomial_fit.h"
 #include "methods/fits/safeguarded_qr.h"
 #include "methods/fits/vandermonde.h"
 #include "methods/fits/weights.h"
+#include "methods/local_frame.h"
 
 namespace curvbench {
 namespace {

@@ -1,4 +1,5 @@
-// Meyer (methods/operators/meyer.cpp): Meyer, Desbrun, Schröder & Barr 2003 in the project's conventions.
+// Meyer (methods/operators/meyer.cpp): Meyer, Desbrun, Schröder & Barr 2003 in the project's
+// conventions.
 #include <gtest/gtest.h>
 
 #include <cmath>

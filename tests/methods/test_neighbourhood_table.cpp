@@ -12,11 +12,11 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "mesh/neighbourhood_table.h"
 #include "mesh/rings.h"
 #include "meshgen/generate.h"
 #include "method_test_util.h"
 #include "methods/estimator.h"
-#include "mesh/neighbourhood_table.h"
 
 namespace curvbench {
 namespace {

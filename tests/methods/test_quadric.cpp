@@ -1,4 +1,5 @@
-// Quadric (methods/operators/quadric.cpp): libigl's k-ring quadric fit in the project's conventions.
+// Quadric (methods/operators/quadric.cpp): libigl's k-ring quadric fit in the project's
+// conventions.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -79,7 +80,7 @@ TEST(Quadric, Conventions) {
 }
 
 // Boundary vertices: the one-sided k-ring fit is defined (status ok); too few points: failed.
-TEST(Quadric, BoundaryVerticesComputedAndTooFewPointsFail) {
+TEST(Quadric, BoundaryVerticesComputedAndTooFewPointsGiveTheNormal) {
   const Mesh m = grid_mesh(8, 0.1, true, 0.2, 3, [](double x, double y) {
     return Vec3(x, y, 0.3 * x * x - 0.2 * y * y);
   });
@@ -90,13 +91,17 @@ TEST(Quadric, BoundaryVerticesComputedAndTooFewPointsFail) {
     EXPECT_TRUE(std::isfinite(q.H) && q.d1.allFinite());
   }
   expect_thread_independent("quadric", o, m);
-  // A single triangle: 3 points < 6.
+  // A single triangle: 3 points < 6, no quadric: its normal (the vertex normal of the frame),
+  // every curvature NaN, status partial.
   VertexMatrix V(3, 3);
   V << 0, 0, 0, 1, 0, 0, 0, 1, 0;
   FaceMatrix F(1, 3);
   F << 0, 1, 2;
-  for (const VertexEstimate& q : estimate_mesh(Mesh(V, F), *make_estimator("quadric", {})))
-    EXPECT_EQ(q.status, VertexStatus::failed);
+  for (const VertexEstimate& q : estimate_mesh(Mesh(V, F), *make_estimator("quadric", {}))) {
+    EXPECT_EQ(q.status, VertexStatus::partial);
+    EXPECT_NEAR(q.normal.z(), 1.0, 1e-12);
+    EXPECT_TRUE(std::isnan(q.H) && std::isnan(q.K) && std::isnan(q.k1) && std::isnan(q.d1.x()));
+  }
 }
 
 }  // namespace

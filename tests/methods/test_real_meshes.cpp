@@ -70,7 +70,8 @@ TEST(RealMeshes, EveryMethodAnswersEverywhereOnAHoleyBlockWithNeedles) {
       }
       std::printf("%-14s", est->label().c_str());
       for (int s = 0; s < kVertexStatusCount; ++s)
-        std::printf(" %s %d", to_string(static_cast<VertexStatus>(s)), counts[static_cast<size_t>(s)]);
+        std::printf(" %s %d", to_string(static_cast<VertexStatus>(s)),
+                    counts[static_cast<size_t>(s)]);
       std::printf("\n");
     }
   }

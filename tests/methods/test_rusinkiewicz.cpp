@@ -1,4 +1,5 @@
-// Rusinkiewicz (methods/operators/rusinkiewicz.cpp): Rusinkiewicz 2004 in the project's conventions.
+// Rusinkiewicz (methods/operators/rusinkiewicz.cpp): Rusinkiewicz 2004 in the project's
+// conventions.
 #include <gtest/gtest.h>
 
 #include <algorithm>

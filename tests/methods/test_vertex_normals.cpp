@@ -1,13 +1,14 @@
-// Vertex normal weightings (methods/operators/vertex_normals.h) by name, and the options of single methods
-// (EstimatorOptions: vertex_normals, quadric_constant, ball_factor) checked by make_estimator.
+// Vertex normal weightings (methods/operators/vertex_normals.h) by name, and the options of single
+// methods (EstimatorOptions: vertex_normals, quadric_constant, ball_factor) checked by
+// make_estimator.
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "core/errors.h"
 #include "methods/estimator.h"
-#include "methods/option_schema.h"
 #include "methods/operators/vertex_normals.h"
+#include "methods/option_schema.h"
 
 namespace curvbench {
 namespace {
