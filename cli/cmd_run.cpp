@@ -82,6 +82,7 @@ struct RunArgs {
   std::string cache;  ///< case store folder ("" = <output>/.cache)
   bool report_only = false;
   bool no_plots = false;
+  bool no_readings = false;
   bool force = false;
   std::string experiments_dir = "experiments";
   std::string output = "results";
@@ -136,6 +137,10 @@ Command add_run_command(CLI::App& app) {
                 "REPORT.md, plots and CLAIMS.md; fails naming the missing cases if the store is "
                 "incomplete (an experiment with no stored case keeps its existing CSV)");
   sub->add_flag("--no-plots", args->no_plots, "Do not render plots");
+  sub->add_flag("--no-readings", args->no_readings,
+                "Do not run the experiments under the alternative readings of the paper "
+                "(harness/readings.cpp) into <output>/readings/; CLAIMS.md still reads any "
+                "that are there");
   sub->add_flag("--force", args->force,
                 "Recompute every case instead of reusing the finished ones in <output>/.cache");
   sub->add_option("--experiments-dir", args->experiments_dir, "Folder of .exp files")
@@ -212,6 +217,7 @@ Command add_run_command(CLI::App& app) {
     po.force = args->force;
     po.plots = !args->no_plots;
     po.report_only = args->report_only;
+    po.readings = !args->no_readings;
     po.shard = shard;
     po.shard_count = shard_count;
     po.message = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };

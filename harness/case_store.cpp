@@ -73,9 +73,9 @@ std::string external_inputs(const ExperimentMethod& m) {
 // The method's part of case_inputs: its spec, label, vertex set and every estimator option it
 // sets away from the default (so that a new option leaves the keys of stored cases as they were).
 std::string method_inputs(const ExperimentMethod& m) {
-  std::string s = "method=" + escaped(m.spec) + ";label=" + escaped(m.label) +
-                  ";method-vertex-set=" +
-                  std::string(m.has_vertex_set ? to_string(m.vertex_set) : "default");
+  std::string s =
+      "method=" + escaped(m.spec) + ";label=" + escaped(m.label) +
+      ";method-vertex-set=" + std::string(m.has_vertex_set ? to_string(m.vertex_set) : "default");
   for (const OptionInfo& option : estimator_option_schema())
     if (option.role == OptionRole::result && !option_is_default(m.options, option))
       s += ";" + option.name + "=" + option_text(m.options, option);
@@ -129,7 +129,12 @@ std::string case_inputs(const RunCase& c) {
     measures += std::string(measures.empty() ? "" : ",") + to_string(q) + "/" + to_string(norm);
   return "experiment=" + escaped(e.name) + ";family=" + escaped(c.mesh->family) +
          ";level=" + std::to_string(c.level) + ";noise-order=" + std::to_string(e.noise_order) +
-         ";noise-seed=" + std::to_string(e.noise_seed) + ";noisy=" + yes_no(e.noisy) +
+         ";noise-seed=" + std::to_string(e.noise_seed) +
+         (e.noise_model.is_default()
+              ? std::string()
+              : ";noise-alpha=" + std::string(to_string(e.noise_model.distribution)) +
+                    ";noise-scale=" + format_double(e.noise_model.scale)) +
+         ";noisy=" + yes_no(e.noisy) + (e.noisy_quadratic_only ? ";noisy-rings=quadratic" : "") +
          ";vertex-set=" + std::string(to_string(e.vertex_set)) + ";" + method_inputs(*c.method) +
          ";measures=" + measures;
 }

@@ -3,10 +3,12 @@
 #include "harness/claims.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <sstream>
 #include <stdexcept>
 
 #include "harness/claims_kit.h"
+#include "harness/readings.h"
 
 namespace curvbench {
 
@@ -180,10 +182,95 @@ class FormulaScope {
   claims::RateFormula saved_;
 };
 
+// The result of claim `id` in one alternative's results (nullptr if absent).
+const ClaimResult* result_of(const std::vector<ClaimResult>& results, const std::string& id) {
+  for (const auto& r : results)
+    if (r.id == id) return &r;
+  return nullptr;
+}
+
+// The alternatives under which claim r's evidence differs from the adopted readings' (the
+// readings that touch the claim).
+std::vector<std::pair<const ReadingResults*, const ClaimResult*>> touching(
+    const ClaimResult& r, const std::vector<ReadingResults>& alternatives) {
+  std::vector<std::pair<const ReadingResults*, const ClaimResult*>> out;
+  for (const auto& alt : alternatives)
+    if (const ClaimResult* x = result_of(alt.results, r.id); x && x->evidence != r.evidence)
+      out.push_back({&alt, x});
+  return out;
+}
+
+int reproduced_under_some_reading(const std::vector<ClaimResult>& results,
+                                  const std::vector<ReadingResults>& alternatives) {
+  int n = 0;
+  for (const auto& r : results) {
+    bool any = r.verdict == Verdict::reproduced;
+    for (const auto& [alt, x] : touching(r, alternatives))
+      any = any || x->verdict == Verdict::reproduced;
+    n += any;
+  }
+  return n;
+}
+
+// The readings table: each alternative, what it does, and the claims whose verdict it changes.
+std::string readings_markdown(const std::vector<ClaimResult>& results,
+                              const std::vector<ReadingResults>& alternatives) {
+  if (alternatives.empty()) return "";
+  std::ostringstream md;
+  md << "**Readings.** Where the paper leaves a choice open, curvbench adopts one reading and "
+        "also runs the experiments under the alternatives (harness/readings.cpp; the arguments "
+        "are in docs/claims.md, made without reference to the verdicts). Each claim's section "
+        "lists its verdict under every alternative that changes its evidence.\n\n"
+     << "| reading | alternative | what it does | claims touched | verdict changes |\n"
+     << "|---|---|---|---|---|\n";
+  for (const auto& alt : alternatives) {
+    std::vector<std::string> touched, changed;
+    for (const auto& r : results) {
+      const ClaimResult* x = result_of(alt.results, r.id);
+      if (!x || x->evidence == r.evidence) continue;
+      touched.push_back(r.id);
+      if (x->verdict != r.verdict) changed.push_back(r.id + " " + to_string(x->verdict));
+    }
+    md << "| " << alt.reading << " | " << alt.choice << " | " << escape_cell(alt.description)
+       << " | " << (touched.empty() ? "none" : claims::join(touched, ", ")) << " | "
+       << (changed.empty() ? "none" : claims::join(changed, ", ")) << " |\n";
+  }
+  md << "\n";
+  return md.str();
+}
+
+// A claim's verdict under each alternative reading that touches it.
+std::string claim_sensitivity(const ClaimResult& r,
+                              const std::vector<ReadingResults>& alternatives) {
+  const auto t = touching(r, alternatives);
+  if (t.empty()) return "";
+  std::ostringstream md;
+  md << "Sensitivity to the readings (docs/claims.md):\n\n| reading | verdict |\n|---|---|\n"
+     << "| adopted | " << to_string(r.verdict) << " |\n";
+  for (const auto& [alt, x] : t) {
+    md << "| " << alt->reading << "=" << alt->choice << " | " << to_string(x->verdict);
+    if (x->verdict != r.verdict) {
+      // The deciding checks under the alternative.
+      std::vector<std::string> lines;
+      std::istringstream in(x->evidence);
+      for (std::string line; std::getline(in, line);)
+        if (line.rfind(x->verdict == Verdict::reproduced ? "[ok]" : "[FAIL]", 0) == 0)
+          lines.push_back(line);
+      if (lines.size() > 3) lines.resize(3);
+      if (!lines.empty()) md << ": " << escape_cell(claims::join(lines, "; "));
+    }
+    md << " |\n";
+  }
+  md << "\n";
+  return md.str();
+}
+
 }  // namespace
 
-std::vector<ClaimResult> evaluate_claims(const std::string& results_dir) {
-  const claims::Data data(results_dir);
+std::vector<ClaimResult> evaluate_claims(const std::string& results_dir, const std::string& overlay,
+                                         const std::string& well_family) {
+  const claims::Data data(results_dir, overlay);
+  const WellScope well(well_family.empty() ? claims::kWell : well_family);
   std::vector<ClaimResult> out;
   for (const auto& def : registry()) {
     ClaimResult r;
@@ -197,6 +284,15 @@ std::vector<ClaimResult> evaluate_claims(const std::string& results_dir) {
         def.check(data, c);
         r.verdict = c.verdict();
         r.evidence = c.evidence();
+      }
+      if (def.original_check) {
+        const FormulaScope ours(claims::RateFormula::measured_h);
+        claims::Check c;
+        def.original_check(data, c);
+        r.original_band = def.original_band;
+        r.reread_reason = def.reread_reason;
+        r.original_verdict = c.verdict();
+        r.original_evidence = c.evidence();
       }
       const FormulaScope paper(claims::RateFormula::level_halving);
       claims::Check c;
@@ -228,8 +324,22 @@ std::vector<ClaimResult> evaluate_claims(const std::string& results_dir) {
   return out;
 }
 
-std::string claims_markdown(const std::vector<ClaimResult>& results,
-                            const std::string& header_line) {
+std::vector<ReadingResults> evaluate_readings(const std::string& results_dir) {
+  std::vector<ReadingResults> out;
+  for (const Reading& reading : readings())
+    for (size_t i = 1; i < reading.choices.size(); ++i) {
+      const ReadingChoice& choice = reading.choices[i];
+      const std::string folder = reading_folder(results_dir, reading, choice);
+      std::error_code ec;
+      if (!std::filesystem::is_directory(folder, ec) && choice.well_family.empty()) continue;
+      out.push_back({reading.id, choice.name, choice.description,
+                     evaluate_claims(results_dir, folder, choice.well_family)});
+    }
+  return out;
+}
+
+std::string claims_markdown(const std::vector<ClaimResult>& results, const std::string& header_line,
+                            const std::vector<ReadingResults>& alternatives) {
   int rep = 0, notrep = 0, na = 0;
   for (const auto& r : results) {
     rep += r.verdict == Verdict::reproduced;
@@ -250,7 +360,14 @@ std::string claims_markdown(const std::vector<ClaimResult>& results,
         "lists a value per mesh level. "
         "Evidence lines are tagged [ok], [FAIL], [missing] or [info].\n\n"
      << "**Summary:** " << rep << " reproduced, " << notrep << " not reproduced, " << na
-     << " not applicable (" << results.size() << " claims).\n\n"
+     << " not applicable (" << results.size() << " claims)"
+     << (alternatives.empty()
+             ? std::string(".")
+             : " under the adopted readings; " +
+                   std::to_string(reproduced_under_some_reading(results, alternatives)) +
+                   " reproduced under some fair reading (the table below).")
+     << "\n\n"
+     << readings_markdown(results, alternatives)
      << "| claim | verdict | subject |\n|---|---|---|\n";
   for (const auto& r : results) {
     const claims::ClaimEntry* def = find_entry(r.id);
@@ -258,6 +375,9 @@ std::string claims_markdown(const std::vector<ClaimResult>& results,
        << (r.halving_verdict != r.verdict
                ? std::string(" (level-halving rate: ") + to_string(r.halving_verdict) + ")"
                : std::string())
+       << (r.original_band.empty() || r.original_verdict == r.verdict
+               ? std::string()
+               : std::string(" (band fixed in advance: ") + to_string(r.original_verdict) + ")")
        << " | " << escape_cell(def ? def->title : r.statement) << " |\n";
   }
   md << "\n";
@@ -268,6 +388,15 @@ std::string claims_markdown(const std::vector<ClaimResult>& results,
     if (!r.why.empty()) md << "**Why:** " << r.why << "\n\n";
     md << "- Paper: " << r.statement << "\n"
        << "- Band: " << r.band << "\n\n";
+    if (!r.original_band.empty()) {
+      md << "**Band re-read.** The band fixed in advance was: " << r.original_band
+         << ". Verdict under it: *" << to_string(r.original_verdict) << "*. Re-read because "
+         << r.reread_reason << " Its checks:\n\n";
+      std::istringstream lines(r.original_evidence);
+      for (std::string line; std::getline(lines, line);) md << "- " << line << "\n";
+      md << "\n";
+    }
+    md << claim_sensitivity(r, alternatives);
     if (r.halving_verdict != r.verdict) {
       md << "**Rate formula: the verdict differs.** With the paper's level-halving rate "
             "(1/(L-1)) log2(e_1/e_L) instead of ours over the measured mean edge length, this "

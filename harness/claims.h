@@ -74,6 +74,11 @@ struct ClaimResult {
   /// shape: the same check on the jittered and structured tori, or an experiment named by the
   /// registry entry), else "no cause found" with what was tried. Empty otherwise.
   std::string why;
+  /// A re-read band (claims_kit.h ClaimEntry::original_band): the band fixed in advance, the
+  /// reason for the re-reading and the verdict and evidence under the original band.
+  std::string original_band, reread_reason;
+  Verdict original_verdict = Verdict::not_applicable;
+  std::string original_evidence;
 };
 
 /// The band named `name` of claim `id` in the registry (e.g. ("B1", "rate")); throws
@@ -81,12 +86,29 @@ struct ClaimResult {
 Band claim_band(const std::string& id, const std::string& name);
 
 /// Evaluates claims A1-G4 of docs/claims.md from the CSVs in results_dir (see above), in order.
-/// Throws InputError if a CSV it reads is malformed.
-std::vector<ClaimResult> evaluate_claims(const std::string& results_dir);
+/// With `overlay`, an experiment with rows in that folder's CSVs is read from there (a reading's
+/// run, readings.h); with `well_family`, that family stands for the well-shaped torus. Throws
+/// InputError if a CSV it reads is malformed.
+std::vector<ClaimResult> evaluate_claims(const std::string& results_dir,
+                                         const std::string& overlay = "",
+                                         const std::string& well_family = "");
+
+/// Every claim under one alternative reading (readings.h): the reading, the choice and what it
+/// does, and the results in registry order.
+struct ReadingResults {
+  std::string reading, choice, description;
+  std::vector<ClaimResult> results;
+};
+
+/// The claims under each alternative reading whose folder (readings.h reading_folder) holds
+/// CSVs, in the readings table's order.
+std::vector<ReadingResults> evaluate_readings(const std::string& results_dir);
 
 /// Markdown: title, header_line (build info and date), a count per verdict, a summary table,
-/// then one section "## <id>. ..." per claim with the wording, band, verdict and evidence.
-std::string claims_markdown(const std::vector<ClaimResult>& results,
-                            const std::string& header_line);
+/// the readings' sensitivity table (if any alternatives), then one section "## <id>. ..." per
+/// claim with the wording, band, verdict, its verdict under each alternative reading that
+/// changes its evidence, and the evidence.
+std::string claims_markdown(const std::vector<ClaimResult>& results, const std::string& header_line,
+                            const std::vector<ReadingResults>& alternatives = {});
 
 }  // namespace curvbench

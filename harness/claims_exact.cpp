@@ -133,6 +133,24 @@ void claim_a4(const Data& d, Check& c, double tolerance) {
   }
 }
 
+// A4 at the paper's printed precision: half the true mean edge length rounds to the column.
+void claim_a4_rounded(const Data& d, Check& c) {
+  if (!have_table4(d, c)) return;
+  const size_t ch = d.table4->col("mean_edge_length");
+  for (const auto& row4 : paper::kTable4) {
+    const double paper = row4.edge_column;
+    const int row = table4_row(d, c, row4.grid_points);
+    if (row < 0) continue;
+    const double half = 0.5 * d.table4->number(row, ch);
+    const double unit = last_digit_unit(paper, 2);
+    const double rounded = std::round(half / unit) * unit;
+    c.require(std::abs(rounded - paper) < 0.5 * unit,
+              "n = " + std::to_string(row4.grid_points) + ": half the true mean edge length " +
+                  g3(half) + " rounds to " + g3(rounded) + " at 2 significant digits (paper " +
+                  g3(paper) + ")");
+  }
+}
+
 // Errors below this are roundoff (e.g. principal directions on a perfectly symmetric mesh, ~1e-16)
 // and are treated as equal by the A5 comparison.
 constexpr double kRoundoffError = 1e-12;
@@ -257,10 +275,17 @@ std::vector<ClaimEntry> exact_claims() {
            table4_column([](const auto& r) { return r.edge_column; }, false) +
            ") equals half the true mean edge length of such a mesh. This is a finding about the "
            "paper's bookkeeping, not a claim of the paper.",
-       "true mean edge length / paper column = 2.00 +- " + f2(a4_tolerance) + " at every n",
+       "half the true mean edge length, rounded to the paper's 2 significant digits, equals "
+       "the paper column at every n",
        {{"ratio", Band::in(2.0 - a4_tolerance, 2.0 + a4_tolerance, 2)}},
+       claim_a4_rounded,
+       {},
+       nullptr,
+       "true mean edge length / paper column = 2.00 +- " + f2(a4_tolerance) + " at every n",
        [=](const Data& d, Check& c) { claim_a4(d, c, a4_tolerance); },
-       {}});
+       "the column is printed to 2 significant digits: at 0.011 its rounding alone moves the "
+       "ratio by up to +-0.09 (0.0005 / 0.011 relative, times 2), more than the +-0.05 fixed in "
+       "advance, so that band asked for more than the printed numbers carry."});
   out.push_back({"A5",
                  "LOP = LHF",
                  "With identical neighbourhoods, weights and safeguard, LOP-d and LHF-d give the "

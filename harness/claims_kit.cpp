@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <set>
 #include <sstream>
 #include <tuple>
 
@@ -222,9 +223,13 @@ std::optional<CsvTable> read_table(const std::string& path) {
 }
 }  // namespace
 
-Data::Data(const std::string& dir) {
+namespace {
+
+// The error rows of every errors CSV in `dir` (none if it is not a folder).
+std::vector<ErrorRow> error_rows_in(const std::string& dir) {
+  std::vector<ErrorRow> out;
   std::error_code ec;
-  if (!fs::is_directory(dir, ec)) return;
+  if (dir.empty() || !fs::is_directory(dir, ec)) return out;
   std::vector<fs::path> csvs;
   for (const auto& entry : fs::directory_iterator(dir))
     if (entry.is_regular_file() && entry.path().extension() == ".csv") csvs.push_back(entry.path());
@@ -238,8 +243,22 @@ Data::Data(const std::string& dir) {
     // The errors header starts like this; parse_error_csv validates the whole header.
     if (head.rfind("experiment,surface,family,level,", 0) != 0) continue;
     auto rows = parse_error_csv(text, p.string());
-    rows_.insert(rows_.end(), rows.begin(), rows.end());
+    out.insert(out.end(), rows.begin(), rows.end());
   }
+  return out;
+}
+
+}  // namespace
+
+Data::Data(const std::string& dir, const std::string& overlay) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return;
+  rows_ = error_rows_in(dir);
+  const std::vector<ErrorRow> replaced = error_rows_in(overlay);
+  std::set<std::string> experiments;
+  for (const ErrorRow& r : replaced) experiments.insert(r.experiment);
+  std::erase_if(rows_, [&](const ErrorRow& r) { return experiments.count(r.experiment) > 0; });
+  rows_.insert(rows_.end(), replaced.begin(), replaced.end());
   build_series();
   table2 = read_table(dir + "/table2.csv");
   table4 = read_table(dir + "/table4.csv");

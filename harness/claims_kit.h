@@ -118,7 +118,9 @@ using TimingSeries = std::map<int, TimingEntry>;  // level -> entry
 
 class Data {
  public:
-  explicit Data(const std::string& dir);
+  /// The CSVs of `dir`; with `overlay`, an experiment that has rows in the overlay folder's CSVs
+  /// takes those instead of dir's (a reading's run, readings.h).
+  explicit Data(const std::string& dir, const std::string& overlay = "");
 
   const std::vector<ErrorRow>& rows() const { return rows_; }
   /// The series matching q, or nullptr after recording why in chk.
@@ -205,6 +207,12 @@ struct ClaimEntry {
   /// A measured cause of a miss from a diagnostic experiment in the CSVs (e.g. another solver),
   /// for the "Why" line when the claim is not reproduced; returns "" when there is none.
   std::function<std::string(const Data&)> why = nullptr;
+  /// A band re-read (docs/claims.md, "Bands re-read"): the band fixed in advance, its check and
+  /// why it misread the sentence (the paper's printed precision, a quantity it did not
+  /// measure). CLAIMS.md gives the verdict under both; `band` and `check` are the re-read ones.
+  std::string original_band = {};
+  std::function<void(const Data&, Check&)> original_check = nullptr;
+  std::string reread_reason = {};
 };
 
 // One function per paper section, each returning its entries in order.

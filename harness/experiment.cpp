@@ -86,6 +86,12 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
       } else if (key == "noisy") {
         need(2);
         e.noisy = to_bool(w[1], where);
+        for (size_t i = 2; i < w.size(); ++i) {
+          std::string k, v;
+          if (!split_option(w[i], k, v) || k != "rings" || (v != "all" && v != "quadratic"))
+            throw InputError(where + ": expected rings=all or rings=quadratic after noisy yes");
+          e.noisy_quadratic_only = v == "quadratic";
+        }
       } else if (key == "vertex-set") {
         need(2);
         e.vertex_set = parse_vertex_set(w[1]);
@@ -98,9 +104,20 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
             e.noise_order = static_cast<int>(parse_integer(v, where));
           else if (k == "seed")
             e.noise_seed = static_cast<std::uint64_t>(parse_integer(v, where));
+          else if (k == "alpha")
+            try {
+              e.noise_model.distribution = parse_noise_distribution(v);
+            } catch (const UsageError& err) {
+              throw InputError(where + ": " + err.what());
+            }
+          else if (k == "scale")
+            e.noise_model.scale = parse_double(v, where);
           else
-            throw InputError(where + ": unknown noise option '" + k + "'");
+            throw InputError(where + ": unknown noise option '" + k +
+                             "' (order, seed, alpha, scale)");
         }
+        if (!(e.noise_model.scale >= 0.0) || !std::isfinite(e.noise_model.scale))
+          throw InputError(where + ": noise scale must be finite and >= 0");
         if (e.noise_order != 2 && e.noise_order != 3)
           throw InputError(where + ": noise order must be 2 or 3");
       } else if (key == "mesh") {

@@ -6,9 +6,12 @@
 //   title       "Noise-free torus, degree 2"    one line
 //   section     5.1                             paper section
 //   mesh        torus-structured levels=1,2,3,4 one line per mesh family (meshgen families)
-//   noise       order=3 seed=11                 optional controlled noise (docs/algorithms.md
-//   §10.3) noisy       yes                             input is noisy: default rings +0.5 (paper
-//   §5.3) vertex-set  all                             all | interior | boundary-ring (default all)
+//   noise       order=3 seed=11 [alpha=gaussian|uniform] [scale=0.1]
+//               optional controlled noise alpha h^k along the normal (meshgen/noise.h; paper
+//               §5.3, docs/algorithms.md §10.3): alpha = scale N(0,1) or scale U[0,1)
+//   noisy       yes [rings=all|quadratic]       input is noisy: default rings +0.5 (paper §5.3)
+//               for the fits of every degree (all) or of degree 2 only (quadratic)
+//   vertex-set  all                             all | interior | boundary-ring (default all)
 //   method      lhf-2 [rings=2.5] [vertex-set=interior]  one line per method and degree
 //               any estimator option of role "result" as name=value (rings, centre=no,
 //               qr-tol=1e-8, vertex-normals=max, ball-factor=2, ...: the table of
@@ -30,6 +33,7 @@
 #include <vector>
 
 #include "harness/metrics.h"
+#include "meshgen/noise.h"
 #include "methods/estimator.h"
 
 namespace curvbench {
@@ -74,7 +78,14 @@ struct Experiment {
   std::vector<ExperimentPanel> panels;
   int noise_order = 0;  ///< 0 = no controlled noise
   std::uint64_t noise_seed = 1;
+  NoiseModel noise_model = {};  ///< the distribution of alpha
   bool noisy = false;
+  bool noisy_quadratic_only = false;  ///< `noisy yes rings=quadratic`: +0.5 ring for degree 2 only
+
+  /// Whether a fit of this degree gets the noisy-data half ring.
+  bool noisy_for_degree(int degree) const {
+    return noisy && (!noisy_quadratic_only || degree <= 2);
+  }
   VertexSet vertex_set = VertexSet::all;
 };
 

@@ -1,6 +1,7 @@
 // The whole `curvbench run` pipeline as a library function: runs experiments through the case
 // store (runner.h, case_store.h), writes each experiment's error CSV, table2.csv, table4.csv,
-// rates.csv, REPORT.md with the plots, and CLAIMS.md into the output folder.
+// rates.csv, REPORT.md with the plots, and CLAIMS.md into the output folder; and the experiments
+// each alternative reading changes (readings.h) into <output>/readings/.
 //
 // Three modes:
 //   full run       every case (reusing the stored ones), then every output
@@ -31,8 +32,11 @@ struct PipelineOptions {
   bool force = false;                   ///< recompute every case
   bool plots = true;                    ///< render the plots (gnuplot)
   bool report_only = false;             ///< build the outputs from the store, compute nothing
-  int shard = 1;                        ///< shard K (1-based) ...
-  int shard_count = 1;                  ///< ... of N; N > 1 runs only that shard's cases
+  /// Also run, for each alternative reading (readings.h), the experiments it changes into
+  /// <output>/readings/<reading>=<choice>/ (full runs only; CLAIMS.md reads whatever is there).
+  bool readings = true;
+  int shard = 1;        ///< shard K (1-based) ...
+  int shard_count = 1;  ///< ... of N; N > 1 runs only that shard's cases
   /// One line of progress ("[run] ..."), without newline.
   std::function<void(const std::string&)> message;
   /// Called after each case (runner.h).

@@ -80,8 +80,8 @@ std::vector<std::pair<Quantity, Norm>> panel_measures(const Experiment& e) {
 }
 
 const ScoredMesh& MeshCache::get(const std::string& family, int level, int noise_order,
-                                 std::uint64_t seed) {
-  const auto key = std::make_tuple(family, level, noise_order, seed);
+                                 std::uint64_t seed, const NoiseModel& model) {
+  const auto key = std::make_tuple(family, level, noise_order, seed, model);
   auto it = meshes_.find(key);
   if (it != meshes_.end()) return *it->second;
   MeshSpec spec;
@@ -89,6 +89,7 @@ const ScoredMesh& MeshCache::get(const std::string& family, int level, int noise
   spec.level = level;
   spec.noise_order = noise_order;
   spec.seed = seed;
+  spec.noise_model = model;
   auto scored = std::make_unique<ScoredMesh>();
   scored->generated = generate_mesh(spec);
   const auto& g = scored->generated;
@@ -110,7 +111,8 @@ std::vector<RunCase> expand_cases(const std::vector<Experiment>& experiments) {
 
 std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads) {
   const Experiment& e = *c.experiment;
-  const ScoredMesh& sm = cache.get(c.mesh->family, c.level, e.noise_order, e.noise_seed);
+  const ScoredMesh& sm =
+      cache.get(c.mesh->family, c.level, e.noise_order, e.noise_seed, e.noise_model);
   const Mesh& mesh = sm.generated.mesh;
 
   using clock = std::chrono::steady_clock;
@@ -134,8 +136,11 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads) 
     for (Quantity q : ext.quantities) mark_computed(computed, q);
   } else {
     EstimatorOptions opt = c.method->options;
-    opt.noisy = opt.noisy || e.noisy;
     opt.threads = threads;
+    // The noisy-data half ring for the degrees the experiment gives it (the degree is the
+    // estimator's: "lhf-3" names it).
+    const int named_degree = make_estimator(c.method->spec, opt)->options().degree;
+    opt.noisy = opt.noisy || e.noisy_for_degree(named_degree);
     const auto estimator = make_estimator(c.method->spec, opt);
     // The case's time includes gathering the neighbourhoods when this is the first case of the
     // mesh with its neighbourhood spec (later ones read the cache's table).

@@ -14,8 +14,8 @@
 
 #include "harness/experiment.h"
 #include "harness/results_table.h"
-#include "meshgen/generated_mesh.h"
 #include "mesh/neighbourhood_table.h"
+#include "meshgen/generated_mesh.h"
 
 namespace curvbench {
 
@@ -31,10 +31,13 @@ struct ScoredMesh {
 /// Generated meshes keyed by (family, level, noise order, seed); generated on first use.
 class MeshCache {
  public:
-  const ScoredMesh& get(const std::string& family, int level, int noise_order, std::uint64_t seed);
+  const ScoredMesh& get(const std::string& family, int level, int noise_order, std::uint64_t seed,
+                        const NoiseModel& model = {});
 
  private:
-  std::map<std::tuple<std::string, int, int, std::uint64_t>, std::unique_ptr<ScoredMesh>> meshes_;
+  std::map<std::tuple<std::string, int, int, std::uint64_t, NoiseModel>,
+           std::unique_ptr<ScoredMesh>>
+      meshes_;
 };
 
 /// One unit of work: one method on one mesh level.

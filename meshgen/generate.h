@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "meshgen/generated_mesh.h"
+#include "meshgen/noise.h"
 
 namespace curvbench {
 
@@ -17,7 +18,8 @@ struct MeshSpec {
   int level = 1;
   int noise_order = 0;  ///< 0: no noise; k >= 1: alpha h^k normal noise (§10.3)
   std::uint64_t seed = 1;
-  bool jitter = false;  ///< torus-structured only
+  bool jitter = false;          ///< torus-structured only
+  NoiseModel noise_model = {};  ///< the distribution of alpha (noise.h)
 };
 
 /// Builds the mesh. Throws UsageError (naming the valid values) for an unknown family, a level

@@ -132,7 +132,36 @@ TEST(Noise, KeepsExactPointsAndConnectivityAndIsDeterministic) {
   for (int i = 0; i < clean.mesh.num_vertices(); ++i)
     ASSERT_NE(a.mesh.position(i), clean.mesh.position(i)) << "vertex " << i;
   // alpha_scale 0 is the identity.
-  EXPECT_EQ(add_normal_noise(clean, 3, 3, 0.0).mesh.vertices(), clean.mesh.vertices());
+  EXPECT_EQ(add_normal_noise(clean, 3, 3, {NoiseDistribution::gaussian, 0.0}).mesh.vertices(),
+            clean.mesh.vertices());
+}
+
+// The readings of "alpha between 0 and 0.1 with Gaussian distribution" (docs/claims.md): uniform
+// gives a one-signed alpha in [0, scale) with mean scale/2 and RMS scale/sqrt(3); a Gaussian of
+// scale 0.1/3 has RMS 0.1/3. Each within 5 standard errors, on the same vertices and seed.
+TEST(Noise, TheAlphaReadingsHaveTheirDistributions) {
+  const GeneratedMesh clean = bump_48(3);
+  const int k = 3;
+  const std::vector<double> u =
+      alphas(clean, add_normal_noise(clean, k, 11, {NoiseDistribution::uniform, 0.1}), k);
+  const double n = static_cast<double>(u.size());
+  double mean = 0.0;
+  for (double a : u) {
+    EXPECT_GE(a, -1e-12);
+    EXPECT_LT(a, 0.1 + 1e-12);
+    mean += a / n;
+  }
+  // U[0, 0.1): mean 0.05, standard deviation 0.1/sqrt(12).
+  EXPECT_NEAR(mean, 0.05, 5 * 0.1 / std::sqrt(12.0 * n));
+  EXPECT_NEAR(rms(u) / (0.1 / std::sqrt(3.0)), 1.0, 5 / std::sqrt(n));
+  const std::vector<double> g =
+      alphas(clean, add_normal_noise(clean, k, 11, {NoiseDistribution::gaussian, 0.1 / 3}), k);
+  EXPECT_NEAR(rms(g) / (0.1 / 3), 1.0, 5 / std::sqrt(2.0 * n));
+  // The same seed draws the same xi: the Gaussian reading of scale 0.1/3 is the default / 3.
+  const std::vector<double> d = alphas(clean, add_normal_noise(clean, k, 11), k);
+  for (size_t i = 0; i < d.size(); ++i) EXPECT_NEAR(g[i], d[i] / 3, 1e-9) << i;
+  EXPECT_EQ(parse_noise_distribution("uniform"), NoiseDistribution::uniform);
+  EXPECT_THROW(parse_noise_distribution("laplace"), UsageError);
 }
 
 TEST(Noise, ClosedSurfaceAlongOutwardNormal) {
@@ -146,8 +175,9 @@ TEST(Noise, ClosedSurfaceAlongOutwardNormal) {
 TEST(Noise, BadArgumentsThrow) {
   const GeneratedMesh clean = bump_48(1);
   EXPECT_THROW(add_normal_noise(clean, 0, 1), UsageError);
-  EXPECT_THROW(add_normal_noise(clean, 2, 1, -0.1), UsageError);
-  EXPECT_THROW(add_normal_noise(clean, 2, 1, std::nan("")), UsageError);
+  EXPECT_THROW(add_normal_noise(clean, 2, 1, {NoiseDistribution::gaussian, -0.1}), UsageError);
+  EXPECT_THROW(add_normal_noise(clean, 2, 1, {NoiseDistribution::gaussian, std::nan("")}),
+               UsageError);
   GeneratedMesh no_surface = clean;
   no_surface.surface = nullptr;
   EXPECT_THROW(add_normal_noise(no_surface, 2, 1), UsageError);

@@ -1,0 +1,110 @@
+// The readings of the paper's unstated choices (harness/readings.h): each alternative changes
+// the experiments as documented (levels, noise model, noisy-data rings) and only those, the
+// experiment files accept the options they set, and the runner honours them.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/errors.h"
+#include "harness/experiment.h"
+#include "harness/readings.h"
+#include "harness/runner.h"
+
+namespace curvbench {
+namespace {
+
+const ReadingChoice& choice(const std::string& reading, const std::string& name) {
+  for (const Reading& r : readings())
+    if (r.id == reading)
+      for (const ReadingChoice& c : r.choices)
+        if (c.name == name) return c;
+  throw std::out_of_range(reading + "=" + name);
+}
+
+Experiment parse(const std::string& body) {
+  return parse_experiment_text("name t\ntitle t\nsection 5\n" + body + "panel p \"p\" normal L2\n",
+                               "t.exp");
+}
+
+TEST(Readings, EveryReadingHasTheAdoptedChoiceFirstAndItChangesNothing) {
+  ASSERT_FALSE(readings().empty());
+  const Experiment e = parse(
+      "noise order=3 seed=1\nnoisy yes\nmesh torus-iso levels=2,3,4,5\n"
+      "method lhf-4\n");
+  for (const Reading& r : readings()) {
+    ASSERT_GE(r.choices.size(), 2u) << r.id;
+    EXPECT_TRUE(apply_reading({e}, r.choices.front()).empty()) << r.id;
+    for (size_t i = 1; i < r.choices.size(); ++i)
+      EXPECT_EQ(reading_folder("results", r, r.choices[i]),
+                "results/readings/" + r.id + "=" + r.choices[i].name);
+  }
+}
+
+TEST(Readings, IsoLevelsShiftTheIsosurfaceToriOnly) {
+  const Experiment e = parse(
+      "mesh torus-iso levels=2,3,4,5\nmesh torus-iso-projected "
+      "levels=2,3,4,5\nmesh torus-unstructured levels=1,2,3,4\n"
+      "method lhf-2\n");
+  const auto changed = apply_reading({e}, choice("iso-levels", "16-128"));
+  ASSERT_EQ(changed.size(), 1u);
+  EXPECT_EQ(changed[0].meshes[0].levels, (std::vector<int>{1, 2, 3, 4}));
+  EXPECT_EQ(changed[0].meshes[1].levels, (std::vector<int>{1, 2, 3, 4}));
+  EXPECT_EQ(changed[0].meshes[2].levels, (std::vector<int>{1, 2, 3, 4}));  // untouched
+  EXPECT_EQ(changed[0].name, "t");  // same name: its rows replace the adopted ones in CLAIMS
+  EXPECT_TRUE(apply_reading({parse("mesh bump-48 levels=1,2\nmethod lhf-2\n")},
+                            choice("iso-levels", "16-128"))
+                  .empty());
+}
+
+TEST(Readings, NoisyRingsQuadraticOnlyGivesDegreesThreeAndFourTheirOwnRings) {
+  const Experiment e = parse("noisy yes\nmesh torus-iso levels=2\nmethod lhf-2\nmethod lhf-4\n");
+  const auto changed = apply_reading({e}, choice("noisy-rings", "quadratic"));
+  ASSERT_EQ(changed.size(), 1u);
+  EXPECT_TRUE(changed[0].noisy_quadratic_only);
+  EXPECT_TRUE(changed[0].noisy_for_degree(2));
+  EXPECT_FALSE(changed[0].noisy_for_degree(4));
+  EXPECT_TRUE(e.noisy_for_degree(4));
+  // An experiment of degree-2 fits only is left alone (nothing would change).
+  EXPECT_TRUE(apply_reading({parse("noisy yes\nmesh torus-iso levels=2\nmethod lhf-2\n")},
+                            choice("noisy-rings", "quadratic"))
+                  .empty());
+  // The runner's rings: LHF-4 at 2.5 + 0.5 under the adopted reading, 2.5 under this one.
+  MeshCache cache;
+  const auto ring_of = [&](const Experiment& x) {
+    const RunCase c{&x, &x.meshes[0], 2, &x.methods[1]};
+    return run_case(c, cache, 1).front().rings;
+  };
+  EXPECT_EQ(ring_of(e), "3");
+  EXPECT_EQ(ring_of(changed[0]), "2.5");
+}
+
+TEST(Readings, NoiseAlphaSetsTheModelOfNoisyExperimentsOnly) {
+  const Experiment e = parse("noise order=2 seed=5\nmesh bump-48 levels=1\nmethod lhf-2\n");
+  const auto u = apply_reading({e}, choice("noise-alpha", "uniform-0.1"));
+  ASSERT_EQ(u.size(), 1u);
+  EXPECT_EQ(u[0].noise_model.distribution, NoiseDistribution::uniform);
+  EXPECT_EQ(u[0].noise_model.scale, 0.1);
+  const auto g = apply_reading({e}, choice("noise-alpha", "gaussian-0.033"));
+  ASSERT_EQ(g.size(), 1u);
+  EXPECT_EQ(g[0].noise_model.distribution, NoiseDistribution::gaussian);
+  EXPECT_DOUBLE_EQ(g[0].noise_model.scale, 0.1 / 3);
+  EXPECT_TRUE(apply_reading({parse("mesh bump-48 levels=1\nmethod lhf-2\n")},
+                            choice("noise-alpha", "uniform-0.1"))
+                  .empty());
+}
+
+TEST(Readings, ExperimentFilesTakeTheOptionsAndRefuseBadValues) {
+  const Experiment e = parse(
+      "noise order=3 seed=2 alpha=uniform scale=0.05\nnoisy yes rings=quadratic\n"
+      "mesh bump-48 levels=1\nmethod lhf-2\n");
+  EXPECT_EQ(e.noise_model.distribution, NoiseDistribution::uniform);
+  EXPECT_EQ(e.noise_model.scale, 0.05);
+  EXPECT_TRUE(e.noisy_quadratic_only);
+  EXPECT_THROW(parse("noise order=3 alpha=laplace\nmesh bump-48 levels=1\nmethod lhf-2\n"),
+               InputError);
+  EXPECT_THROW(parse("noise order=3 scale=-1\nmesh bump-48 levels=1\nmethod lhf-2\n"), InputError);
+  EXPECT_THROW(parse("noisy yes rings=cubic\nmesh bump-48 levels=1\nmethod lhf-2\n"), InputError);
+}
+
+}  // namespace
+}  // namespace curvbench
