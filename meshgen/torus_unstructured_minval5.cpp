@@ -162,7 +162,7 @@ class FlipMesh {
 // >= kMinValence, d stays <= kMaxValence and can_flip agrees; edges with an end at `keep` are
 // left alone. Best = largest smallest angle of the two new faces. quad[0] < 0 if none.
 struct LinkFlip {
-  std::array<int, 4> quad{-1, -1, -1, -1};  // a, b, c (= v), d
+  std::array<int, 4> quad{-1, -1, -1, -1};  // a, b, c (the raised vertex), d
   double min_angle = -1.0;
 };
 LinkFlip best_link_flip(const FlipMesh& m, int v, int keep) {
