@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 namespace curvbench {
@@ -135,6 +136,30 @@ std::vector<unsigned char> nonmanifold_vertex_flags(const Mesh& mesh) {
 int count_nonmanifold_vertices(const Mesh& mesh) {
   const std::vector<unsigned char> flags = nonmanifold_vertex_flags(mesh);
   return static_cast<int>(std::count(flags.begin(), flags.end(), 1));
+}
+
+std::vector<int> valence_histogram(const Mesh& mesh) {
+  // Each undirected edge once, as (smaller, larger) vertex: its endpoints each gain a neighbour.
+  std::vector<std::pair<int, int>> edges;
+  edges.reserve(static_cast<size_t>(3 * mesh.num_faces()));
+  for (int f = 0; f < mesh.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = mesh.face_vertex(f, k), b = mesh.face_vertex(f, (k + 1) % 3);
+      edges.emplace_back(std::min(a, b), std::max(a, b));
+    }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  std::vector<int> valence(static_cast<size_t>(mesh.num_vertices()), 0);
+  for (const auto& [a, b] : edges) {
+    ++valence[static_cast<size_t>(a)];
+    ++valence[static_cast<size_t>(b)];
+  }
+  std::vector<int> histogram;
+  for (const int v : valence) {
+    if (static_cast<size_t>(v) >= histogram.size()) histogram.resize(static_cast<size_t>(v) + 1, 0);
+    ++histogram[static_cast<size_t>(v)];
+  }
+  return histogram;
 }
 
 int count_components(const Mesh& mesh) {

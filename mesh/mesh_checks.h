@@ -49,6 +49,12 @@ int count_components(const Mesh& mesh);
 /// boundary loops on a manifold mesh; boundary loops touching at a vertex count once.
 int count_boundary_loops(const Mesh& mesh);
 
+/// Valence histogram: entry k is the number of vertices with exactly k distinct edge neighbours
+/// (the valence of meshgen's mesh_quality; isolated vertices count at 0, boundary vertices too).
+/// The vector ends at the largest valence (size max valence + 1; empty for a mesh without
+/// vertices). O(m log m).
+std::vector<int> valence_histogram(const Mesh& mesh);
+
 /// All counts at once, with the ones Mesh already knows.
 struct MeshChecks {
   int zero_area_faces = 0;

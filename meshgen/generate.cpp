@@ -14,6 +14,7 @@
 #include "meshgen/torus_isosurface.h"
 #include "meshgen/torus_structured.h"
 #include "meshgen/torus_unstructured.h"
+#include "meshgen/torus_unstructured_minval5.h"
 
 // clang-format off
 // X(name, max_level, generator, caption, paper_role, noise_label): generator is a function
@@ -39,7 +40,12 @@
     "the irregular mesh of the Gaussian bump, section 5.2", "none")                               \
   X("torus-unstructured", 4, generate_torus_unstructured,                                         \
     "well-shaped torus (Delaunay-refined; the stand-in for the paper's GAMBIT meshes)",           \
-    "the well-shaped torus of sections 5.1, 5.3 and Table 5", "none")
+    "the well-shaped torus of sections 5.1, 5.3 and Table 5", "none")                             \
+  X("torus-unstructured-minval5", 4, generate_torus_unstructured_minval5,                         \
+    "well-shaped torus without valence 3 or 4 (torus-unstructured after edge flips and "          \
+    "relaxation)",                                                                                \
+    "the well-shaped torus of sections 5.1 and 5.3, read as a mesh without vertices of "          \
+    "valence 3 or 4 (an alternative to torus-unstructured)", "none")
 // clang-format on
 
 namespace curvbench {
@@ -51,6 +57,10 @@ CURVBENCH_MESH_FAMILIES(CURVBENCH_DECLARE_GENERATOR)
 
 GeneratedMesh generate_torus_unstructured(const MeshSpec& spec) {
   return torus_unstructured(spec.level, spec.seed);
+}
+
+GeneratedMesh generate_torus_unstructured_minval5(const MeshSpec& spec) {
+  return torus_unstructured_minval5(spec.level, spec.seed);
 }
 
 GeneratedMesh generate_torus_structured(const MeshSpec& spec) {

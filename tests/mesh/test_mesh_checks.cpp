@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "mesh/mesh.h"
@@ -135,6 +137,28 @@ TEST(MeshChecks, AnnulusHasTwoBoundaryLoopsAndFlippedFacesAreCounted) {
   c = check_mesh(make(p, f));
   EXPECT_EQ(c.inconsistent_edges, 2);
   EXPECT_EQ(c.boundary_loops, 2);
+}
+
+// valence_histogram: entry k counts the vertices with k distinct edge neighbours.
+TEST(MeshChecks, ValenceHistogram) {
+  std::vector<Vec3> p;
+  std::vector<std::array<int, 3>> f;
+  add_octahedron(p, f, Vec3::Zero());
+  EXPECT_EQ(valence_histogram(make(p, f)), (std::vector<int>{0, 0, 0, 0, 6}));
+  // An isolated vertex counts at valence 0.
+  p.push_back(Vec3(5, 5, 5));
+  EXPECT_EQ(valence_histogram(make(p, f)), (std::vector<int>{1, 0, 0, 0, 6}));
+  // An open hexagonal fan: the centre has six neighbours, each rim vertex three (the centre and
+  // its two rim neighbours), boundary or not.
+  std::vector<Vec3> q = {Vec3(0, 0, 0)};
+  std::vector<std::array<int, 3>> g;
+  for (int i = 0; i < 6; ++i) {
+    const double a = i * std::numbers::pi / 3.0;
+    q.push_back(Vec3(std::cos(a), std::sin(a), 0));
+    g.push_back({0, 1 + i, 1 + (i + 1) % 6});
+  }
+  EXPECT_EQ(valence_histogram(make(q, g)), (std::vector<int>{0, 0, 0, 6, 0, 0, 1}));
+  EXPECT_TRUE(valence_histogram(Mesh()).empty());
 }
 
 }  // namespace
