@@ -331,7 +331,7 @@ std::vector<ReadingResults> evaluate_readings(const std::string& results_dir) {
       const ReadingChoice& choice = reading.choices[i];
       const std::string folder = reading_folder(results_dir, reading, choice);
       std::error_code ec;
-      if (!std::filesystem::is_directory(folder, ec) && choice.well_family.empty()) continue;
+      if (!std::filesystem::is_directory(folder, ec)) continue;
       out.push_back({reading.id, choice.name, choice.description,
                      evaluate_claims(results_dir, folder, choice.well_family)});
     }

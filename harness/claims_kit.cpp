@@ -255,9 +255,9 @@ Data::Data(const std::string& dir, const std::string& overlay) {
   if (!fs::is_directory(dir, ec)) return;
   rows_ = error_rows_in(dir);
   const std::vector<ErrorRow> replaced = error_rows_in(overlay);
-  std::set<std::string> experiments;
-  for (const ErrorRow& r : replaced) experiments.insert(r.experiment);
-  std::erase_if(rows_, [&](const ErrorRow& r) { return experiments.count(r.experiment) > 0; });
+  std::set<std::pair<std::string, std::string>> runs;  // (experiment, family)
+  for (const ErrorRow& r : replaced) runs.insert({r.experiment, r.family});
+  std::erase_if(rows_, [&](const ErrorRow& r) { return runs.count({r.experiment, r.family}) > 0; });
   rows_.insert(rows_.end(), replaced.begin(), replaced.end());
   build_series();
   table2 = read_table(dir + "/table2.csv");

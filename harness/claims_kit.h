@@ -118,8 +118,8 @@ using TimingSeries = std::map<int, TimingEntry>;  // level -> entry
 
 class Data {
  public:
-  /// The CSVs of `dir`; with `overlay`, an experiment that has rows in the overlay folder's CSVs
-  /// takes those instead of dir's (a reading's run, readings.h).
+  /// The CSVs of `dir`; with `overlay`, an (experiment, mesh family) that has rows in the overlay
+  /// folder's CSVs takes those instead of dir's (a reading's run, readings.h).
   explicit Data(const std::string& dir, const std::string& overlay = "");
 
   const std::vector<ErrorRow>& rows() const { return rows_; }

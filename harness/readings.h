@@ -35,7 +35,9 @@ struct Reading {
 /// Every reading, in docs/claims.md's order.
 const std::vector<Reading>& readings();
 
-/// The experiments that `choice` changes, changed (those it leaves alone are not returned).
+/// The experiments that `choice` changes, changed (those it leaves alone are not returned); a
+/// changed experiment keeps only the mesh lines the choice changes when it changes some lines
+/// only (its other families' rows are the adopted run's).
 std::vector<Experiment> apply_reading(const std::vector<Experiment>& experiments,
                                       const ReadingChoice& choice);
 

@@ -1,16 +1,21 @@
-// The well-shaped torus meshes (torus-unstructured, levels 1-4; docs/mesh_families.md) next to
-// the paper's vertex counts (Table 5): results/torus_unstructured.csv and its REPORT.md section.
+// The well-shaped torus meshes (torus-unstructured and torus-unstructured-minval5, levels 1-4;
+// docs/mesh_families.md) next to the paper's vertex counts (Table 5):
+// results/torus_unstructured.csv and its REPORT.md section.
 //
-// CSV columns: level,vertices,paper_vertices,faces,mean_edge_length,min_angle_deg,max_angle_deg,
-//              valence_histogram   (e.g. "4:12 5:301 6:802 7:210 8:13", valence:count)
+// CSV columns: family,level,vertices,paper_vertices,faces,mean_edge_length,min_angle_deg,
+//              max_angle_deg,valence_histogram   (e.g. "4:12 5:301 6:802", valence:count)
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace curvbench {
 
-/// Generates levels 1-4 (cached in the process for the experiments that follow) and writes the
-/// CSV atomically.
+/// The families of the table: the adopted well-shaped torus and its reading without valence 4.
+inline const std::vector<std::string> kWellShapedTorusFamilies = {"torus-unstructured",
+                                                                  "torus-unstructured-minval5"};
+
+/// Generates levels 1-4 of each family and writes the CSV atomically.
 void write_well_shaped_torus_csv(const std::string& path);
 
 /// The REPORT.md section from that CSV; "" if the file does not exist.

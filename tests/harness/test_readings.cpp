@@ -47,13 +47,27 @@ TEST(Readings, IsoLevelsShiftTheIsosurfaceToriOnly) {
       "method lhf-2\n");
   const auto changed = apply_reading({e}, choice("iso-levels", "16-128"));
   ASSERT_EQ(changed.size(), 1u);
+  // Only the changed mesh lines are rerun (torus-unstructured's rows stay the adopted run's).
+  ASSERT_EQ(changed[0].meshes.size(), 2u);
   EXPECT_EQ(changed[0].meshes[0].levels, (std::vector<int>{1, 2, 3, 4}));
   EXPECT_EQ(changed[0].meshes[1].levels, (std::vector<int>{1, 2, 3, 4}));
-  EXPECT_EQ(changed[0].meshes[2].levels, (std::vector<int>{1, 2, 3, 4}));  // untouched
   EXPECT_EQ(changed[0].name, "t");  // same name: its rows replace the adopted ones in CLAIMS
   EXPECT_TRUE(apply_reading({parse("mesh bump-48 levels=1,2\nmethod lhf-2\n")},
                             choice("iso-levels", "16-128"))
                   .empty());
+}
+
+TEST(Readings, WellShapedTorusSwapsTheFamilyAndNamesItForTheClaims) {
+  const Experiment e = parse(
+      "mesh torus-unstructured levels=1,2\nmesh torus-iso-projected "
+      "levels=2,3\nmethod xu-2\n");
+  const ReadingChoice& c = choice("well-shaped-torus", "min-valence-5");
+  const auto changed = apply_reading({e}, c);
+  ASSERT_EQ(changed.size(), 1u);
+  ASSERT_EQ(changed[0].meshes.size(), 1u);
+  EXPECT_EQ(changed[0].meshes[0].family, "torus-unstructured-minval5");
+  EXPECT_EQ(changed[0].meshes[0].levels, (std::vector<int>{1, 2}));
+  EXPECT_EQ(c.well_family, "torus-unstructured-minval5");
 }
 
 TEST(Readings, NoisyRingsQuadraticOnlyGivesDegreesThreeAndFourTheirOwnRings) {
