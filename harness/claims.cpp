@@ -365,7 +365,7 @@ std::string claims_markdown(const std::vector<ClaimResult>& results, const std::
              ? std::string(".")
              : " under the adopted readings; " +
                    std::to_string(reproduced_under_some_reading(results, alternatives)) +
-                   " reproduced under some fair reading (the table below).")
+                   " reproduced under some fair reading.")
      << "\n\n"
      << readings_markdown(results, alternatives)
      << "| claim | verdict | subject |\n|---|---|---|\n";
