@@ -239,6 +239,30 @@ std::string readings_markdown(const std::vector<ClaimResult>& results,
   return md.str();
 }
 
+// The Why line of a claim not reproduced, with the readings: a reading under which it is
+// reproduced is a measured cause (the paper's choice, argued in docs/claims.md); readings that
+// touch it without reproducing it join the list of what was tried.
+std::string why_with_readings(const ClaimResult& r,
+                              const std::vector<ReadingResults>& alternatives) {
+  if (r.verdict != Verdict::not_reproduced) return r.why;
+  std::vector<std::string> reproducing, tried;
+  for (const auto& [alt, x] : touching(r, alternatives))
+    (x->verdict == Verdict::reproduced ? reproducing : tried)
+        .push_back(alt->reading + "=" + alt->choice);
+  std::string why = r.why;
+  const std::string none = "no cause found; tried ";
+  if (!reproducing.empty()) {
+    const std::string cause = "the reading of the paper: reproduced under " +
+                              claims::join(reproducing, ", ") + " (docs/claims.md)";
+    why = why.rfind(none, 0) == 0 ? cause + "; also tried " + why.substr(none.size())
+                                  : cause + "; " + why;
+  } else if (!tried.empty()) {
+    if (!why.empty() && why.back() == '.') why.pop_back();
+    why += "; the readings " + claims::join(tried, ", ") + " (not reproduced either).";
+  }
+  return why;
+}
+
 // A claim's verdict under each alternative reading that touches it.
 std::string claim_sensitivity(const ClaimResult& r,
                               const std::vector<ReadingResults>& alternatives) {
@@ -385,7 +409,7 @@ std::string claims_markdown(const std::vector<ClaimResult>& results, const std::
     const claims::ClaimEntry* def = find_entry(r.id);
     md << "## " << r.id << ". " << (def ? def->title : "") << "\n\n"
        << "**Verdict: " << to_string(r.verdict) << "**\n\n";
-    if (!r.why.empty()) md << "**Why:** " << r.why << "\n\n";
+    if (!r.why.empty()) md << "**Why:** " << why_with_readings(r, alternatives) << "\n\n";
     md << "- Paper: " << r.statement << "\n"
        << "- Band: " << r.band << "\n\n";
     if (!r.original_band.empty()) {

@@ -232,6 +232,16 @@ std::vector<std::string> list_experiment_files(const std::string& directory) {
       out.push_back(entry.path().string());
   if (ec) throw InputError(directory + ": cannot list experiments (" + ec.message() + ")");
   std::sort(out.begin(), out.end());
+  // The diagnostic experiments behind CLAIMS.md's Why lines (experiments/diagnostics/).
+  const std::filesystem::path diagnostics = std::filesystem::path(directory) / "diagnostics";
+  if (std::filesystem::is_directory(diagnostics, ec)) {
+    std::vector<std::string> more;
+    for (const auto& entry : std::filesystem::directory_iterator(diagnostics, ec))
+      if (entry.is_regular_file() && entry.path().extension() == ".exp")
+        more.push_back(entry.path().string());
+    std::sort(more.begin(), more.end());
+    out.insert(out.end(), more.begin(), more.end());
+  }
   return out;
 }
 

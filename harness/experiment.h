@@ -95,7 +95,8 @@ Experiment parse_experiment(const std::string& path);
 /// Parses experiment text (for tests); `source` names it in error messages.
 Experiment parse_experiment_text(const std::string& text, const std::string& source);
 
-/// The experiment files in a directory (*.exp), sorted by file name.
+/// The experiment files in a directory (*.exp), sorted by file name, then those of its
+/// `diagnostics` subfolder (the diagnostic experiments behind CLAIMS.md's Why lines).
 std::vector<std::string> list_experiment_files(const std::string& directory);
 
 }  // namespace curvbench
