@@ -124,6 +124,34 @@ int factor(double* const* col, int n, int k, int m, double tol, double* rdiag) {
   });
 }
 
+// The leading columns k <= rank that the condition test keeps: ||R_k^-1||_F <= 1 / tol for the
+// factor R_k = R(0:k, 0:k) (paper §4.3.2: A_k and R_k have the same condition number). This
+// certifies sigma_min(A_k) >= tol, the nearness to dependence of all k columns together, where
+// |R_jj| >= tol only measures column j against the columns before it (sigma_min <= min |R_jj|).
+// The columns have unit norm, so cond_2(A_k) <= sqrt(k) / tol: the kept fit has a bounded
+// condition number (Proposition 1). ||R_k^-1||_F grows with k, and ||R_{j+1}^-1||_F >= 1 / |R_jj|.
+// Column j of R^-1: z_j = 1 / R_jj, z_i = -(sum_{l=i+1..j} R_il z_l) / R_ii (R_il = col[l][i]).
+int conditioned_rank(double* const* col, const double* rdiag, int rank, double tol) {
+  if (!(tol > 0.0)) return rank;
+  const double limit = 1.0 / (tol * tol);
+  double inv_r[kMaxCols], z[kMaxCols];
+  double inv2 = 0.0;  // ||R_k^-1||_F^2
+  for (int j = 0; j < rank; ++j) {
+    inv_r[j] = 1.0 / rdiag[j];
+    z[j] = inv_r[j];
+    double norm2 = z[j] * z[j];
+    for (int i = j - 1; i >= 0; --i) {
+      double sum = 0.0;
+      for (int l = i + 1; l <= j; ++l) sum += col[l][i] * z[l];
+      z[i] = -sum * inv_r[i];
+      norm2 += z[i] * z[i];
+    }
+    inv2 += norm2;
+    if (!(inv2 <= limit)) return j;
+  }
+  return rank;
+}
+
 }  // namespace
 
 QrSolveResult safeguarded_qr_solve(FitMatrix& A, RhsMatrix& B, int degree, bool include_constant,
@@ -147,7 +175,9 @@ QrSolveResult safeguarded_qr_solve(FitMatrix& A, RhsMatrix& B, int degree, bool 
   for (int c = 0; c < n; ++c) col[c] = A.data() + static_cast<std::ptrdiff_t>(c) * m;
   for (int c = 0; c < k; ++c) col[n + c] = B.data() + static_cast<std::ptrdiff_t>(c) * m;
   double rdiag[kMaxCols];
-  int rank = factor(col, n, k, m, tol, rdiag);
+  // §4.3.2: the leading columns, so far free of a nearly dependent column, that are also well
+  // conditioned together.
+  int rank = conditioned_rank(col, rdiag, factor(col, n, k, m, tol, rdiag), tol);
   result.rank = rank;
   // Drop whole degree blocks from the right until the accepted columns cover the degree.
   while (rank < n) {

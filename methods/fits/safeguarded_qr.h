@@ -6,11 +6,16 @@
 //   3. factor:      Householder QR left to right (= increasing degree), applying each reflector
 //                   to the right-hand sides B in the same loop; stop at the first column j with
 //                   |R_jj| < tol (or j >= m): rank = j
+//   3b. condition:  rank = the largest k <= rank with ||R(0:k, 0:k)^-1||_F <= 1 / tol
 //   4. drop blocks: while rank < ncols(d): d--  (whole degree blocks, highest degree first);
 //                   d == 0 is a failure
 //   5. solve:       R(0:n, 0:n) y = (Q^T B)(0:n, :) with n = ncols(d); c_j = y_j / s_j
 // The QR of the leading columns is the leading part of the full QR, so dropping blocks needs no
-// refactorisation. |R_jj| < tol certifies cond_2(A(:, 0:j+1)) >= 1/tol (unit-norm columns).
+// refactorisation. |R_jj| < tol certifies cond_2(A(:, 0:j+1)) >= 1/tol (unit-norm columns), but
+// |R_jj| >= tol does not bound it: columns can be nearly dependent together while each is far
+// from the span of those before it (a degree-4 stencil on four grid lines). Step 3b bounds the
+// condition number of the kept columns, as §4.3.2 asks: ||R_k^-1||_F >= 1 / sigma_min(A_k), so
+// sigma_min(A_k) >= tol and cond_2(A_k) <= sqrt(k) / tol; it costs O(k^3 / 6) flops.
 #pragma once
 
 #include "methods/fits/vandermonde.h"
@@ -29,7 +34,7 @@ struct QrSolveResult {
 ///   X  out: num_columns(d_used, include_constant) x k monomial coefficients (unscaled);
 ///      0 x k on failure.
 ///   scale  out: column scaling factors (scratch).
-/// tol is the |R_jj| threshold (EstimatorOptions::qr_tolerance, default 1e-3).
+/// tol is the |R_jj| and 1 / ||R_k^-1||_F threshold (EstimatorOptions::qr_tolerance, default 1e-3).
 QrSolveResult safeguarded_qr_solve(FitMatrix& A, RhsMatrix& B, int degree, bool include_constant,
                                    double tol, CoeffMatrix& X, ColVector& scale);
 

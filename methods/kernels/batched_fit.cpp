@@ -10,8 +10,8 @@
 #include <cmath>
 #include <limits>
 
-#include "methods/kernels/batched_fit.h"
 #include "methods/fits/polynomial_fit.h"
+#include "methods/kernels/batched_fit.h"
 
 #include "methods/kernels/lanes-inl.h"
 
@@ -19,7 +19,6 @@ HWY_BEFORE_NAMESPACE();
 namespace curvbench {
 namespace HWY_NAMESPACE {
 namespace {
-
 
 // Householder update of C columns by the reflector v in x[j..m) (lane-wise):
 // col -= (beta v . col) v. The dot products run side by side, each in two halves (even and odd
@@ -280,7 +279,8 @@ void BatchedFitKernel(BatchedSystems& s) {
 
     // Householder QR of [A B], left to right, in panels of kPanel columns: each reflector
     // updates the rest of its panel at once, and the panel's reflectors update the columns to
-    // its right together (apply_block). A lane is solved if every |R_jj| >= tol.
+    // its right together (apply_block). A lane is solved if every |R_jj| >= tol and its factor
+    // passes the condition test below.
     constexpr int kPanel = 4;
     auto ok = hn::FirstN(d, static_cast<size_t>(N));
     V rdiag[kBatchCols];
@@ -336,12 +336,37 @@ void BatchedFitKernel(BatchedSystems& s) {
           break;
       }
     }
+    V inv_r[kBatchCols];
+    for (int i = 0; i < n; ++i) inv_r[i] = hn::Div(one, rdiag[i]);
+
+    // §4.3.2: the scalar safeguard's condition test, ||R_k^-1||_F <= 1 / tol for the scaled
+    // factor R_k S^-1 (safeguarded_qr.cpp). The norm grows with k, so the lane keeps the degree
+    // iff the test passes for all n columns. The inverse of R S^-1 is S R^-1: its column j is S y
+    // with R y = e_j.
+    if (s.tol > 0.0) {
+      const V limit = hn::Set(d, 1.0 / (s.tol * s.tol));
+      V inv2 = zero;
+      for (int j = 0; j < n; ++j) {
+        V y[kBatchCols];
+        y[j] = inv_r[j];
+        const V zj = hn::Mul(scale[j], y[j]);
+        V norm2 = hn::Mul(zj, zj);
+        for (int i = j - 1; i >= 0; --i) {
+          V dot = zero;
+          for (int l = i + 1; l <= j; ++l)
+            dot = hn::MulAdd(hn::LoadU(d, column(l, o) + i * L), y[l], dot);
+          y[i] = hn::Neg(hn::Mul(dot, inv_r[i]));
+          const V zi = hn::Mul(scale[i], y[i]);
+          norm2 = hn::MulAdd(zi, zi, norm2);
+        }
+        inv2 = hn::Add(inv2, norm2);
+      }
+      ok = hn::And(ok, hn::Le(inv2, limit));
+    }
     hn::StoreU(hn::IfThenElseZero(ok, one), d, solved + o);
 
     // Back substitution R c = (Q^T B)(0:n) for the monomial coefficients c, then the
     // Taylor derivatives c_jk = j! k! coefficient (polynomial_fit.h).
-    V inv_r[kBatchCols];
-    for (int i = 0; i < n; ++i) inv_r[i] = hn::Div(one, rdiag[i]);
     static constexpr int kPowers[5][2] = {{1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}};
     for (int c = 0; c < k; ++c) {
       V y[kBatchCols], coef[kBatchCols];

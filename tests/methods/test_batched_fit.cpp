@@ -166,6 +166,25 @@ TEST(BatchedFit, EqualsScalarWithOtherOptionsAndFallbacks) {
   EXPECT_GT(reduced, 0) << "the high tolerance should reduce degrees (scalar fallback untested)";
 }
 
+// bump-48 level 4, degree 4: at boundary vertices whose ring lies on four grid lines the
+// safeguard's condition test (||R^-1||_F > 1 / tol, safeguarded_qr.cpp) fails while every |R_jj|
+// passes; the batched kernel must send those lanes to the scalar path.
+TEST(BatchedFit, EqualsScalarWhereTheConditionTestFires) {
+  const Mesh mesh = generate_mesh({"bump-48", 4, 0, 1, false}).mesh;
+  for (const char* method : kMethods) {
+    EstimatorOptions o;
+    o.degree = 4;
+    const auto s = run(mesh, method, o, Kernel::scalar);
+    const Comparison c = compare(s, run(mesh, method, o, Kernel::batched));
+    EXPECT_EQ(c.differing, 0) << method << "-4: " << c.first;
+    // Vertex 64 = (0.5, 0): its 3-ring (28 rows) lies on four grid lines; the fit grows the
+    // ring to 3.5 and keeps degree 4.
+    EXPECT_EQ(s[64].degree, 4) << method;
+    EXPECT_EQ(s[64].ring, 3.5) << method;
+    EXPECT_GT(s[64].points, 28) << method;
+  }
+}
+
 bool same_bytes(const std::vector<VertexEstimate>& a, const std::vector<VertexEstimate>& b) {
   if (a.size() != b.size()) return false;
   for (size_t v = 0; v < a.size(); ++v) {

@@ -2,6 +2,8 @@
 // comparison solvers (§4.3.1) and polynomial_fit.
 #include <gtest/gtest.h>
 
+#include <Eigen/QR>
+#include <Eigen/SVD>
 #include <cmath>
 #include <vector>
 
@@ -265,6 +267,107 @@ TEST(SafeguardedQr, ToleranceDecidesNearlyDependentColumns) {
   const FitResult r = fit_polynomial(u, v, f, RowVector(), s, scratch);
   EXPECT_EQ(r.degree, 1);
   EXPECT_NEAR(r.taylor(kFv, 0), 2.0, 1e-6);
+}
+
+// The weighted rows of an LHF-4 fit (eqs. 13, 15) at the point (x0, y0) of the Gaussian bump of
+// §5.2, from the grid points (x0 + i h, y0 + j h), i in [i0, i1], j in [j0, j1], centre first:
+// (u, v) and heights in the exact tangent frame at the point (as on a bump-48 mesh).
+struct BumpStencil {
+  RowVector u, v, w;
+  RhsMatrix f;
+};
+
+BumpStencil bump_stencil(double x0, double y0, double h, int i0, int i1, int j0, int j1) {
+  const auto z = [](double x, double y) {
+    return std::exp(-81.0 / 16.0 * ((x - 0.5) * (x - 0.5) + (y - 0.5) * (y - 0.5)));
+  };
+  const double z0 = z(x0, y0);
+  const Vec3 normal =
+      Vec3(81.0 / 8.0 * (x0 - 0.5) * z0, 81.0 / 8.0 * (y0 - 0.5) * z0, 1.0).normalized();
+  const LocalFrame frame = make_local_frame(normal);
+  const int m = (i1 - i0 + 1) * (j1 - j0 + 1);
+  BumpStencil s;
+  s.u.resize(m);
+  s.v.resize(m);
+  s.f.resize(m, 1);
+  RowVector gamma = RowVector::Ones(m);
+  int row = 1;
+  for (int j = j0; j <= j1; ++j)
+    for (int i = i0; i <= i1; ++i) {
+      const double x = x0 + i * h, y = y0 + j * h;
+      const Vec3 d(x - x0, y - y0, z(x, y) - z0);
+      const int r = i == 0 && j == 0 ? 0 : row++;
+      s.u(r) = d.dot(frame.t1);
+      s.v(r) = d.dot(frame.t2);
+      s.f(r, 0) = d.dot(frame.m);
+    }
+  compute_weights(s.u, s.v, gamma, weight_exponent(4, -1.0), s.w);
+  return s;
+}
+
+// The diagonal of R and the 2-norm condition number of the scaled matrix of eq. (14), degree 4.
+void quartic_conditioning(const BumpStencil& s, double& min_rjj, double& cond2) {
+  FitMatrix V;
+  fill_vandermonde(s.u, s.v, 4, true, V, s.w);
+  Eigen::MatrixXd A = V;
+  for (Eigen::Index c = 0; c < A.cols(); ++c) A.col(c) /= A.col(c).norm();
+  const Eigen::MatrixXd R = Eigen::HouseholderQR<Eigen::MatrixXd>(A).matrixQR();
+  min_rjj = R.diagonal().cwiseAbs().minCoeff();
+  const Eigen::VectorXd sv = Eigen::JacobiSVD<Eigen::MatrixXd>(A).singularValues();
+  cond2 = sv(0) / sv(sv.size() - 1);
+}
+
+TEST(SafeguardedQr, FourGridLineBoundaryStencilDropsTheQuarticBlock) {
+  // The 3-ring of the boundary vertex (0.5, 0) of bump-48 level 4 (h = 1/128): 28 points on the
+  // four grid lines y = 0, h, 2h, 3h. Quartics vanishing on four lines exist, so the quartic
+  // block is dependent up to O(h): cond_2 grows like 1/h, yet every |R_jj| passes tol = 1e-3.
+  const double h = 1.0 / 128;
+  const BumpStencil s = bump_stencil(0.5, 0.0, h, -3, 3, 0, 3);
+  double min_rjj = 0.0, cond2 = 0.0, min_rjj_coarse = 0.0, cond2_coarse = 0.0;
+  quartic_conditioning(s, min_rjj, cond2);
+  quartic_conditioning(bump_stencil(0.5, 0.0, 4 * h, -3, 3, 0, 3), min_rjj_coarse, cond2_coarse);
+  EXPECT_GT(min_rjj, 2e-3);
+  EXPECT_GT(cond2, 2e3);
+  EXPECT_GT(cond2, 4 * cond2_coarse);
+  FitScratch scratch;
+  FitSettings settings;
+  settings.degree = 4;
+  const FitResult r = fit_polynomial(s.u, s.v, s.f, s.w, settings, scratch);
+  EXPECT_EQ(r.degree, 3);  // the condition test of the kept factor drops the quartic block
+  EXPECT_GE(r.rank, 10);
+  EXPECT_LT(r.rank, 15);
+  // A tolerance below 1 / ||R^-1||_F keeps it.
+  settings.qr_tolerance = 1e-4;
+  EXPECT_EQ(fit_polynomial(s.u, s.v, s.f, s.w, settings, scratch).degree, 4);
+  // Half a ring more reaches a fifth grid line: cond_2 stays bounded as h shrinks, and the
+  // safeguard keeps degree 4.
+  const BumpStencil wider = bump_stencil(0.5, 0.0, h, -4, 4, 0, 4);
+  double cond2_wider = 0.0, cond2_wider_coarse = 0.0;
+  quartic_conditioning(wider, min_rjj, cond2_wider);
+  quartic_conditioning(bump_stencil(0.5, 0.0, 4 * h, -4, 4, 0, 4), min_rjj, cond2_wider_coarse);
+  EXPECT_LT(cond2_wider, 1.5 * cond2_wider_coarse);
+  EXPECT_LT(cond2_wider, 0.1 * cond2);
+  settings.qr_tolerance = 1e-3;
+  const FitResult rw = fit_polynomial(wider.u, wider.v, wider.f, wider.w, settings, scratch);
+  EXPECT_EQ(rw.degree, 4);
+  EXPECT_EQ(rw.rank, 15);
+}
+
+TEST(SafeguardedQr, WellConditionedInteriorStencilKeepsDegreeFour) {
+  // A 5 x 5 block of grid points around interior points of the bump, coarse and fine.
+  for (const double h : {1.0 / 16, 1.0 / 128})
+    for (const auto& [x0, y0] : {std::pair{0.25, 0.5}, std::pair{0.5, 0.5}, std::pair{0.3, 0.7}}) {
+      const BumpStencil s = bump_stencil(x0, y0, h, -2, 2, -2, 2);
+      double min_rjj = 0.0, cond2 = 0.0;
+      quartic_conditioning(s, min_rjj, cond2);
+      EXPECT_LT(cond2, 100.0) << x0 << " " << y0 << " h " << h;
+      FitScratch scratch;
+      FitSettings settings;
+      settings.degree = 4;
+      const FitResult r = fit_polynomial(s.u, s.v, s.f, s.w, settings, scratch);
+      EXPECT_EQ(r.degree, 4) << x0 << " " << y0 << " h " << h;
+      EXPECT_EQ(r.rank, 15) << x0 << " " << y0 << " h " << h;
+    }
 }
 
 TEST(LeastSquares, QrAndSvdAgreeOnWellConditionedSystems) {
