@@ -52,7 +52,8 @@ inline constexpr const char* kKernelNames[] = {"batched", "scalar"};
   X(bool, adaptive, "adaptive", true, fits, result, 0, 1,                                          \
     "grow the ring by half rings until the fit has enough points (paper section 4.1)")             \
   X(double, qr_tolerance, "qr-tol", 1e-3, ring_fits, result, 0.0, 1e300,                           \
-    "|R_kk| threshold of the safeguarded QR below which the degree is lowered (section 5.4)")      \
+    "safeguarded QR tolerance: the degree is lowered where |R_kk|, or the smallest singular "     \
+    "value bound 1/||R^-1||_F of the kept columns, falls below it (section 5.4)")                 \
   X(double, weight_power, "weight-power", -1.0, ring_fits, result, -1e300, 1e300,                  \
     "exponent p of the distance weights (|u|^2+eps)^(-p); negative: eq. (15)'s d/4")               \
   X(bool, normal_safeguard, "safeguard", true, ring_fits, result, 0, 1,                            \

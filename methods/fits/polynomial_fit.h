@@ -32,7 +32,7 @@ struct FitSettings {
   int degree = 2;                ///< requested degree, 1..kMaxDegree
   bool include_constant = true;  ///< fit c00 (else the fit passes through the origin)
   LsqSolver solver = LsqSolver::safeguarded_qr;
-  double qr_tolerance = 1e-3;  ///< |R_jj| threshold of the safeguarded QR
+  double qr_tolerance = 1e-3;  ///< safeguarded QR: |R_jj| and 1/||R^-1||_F threshold
   /// Column scaling for the SVD and eigen solvers (the QR always uses the 2-norm, eq. 14).
   ColumnScaling scaling = ColumnScaling::two_norm;
   double threshold = 1e-8;          ///< SVD singular-value / eigenvalue cut-off
