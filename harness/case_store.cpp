@@ -135,6 +135,9 @@ std::string case_inputs(const RunCase& c) {
               : ";noise-alpha=" + std::string(to_string(e.noise_model.distribution)) +
                     ";noise-scale=" + format_double(e.noise_model.scale)) +
          ";noisy=" + yes_no(e.noisy) + (e.noisy_quadratic_only ? ";noisy-rings=quadratic" : "") +
+         (e.radius_c > 0.0 ? ";radius-alpha=" + format_double(e.radius_alpha) +
+                                 ";radius-c=" + format_double(e.radius_c)
+                           : std::string()) +
          ";vertex-set=" + std::string(to_string(e.vertex_set)) + ";" + method_inputs(*c.method) +
          ";measures=" + measures;
 }

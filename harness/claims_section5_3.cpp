@@ -41,6 +41,17 @@ std::string e3_ring_scan(const Data& d) {
   std::string out =
       "diagnostic diag-e3-rings (LHF-2 on the noisy torus at fixed rings, REPORT.md): " +
       join(parts, " | ");
+  // The same fit with a radius shrinking like h^(1/2) (diag-e3-radius), if it was run.
+  std::vector<std::string> growing;
+  for (const char* q : {"H", "K"}) {
+    Check scratch;
+    if (const Series* s = d.find(
+            scratch, query("diag-e3-radius", kNoisyTorus, "LHF-2 r~h^0.5", q, "L2", "isosurface")))
+      growing.push_back(std::string(q) + " rate " + f2(s->rate()) + ", finest " + g3(s->last().e));
+  }
+  if (!growing.empty())
+    out += " | diag-e3-radius (radius 0.44 h^(1/2): 1.5 to 4 rings over the levels): " +
+           join(growing, "; ");
   if (rises)
     out +=
         ". The rate depends on the ring: at the 2 rings of the experiment (1.5 + the noisy-data "

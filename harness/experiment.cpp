@@ -1,6 +1,7 @@
 #include "harness/experiment.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -95,6 +96,17 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
       } else if (key == "vertex-set") {
         need(2);
         e.vertex_set = parse_vertex_set(w[1]);
+      } else if (key == "radius-scaling") {
+        need(3);
+        for (size_t i = 1; i < w.size(); ++i) {
+          std::string k, v;
+          if (!split_option(w[i], k, v) || (k != "alpha" && k != "c"))
+            throw InputError(where + ": expected radius-scaling alpha=A c=C");
+          (k == "alpha" ? e.radius_alpha : e.radius_c) = parse_double(v, where);
+        }
+        if (!(e.radius_c > 0.0) || !std::isfinite(e.radius_c) || !(e.radius_alpha > 0.0) ||
+            !(e.radius_alpha <= 1.0))
+          throw InputError(where + ": radius-scaling needs c > 0 and 0 < alpha <= 1");
       } else if (key == "noise") {
         need(2);
         for (size_t i = 1; i < w.size(); ++i) {

@@ -12,6 +12,11 @@
 //   noisy       yes [rings=all|quadratic]       input is noisy: default rings +0.5 (paper §5.3)
 //               for the fits of every degree (all) or of degree 2 only (quadratic)
 //   vertex-set  all                             all | interior | boundary-ring (default all)
+//   radius-scaling alpha=0.5 c=0.44             optional: each method's neighbourhood radius is
+//               c h^alpha in the mesh's units (h its mean edge length) at every level: rings
+//               c h^(alpha-1) rounded to half rings (>= 1) for the fits, to whole rings for the
+//               quadric, ball-factor c h^(alpha-1) for the normal cycle; the 1-ring methods keep
+//               their 1-ring
 //   method      lhf-2 [rings=2.5] [vertex-set=interior]  one line per method and degree
 //               any estimator option of role "result" as name=value (rings, centre=no,
 //               qr-tol=1e-8, vertex-normals=max, ball-factor=2, ...: the table of
@@ -81,6 +86,8 @@ struct Experiment {
   NoiseModel noise_model = {};  ///< the distribution of alpha
   bool noisy = false;
   bool noisy_quadratic_only = false;  ///< `noisy yes rings=quadratic`: +0.5 ring for degree 2 only
+  double radius_alpha = 0.0;          ///< radius-scaling: radius c h^alpha (c > 0 when set)
+  double radius_c = 0.0;
 
   /// Whether a fit of this degree gets the noisy-data half ring.
   bool noisy_for_degree(int degree) const {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -100,6 +101,19 @@ const ScoredMesh& MeshCache::get(const std::string& family, int level, int noise
   return *(meshes_[key] = std::move(scored));
 }
 
+// radius-scaling (experiment.h): the neighbourhood of radius c h^alpha as the method's own
+// parameter, n = c h^(alpha - 1) edge lengths: half rings for the fits (Jet included), whole rings
+// for the quadric, the ball factor of the normal cycle; the others keep their 1-ring.
+void scale_radius(const Experiment& e, const Estimator& est, double h, EstimatorOptions& opt) {
+  const double n = e.radius_c * std::pow(h, e.radius_alpha - 1.0);
+  if (est.takes_degree() && est.name() != "xu")
+    opt.rings = std::max(1.0, std::round(2.0 * n) / 2.0);
+  else if (est.name() == "quadric")
+    opt.rings = std::max(1.0, std::round(n));
+  else if (est.name() == "normal-cycle")
+    opt.ball_factor = n;
+}
+
 std::vector<RunCase> expand_cases(const std::vector<Experiment>& experiments) {
   std::vector<RunCase> cases;
   for (const auto& e : experiments)
@@ -139,8 +153,9 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads) 
     opt.threads = threads;
     // The noisy-data half ring for the degrees the experiment gives it (the degree is the
     // estimator's: "lhf-3" names it).
-    const int named_degree = make_estimator(c.method->spec, opt)->options().degree;
-    opt.noisy = opt.noisy || e.noisy_for_degree(named_degree);
+    const auto named = make_estimator(c.method->spec, opt);
+    opt.noisy = opt.noisy || e.noisy_for_degree(named->options().degree);
+    if (e.radius_c > 0.0) scale_radius(e, *named, mesh.mean_edge_length(), opt);
     const auto estimator = make_estimator(c.method->spec, opt);
     // The case's time includes gathering the neighbourhoods when this is the first case of the
     // mesh with its neighbourhood spec (later ones read the cache's table).
@@ -151,7 +166,10 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads) 
     interior_only = estimator->scores_interior_only();
     computed = estimator->computes();
     degree = estimator->options().degree;
-    rings = format_g(opt.rings > 0 ? opt.rings : estimator->default_ring());
+    // Under radius-scaling the rings change with the level: the column names the rule, so that
+    // the levels form one series.
+    rings = e.radius_c > 0.0 ? format_g(e.radius_c) + "h^" + format_g(e.radius_alpha)
+                             : format_g(opt.rings > 0 ? opt.rings : estimator->default_ring());
   }
 
   int reduced = 0, failed = 0;

@@ -9,6 +9,7 @@
 #include "harness/experiment.h"
 #include "harness/readings.h"
 #include "harness/runner.h"
+#include "methods/estimator.h"
 
 namespace curvbench {
 namespace {
@@ -105,6 +106,35 @@ TEST(Readings, NoiseAlphaSetsTheModelOfNoisyExperimentsOnly) {
   EXPECT_TRUE(apply_reading({parse("mesh bump-48 levels=1\nmethod lhf-2\n")},
                             choice("noise-alpha", "uniform-0.1"))
                   .empty());
+}
+
+// radius-scaling alpha=0.5 c=0.44: n = 0.44 h^(-1/2) edge lengths; at h = 0.0121 (n = 4.0) the
+// fits take 4 rings, at h = 0.0484 (n = 2.0) 2, at h = 0.02 (n = 3.11) 3; the quadric whole
+// rings, the normal cycle the ball factor itself, Meyer and Xu nothing.
+TEST(RadiusScaling, EachMethodGetsItsOwnNeighbourhoodParameter) {
+  const Experiment e = parse(
+      "radius-scaling alpha=0.5 c=0.44\nmesh torus-iso levels=2\n"
+      "method lhf-2\n");
+  EXPECT_EQ(e.radius_alpha, 0.5);
+  EXPECT_EQ(e.radius_c, 0.44);
+  const auto rings_of = [&](const std::string& method, double h) {
+    EstimatorOptions o;
+    scale_radius(e, *make_estimator(method, {}), h, o);
+    return std::make_pair(o.rings, o.ball_factor);
+  };
+  EXPECT_EQ(rings_of("lhf-2", 0.0121).first, 4.0);
+  EXPECT_EQ(rings_of("lhf-4", 0.0484).first, 2.0);
+  EXPECT_EQ(rings_of("jet-2", 0.02).first, 3.0);    // 3.11 -> 3
+  EXPECT_EQ(rings_of("lhf-2", 0.03).first, 2.5);    // 2.54 -> 2.5
+  EXPECT_EQ(rings_of("quadric", 0.03).first, 3.0);  // 2.54 -> 3
+  EXPECT_EQ(rings_of("lhf-2", 1.0).first, 1.0);     // 0.44 -> at least 1
+  EXPECT_NEAR(rings_of("normal-cycle", 0.0121).second, 4.0, 1e-12);
+  EXPECT_EQ(rings_of("meyer", 0.0121), std::make_pair(0.0, 0.0));
+  EXPECT_EQ(rings_of("xu-2", 0.0121), std::make_pair(0.0, 0.0));
+  EXPECT_THROW(parse("radius-scaling alpha=0 c=1\nmesh bump-48 levels=1\nmethod lhf-2\n"),
+               InputError);
+  EXPECT_THROW(parse("radius-scaling alpha=0.5\nmesh bump-48 levels=1\nmethod lhf-2\n"),
+               InputError);
 }
 
 TEST(Readings, ExperimentFilesTakeTheOptionsAndRefuseBadValues) {
