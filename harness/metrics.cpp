@@ -134,19 +134,40 @@ const char* to_string(VertexSet s) {
       return "interior";
     case VertexSet::boundary_ring:
       return "boundary-ring";
+    case VertexSet::valence_4_or_less:
+      return "valence-4-or-less";
+    case VertexSet::valence_5_or_more:
+      return "valence-5-or-more";
   }
   return "?";
 }
 
 VertexSet parse_vertex_set(const std::string& s) {
-  for (VertexSet v : {VertexSet::all, VertexSet::interior, VertexSet::boundary_ring})
+  for (VertexSet v : {VertexSet::all, VertexSet::interior, VertexSet::boundary_ring,
+                      VertexSet::valence_4_or_less, VertexSet::valence_5_or_more})
     if (s == to_string(v)) return v;
-  throw UsageError("unknown vertex set '" + s + "' (expected all, interior or boundary-ring)");
+  throw UsageError("unknown vertex set '" + s +
+                   "' (expected all, interior, boundary-ring, valence-4-or-less or "
+                   "valence-5-or-more)");
 }
 
 std::vector<int> select_vertices(const Mesh& mesh, VertexSet set) {
   const int n = mesh.num_vertices();
   std::vector<char> in(n, 0);
+  std::vector<int> valence;
+  if (set == VertexSet::valence_4_or_less || set == VertexSet::valence_5_or_more) {
+    std::vector<std::vector<int>> nbrs(static_cast<size_t>(n));
+    for (int f = 0; f < mesh.num_faces(); ++f)
+      for (int k = 0; k < 3; ++k) {
+        const int a = mesh.face_vertex(f, k), b = mesh.face_vertex(f, (k + 1) % 3);
+        nbrs[static_cast<size_t>(a)].push_back(b);
+        nbrs[static_cast<size_t>(b)].push_back(a);
+      }
+    for (auto& nb : nbrs) {
+      std::sort(nb.begin(), nb.end());
+      valence.push_back(static_cast<int>(std::unique(nb.begin(), nb.end()) - nb.begin()));
+    }
+  }
   for (int v = 0; v < n; ++v) {
     switch (set) {
       case VertexSet::all:
@@ -161,6 +182,12 @@ std::vector<int> select_vertices(const Mesh& mesh, VertexSet set) {
           for (int f : mesh.vertex_faces(v))
             for (int k = 0; k < 3; ++k) in[mesh.face_vertex(f, k)] = 1;
         }
+        break;
+      case VertexSet::valence_4_or_less:
+        in[v] = valence[static_cast<size_t>(v)] <= 4;
+        break;
+      case VertexSet::valence_5_or_more:
+        in[v] = valence[static_cast<size_t>(v)] >= 5;
         break;
     }
   }

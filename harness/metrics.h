@@ -34,6 +34,8 @@ enum class VertexSet {
   all,            ///< every vertex
   interior,       ///< vertices not on the boundary
   boundary_ring,  ///< boundary vertices and their 1-ring neighbours (paper Figs. 13-14)
+  valence_4_or_less,  ///< vertices with at most 4 edge neighbours (diagnostic of claim B4)
+  valence_5_or_more,  ///< vertices with at least 5 edge neighbours
 };
 const char* to_string(VertexSet s);
 VertexSet parse_vertex_set(const std::string& s);

@@ -109,6 +109,8 @@ TEST(Metrics, ParsersRejectUnknownNames) {
   EXPECT_EQ(parse_quantity("K"), Quantity::K);
   EXPECT_EQ(parse_norm("Linf"), Norm::Linf);
   EXPECT_EQ(parse_vertex_set("boundary-ring"), VertexSet::boundary_ring);
+  EXPECT_EQ(parse_vertex_set("valence-4-or-less"), VertexSet::valence_4_or_less);
+  EXPECT_EQ(parse_vertex_set("valence-5-or-more"), VertexSet::valence_5_or_more);
   EXPECT_THROW(parse_quantity("curv"), UsageError);
   EXPECT_THROW(parse_norm("L3"), UsageError);
   EXPECT_THROW(parse_vertex_set("edge"), UsageError);
@@ -133,6 +135,10 @@ TEST(Metrics, VertexSets) {
   EXPECT_EQ(select_vertices(mesh, VertexSet::interior).size(), 9u);
   // Boundary (16) plus the interior vertices adjacent to it (the 8 around the centre).
   EXPECT_EQ(select_vertices(mesh, VertexSet::boundary_ring).size(), 24u);
+  // Valences: 6 inside, 4 along the sides, 2 or 3 at the corners.
+  EXPECT_EQ(select_vertices(mesh, VertexSet::valence_4_or_less).size(), 16u);
+  EXPECT_EQ(select_vertices(mesh, VertexSet::valence_5_or_more),
+            select_vertices(mesh, VertexSet::interior));
 }
 
 }  // namespace
