@@ -162,8 +162,14 @@ std::string why_line(const claims::ClaimEntry& def, const claims::Data& data,
     else
       tried.push_back(text);
   }
-  if (def.why)
-    if (std::string cause = def.why(data); !cause.empty()) causes.push_back(cause);
+  // The entry's own diagnostic: a cause, or (text starting "tried ") one more thing tried.
+  if (def.why) {
+    const std::string cause = def.why(data);
+    if (cause.rfind("tried ", 0) == 0)
+      tried.push_back(cause.substr(6));
+    else if (!cause.empty())
+      causes.push_back(cause);
+  }
   if (!causes.empty()) return claims::join(causes, "; ") + ".";
   return "no cause found; tried " + claims::join(tried, "; ") + ".";
 }

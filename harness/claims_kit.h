@@ -205,7 +205,8 @@ struct ClaimEntry {
   std::function<void(const Data&, Check&)> check;
   std::vector<std::string> all_of;
   /// A measured cause of a miss from a diagnostic experiment in the CSVs (e.g. another solver),
-  /// for the "Why" line when the claim is not reproduced; returns "" when there is none.
+  /// for the "Why" line when the claim is not reproduced; returns "" when there is none, or
+  /// "tried ..." for a diagnostic that was run and does not explain the miss.
   std::function<std::string(const Data&)> why = nullptr;
   /// A band re-read (docs/claims.md, "Bands re-read"): the band fixed in advance, its check and
   /// why it misread the sentence (the paper's printed precision, a quantity it did not
