@@ -25,7 +25,7 @@ FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 60
 FUZZ_CXX ?= clang++
 
-.PHONY: all deps configure build test experiments bench clean format test-sanitize fuzz install realmeshes
+.PHONY: sweeps all deps configure build test experiments bench clean format test-sanitize fuzz install realmeshes
 
 all: build
 
@@ -49,6 +49,13 @@ experiments: build
 
 bench: build
 	@bash tools/bench.sh $(BUILD)
+
+# The sweeps at a fixed neighbourhood rule (experiments/sweeps/: the radius-scaling study,
+# docs/algorithms.md §15) -> results/sweeps/ (REPORT.md, CSVs, rates). Not part of `make
+# experiments`: larger, and meant for shards on a cluster (docs/cluster.md).
+sweeps: build
+	@$(BUILD)/curvbench run --all --experiments-dir experiments/sweeps --output results/sweeps \
+	  --no-readings $(RUN_ARGS)
 
 # Every method on the sample meshes of Debian's libcgal-demo (fetched at run time with apt-get
 # download into $(BUILD)/realmeshes/) -> results/REAL_MESHES.md. CORPUS=all: every method at its

@@ -128,7 +128,8 @@ std::string case_inputs(const RunCase& c) {
   for (const auto& [q, norm] : panel_measures(e))
     measures += std::string(measures.empty() ? "" : ",") + to_string(q) + "/" + to_string(norm);
   return "experiment=" + escaped(e.name) + ";family=" + escaped(c.mesh->family) +
-         ";level=" + std::to_string(c.level) + ";noise-order=" + std::to_string(e.noise_order) +
+         ";level=" + std::to_string(c.level) +
+         ";noise-order=" + std::to_string(e.noise_order_of(*c.mesh)) +
          ";noise-seed=" + std::to_string(e.noise_seed) +
          (e.noise_model.is_default()
               ? std::string()

@@ -138,8 +138,13 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
         m.family = w[1];
         for (size_t i = 2; i < w.size(); ++i) {
           std::string k, v;
-          if (!split_option(w[i], k, v) || k != "levels")
-            throw InputError(where + ": expected levels=1,2,3,4");
+          if (split_option(w[i], k, v) && k == "noise-order") {
+            m.noise_order = static_cast<int>(parse_integer(v, where));
+            if (m.noise_order != 0 && m.noise_order != 2 && m.noise_order != 3)
+              throw InputError(where + ": noise-order must be 0, 2 or 3");
+            continue;
+          }
+          if (k != "levels") throw InputError(where + ": expected levels=1,2,3,4 [noise-order=K]");
           std::stringstream ss(v);
           std::string item;
           while (std::getline(ss, item, ','))

@@ -5,7 +5,9 @@
 //   name        fig03-05                        unique id (also the CSV name)
 //   title       "Noise-free torus, degree 2"    one line
 //   section     5.1                             paper section
-//   mesh        torus-structured levels=1,2,3,4 one line per mesh family (meshgen families)
+//   mesh        torus-structured levels=1,2,3,4 [noise-order=K]
+//               one line per mesh family (meshgen families); noise-order=K (0, 2 or 3) overrides
+//               the experiment's noise order for this family (e.g. noise on the bump only)
 //   noise       order=3 seed=11 [alpha=gaussian|uniform] [scale=0.1]
 //               optional controlled noise alpha h^k along the normal (meshgen/noise.h; paper
 //               §5.3, docs/algorithms.md §10.3): alpha = scale N(0,1) or scale U[0,1)
@@ -49,6 +51,8 @@ inline constexpr const char* kAllOperators = "all-operators";
 struct ExperimentMesh {
   std::string family;
   std::vector<int> levels;
+  int noise_order = -1;  ///< `noise-order=K` on the mesh line: this family's controlled noise
+                         ///< order instead of the experiment's (0: none); -1: the experiment's
 };
 
 struct ExperimentMethod {
@@ -88,6 +92,11 @@ struct Experiment {
   bool noisy_quadratic_only = false;  ///< `noisy yes rings=quadratic`: +0.5 ring for degree 2 only
   double radius_alpha = 0.0;          ///< radius-scaling: radius c h^alpha (c > 0 when set)
   double radius_c = 0.0;
+
+  /// The controlled noise order of a mesh line (its own, else the experiment's).
+  int noise_order_of(const ExperimentMesh& m) const {
+    return m.noise_order >= 0 ? m.noise_order : noise_order;
+  }
 
   /// Whether a fit of this degree gets the noisy-data half ring.
   bool noisy_for_degree(int degree) const {

@@ -31,9 +31,9 @@ Norm parse_norm(const std::string& s);
 
 /// Which vertices an error is taken over.
 enum class VertexSet {
-  all,            ///< every vertex
-  interior,       ///< vertices not on the boundary
-  boundary_ring,  ///< boundary vertices and their 1-ring neighbours (paper Figs. 13-14)
+  all,                ///< every vertex
+  interior,           ///< vertices not on the boundary
+  boundary_ring,      ///< boundary vertices and their 1-ring neighbours (paper Figs. 13-14)
   valence_4_or_less,  ///< vertices with at most 4 edge neighbours (diagnostic of claim B4)
   valence_5_or_more,  ///< vertices with at least 5 edge neighbours
 };

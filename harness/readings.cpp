@@ -54,7 +54,9 @@ bool noisy_rings_quadratic_only(Experiment& e) {
 
 std::function<bool(Experiment&)> set_noise_model(NoiseModel model) {
   return [model](Experiment& e) {
-    if (e.noise_order == 0) return false;
+    if (std::none_of(e.meshes.begin(), e.meshes.end(),
+                     [&](const ExperimentMesh& m) { return e.noise_order_of(m) > 0; }))
+      return false;
     e.noise_model = model;
     return true;
   };

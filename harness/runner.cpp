@@ -19,9 +19,9 @@ namespace curvbench {
 
 namespace {
 
-std::string noise_label(const Experiment& e, const std::string& family) {
-  if (e.noise_order > 0) return "h^" + std::to_string(e.noise_order);
-  return mesh_family(family).noise_label;
+std::string noise_label(const Experiment& e, const ExperimentMesh& m) {
+  if (const int order = e.noise_order_of(m); order > 0) return "h^" + std::to_string(order);
+  return mesh_family(m.family).noise_label;
 }
 
 double case_work(const RunCase& c) {
@@ -126,7 +126,7 @@ std::vector<RunCase> expand_cases(const std::vector<Experiment>& experiments) {
 std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads) {
   const Experiment& e = *c.experiment;
   const ScoredMesh& sm =
-      cache.get(c.mesh->family, c.level, e.noise_order, e.noise_seed, e.noise_model);
+      cache.get(c.mesh->family, c.level, e.noise_order_of(*c.mesh), e.noise_seed, e.noise_model);
   const Mesh& mesh = sm.generated.mesh;
 
   using clock = std::chrono::steady_clock;
@@ -201,7 +201,7 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads) 
     r.method = method_label;
     r.degree = degree;
     r.rings = rings;
-    r.noise = noise_label(e, c.mesh->family);
+    r.noise = noise_label(e, *c.mesh);
     r.vertex_set = to_string(set);
     r.quantity = to_string(q);
     r.norm = to_string(norm);

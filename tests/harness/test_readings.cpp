@@ -137,6 +137,22 @@ TEST(RadiusScaling, EachMethodGetsItsOwnNeighbourhoodParameter) {
                InputError);
 }
 
+// noise-order on a mesh line: that family's noise instead of the experiment's (the torus keeps
+// its own isosurface errors, the bump gets alpha h^2), in the rows' noise column too.
+TEST(MeshNoiseOrder, OverridesTheExperimentsNoiseForOneFamily) {
+  const Experiment e = parse(
+      "mesh torus-iso levels=2\nmesh bump-irregular levels=1 noise-order=2\n"
+      "method lhf-2\n");
+  EXPECT_EQ(e.noise_order_of(e.meshes[0]), 0);
+  EXPECT_EQ(e.noise_order_of(e.meshes[1]), 2);
+  MeshCache cache;
+  EXPECT_EQ(run_case({&e, &e.meshes[0], 2, &e.methods[0]}, cache, 1).front().noise, "isosurface");
+  EXPECT_EQ(run_case({&e, &e.meshes[1], 1, &e.methods[0]}, cache, 1).front().noise, "h^2");
+  // The noise-alpha reading reaches an experiment whose noise is on a mesh line only.
+  EXPECT_EQ(apply_reading({e}, choice("noise-alpha", "uniform-0.1")).size(), 1u);
+  EXPECT_THROW(parse("mesh bump-48 levels=1 noise-order=4\nmethod lhf-2\n"), InputError);
+}
+
 TEST(Readings, ExperimentFilesTakeTheOptionsAndRefuseBadValues) {
   const Experiment e = parse(
       "noise order=3 seed=2 alpha=uniform scale=0.05\nnoisy yes rings=quadratic\n"
