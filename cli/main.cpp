@@ -16,10 +16,11 @@
 int main(int argc, char** argv) {
   using namespace curvbench;
   CLI::App app{
-      "curvbench: normals and curvatures of triangle meshes with 13 estimators (the local\n"
+      "curvbench: normals and curvatures of triangle meshes with 14 estimators (the local\n"
       "polynomial fits LHF, LOP, Xu and LSCM of Wang, Jiao et al., CAGD 2009; CGAL's jet\n"
       "fitting; the discrete operators of Meyer, Taubin, Rusinkiewicz, libigl's quadric,\n"
-      "Goldfeather and the normal cycle: `curvbench methods`), and the paper's convergence\n"
+      "Goldfeather, the normal cycle and the interpolated corrected curvature measures:\n"
+      "`curvbench methods`), and the paper's convergence\n"
       "studies."};
   app.set_version_flag("--version", build_info());
   app.require_subcommand(1);

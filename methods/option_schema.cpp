@@ -181,8 +181,20 @@ Option make_option(const char* name, std::string_view scope, std::string_view ro
     info.scope = OptionScope::ring_fits;
   } else if (scope == "operators") {
     info.scope = OptionScope::operators;
-  } else {
-    info.scope = OptionScope::one_method;
+  } else {  // "normal_cycle" or "normal_cycle|icc" (the stringified macro argument)
+    info.scope = OptionScope::listed;
+    std::string method;
+    for (const char c : info.scope_name + "|") {
+      if (c != '|') {
+        if (c != ' ') method += c;
+      } else if (!method.empty()) {
+        info.methods.push_back(method);
+        method.clear();
+      }
+    }
+    info.scope_name.clear();
+    for (const std::string& m : info.methods)
+      info.scope_name += (info.scope_name.empty() ? "" : "|") + m;
   }
   info.role = role == "run" ? OptionRole::run : OptionRole::result;
   info.lowest = lowest;
@@ -214,7 +226,12 @@ std::string scope_text(const OptionInfo& info) {
   if (info.scope == OptionScope::ring_fits)
     return "the fits of the weighted least-squares framework only (lhf, lop, lscm)";
   if (info.scope == OptionScope::operators) return "the discrete operators only";
-  return "method '" + info.scope_name + "' only";
+  std::string names;
+  for (size_t i = 0; i < info.methods.size(); ++i) {
+    if (i > 0) names += i + 1 == info.methods.size() ? " and " : ", ";
+    names += "'" + info.methods[i] + "'";
+  }
+  return (info.methods.size() == 1 ? "method " : "methods ") + names + " only";
 }
 
 }  // namespace
@@ -261,7 +278,9 @@ void check_options_apply(const EstimatorOptions& options, const OptionTarget& ta
                          (info.scope == OptionScope::fits && target.fit) ||
                          (info.scope == OptionScope::ring_fits && target.ring_fit) ||
                          (info.scope == OptionScope::operators && !target.fit) ||
-                         (info.scope == OptionScope::one_method && info.scope_name == target.name);
+                         (info.scope == OptionScope::listed &&
+                          std::find(info.methods.begin(), info.methods.end(), target.name) !=
+                              info.methods.end());
     if (!applies && !o.is_default(options))
       throw UsageError(info.name + " applies to " + scope_text(info) + ", not to '" +
                        target.name + "'");

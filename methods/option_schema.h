@@ -13,8 +13,9 @@
 namespace curvbench {
 
 enum class OptionType : std::uint8_t { boolean, integer, real, choice };
-/// Which methods take an option (a value other than its default elsewhere is an error).
-enum class OptionScope : std::uint8_t { all, fits, ring_fits, operators, one_method };
+/// Which methods take an option (a value other than its default elsewhere is an error):
+/// listed = the methods OptionInfo::methods names.
+enum class OptionScope : std::uint8_t { all, fits, ring_fits, operators, listed };
 /// result: changes the estimates (experiment method lines, case keys); run: how they are
 /// computed, not what (threads, kernel).
 enum class OptionRole : std::uint8_t { result, run };
@@ -24,7 +25,9 @@ struct OptionInfo {
   std::string python_name;  ///< "ball_factor": Python's keyword (name with '_' for '-')
   OptionType type;
   OptionScope scope;
-  std::string scope_name;  ///< "all", "fits", "ring-fits", "operators", or a method's name
+  std::string scope_name;  ///< "all", "fits", "ring-fits", "operators", or the methods' names
+                           ///< joined by '|' ("normal-cycle|icc")
+  std::vector<std::string> methods;  ///< OptionScope::listed: the names of the methods taking it
   OptionRole role;
   double lowest, highest;            ///< valid range of a number
   std::vector<std::string> choices;  ///< a choice's names (the first is the default's)

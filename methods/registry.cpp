@@ -50,7 +50,9 @@
   X("goldfeather",   0, 0, "once", 1.9, make_goldfeather_estimator,                               \
     "adjacent-normal cubic fit over the 1-ring (Goldfeather and Interrante 2004)")       \
   X("normal-cycle",  0, 0, "once", 1.5, make_normal_cycle_estimator,                              \
-    "normal cycle curvature tensor over the 1-ring or a ball (Cohen-Steiner and Morvan 2003)")
+    "normal cycle curvature tensor over the 1-ring or a ball (Cohen-Steiner and Morvan 2003)")  \
+  X("icc",           0, 0, "once", 0.5, make_icc_estimator,                                       \
+    "interpolated corrected curvature measures, 1-ring or ball (Lachaud et al. 2020)")
 // clang-format on
 
 namespace curvbench {

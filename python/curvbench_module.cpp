@@ -331,8 +331,8 @@ py::dict py_score(const py::object& exact_or_mesh, const PyEstimate& est,
 PYBIND11_MODULE(curvbench, m) {
   m.doc() = std::string(
                 "curvbench: per-vertex normals, principal curvatures and directions of triangle "
-                "meshes with 13 estimators (the local polynomial fits LHF, LOP, Xu and LSCM of "
-                "Wang, Jiao et al., CAGD 2009; CGAL's jet fitting; six discrete operators: "
+                "meshes with 14 estimators (the local polynomial fits LHF, LOP, Xu and LSCM of "
+                "Wang, Jiao et al., CAGD 2009; CGAL's jet fitting; seven discrete operators: "
                 "methods()), and test meshes with exact answers.\n\n"
                 "Errors raise curvbench.Error (a ValueError): MeshError for bad mesh data or "
                 "files, UsageError for bad options; the messages are those of the curvbench "

@@ -14,8 +14,8 @@
 //   scope     which methods take it (any other value than the default elsewhere is an error):
 //             all; fits (the degree-d fits); ring_fits (the fits of the paper's weighted
 //             least-squares framework on rings: LHF, LOP, LSCM; Estimator::ring_fit()); operators
-//             (the degree-free discrete operators); or one method, spelled as its name with '_'
-//             for '-' (normal_cycle)
+//             (the degree-free discrete operators); or the methods it names, each spelled as
+//             its name with '_' for '-', several joined by '|' (quadric, normal_cycle|icc)
 //   role      result: it changes the estimates (an experiment's method line may set it, and it
 //             is part of a stored case's key); run: how they are computed, not what (threads,
 //             kernel: the command line, C++ and Python only)
@@ -29,7 +29,7 @@ namespace curvbench {
 
 /// Vertex normals used by the discrete operators: method_default = what the method's authors'
 /// code uses (area for Meyer, Taubin, the quadric and the normal cycle; max for Rusinkiewicz
-/// and Goldfeather).
+/// and Goldfeather, and for ICC, whose accuracy follows that of the normals).
 enum class VertexNormals : std::uint8_t { method_default, area, angle, max };
 inline constexpr const char* kVertexNormalsNames[] = {"default", "area", "angle", "max"};
 
@@ -65,7 +65,7 @@ inline constexpr const char* kKernelNames[] = {"batched", "scalar"};
     "vertex normals of a discrete operator: area, angle or max (default: the method's own)")       \
   X(bool, quadric_constant, "quadric-constant", false, quadric, result, 0, 1,                      \
     "fit 6 coefficients (a constant term) instead of libigl's 5")                                  \
-  X(double, ball_factor, "ball-factor", 0.0, normal_cycle, result, 0.0, 1e6,                       \
+  X(double, ball_factor, "ball-factor", 0.0, normal_cycle|icc, result, 0.0, 1e6,                   \
     "the ball of radius C times the mean edge length instead of the 1-ring (0: the 1-ring)")      \
   X(int, threads, "threads", 0, all, run, 0, 1 << 20,                                               \
     "OpenMP threads (0: all cores); the results do not depend on it")                             \

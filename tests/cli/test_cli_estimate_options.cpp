@@ -47,7 +47,8 @@ TEST(CliEstimateOptions, ReachTheMethodAndBadUseExitsTwo) {
                      "vertex-normals applies to the discrete operators only");
   expect_usage_error("--method meyer --vertex-normals cotan", "valid: default, area, angle, max");
   expect_usage_error("--method meyer --quadric-constant", "applies to method 'quadric' only");
-  expect_usage_error("--method quadric --ball-factor 2", "applies to method 'normal-cycle' only");
+  expect_usage_error("--method quadric --ball-factor 2",
+                     "applies to methods 'normal-cycle' and 'icc' only");
   expect_usage_error("--method normal-cycle --ball-factor -1", "ball-factor -1: out of range");
 
   const auto help = run_cli("estimate --help");

@@ -116,7 +116,7 @@ TEST(Experiment, SingleMethodOptions) {
                "bad.exp:4: quadric-constant applies to method 'quadric' only");
   expect_error("method quadric quadric-constant=maybe\n", "bad.exp:4: quadric-constant: expected yes or no");
   expect_error("method taubin ball-factor=1\n",
-               "bad.exp:4: ball-factor applies to method 'normal-cycle' only");
+               "bad.exp:4: ball-factor applies to methods 'normal-cycle' and 'icc' only");
   expect_error("method normal-cycle ball-factor=-1\n", "bad.exp:4: ball-factor -1: out of range");
 }
 

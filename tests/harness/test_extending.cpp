@@ -70,14 +70,14 @@ TEST(Extending, AToyEstimatorAndFamilyRunThroughTheExperimentPath) {
       "name toy\nmesh toy-sphere levels=2,3\nmethod toy-normal\nmethod lhf-2\n"
       "method all-operators vertex-normals=angle\npanel toy-n \"Toy. Normals.\" normal L2\n",
       "toy.exp");
-  // all-operators now includes the toy operator, after the six built-in ones.
-  ASSERT_EQ(e.methods.size(), 2u + 7u);
+  // all-operators now includes the toy operator, after the seven built-in ones.
+  ASSERT_EQ(e.methods.size(), 2u + 8u);
   EXPECT_EQ(e.methods.back().spec, "toy-normal");
   EXPECT_EQ(e.methods.back().options.vertex_normals, VertexNormals::angle);
   RunOptions o;
   o.threads = 1;
   const RunSummary run = run_experiments({e}, o);
-  ASSERT_EQ(run.rows.size(), 2u * 9u);  // one normal L2 row per level and method
+  ASSERT_EQ(run.rows.size(), 2u * 10u);  // one normal L2 row per level and method
   for (const ErrorRow& r : run.rows) {
     EXPECT_EQ(r.family, "toy-sphere");
     EXPECT_EQ(r.noise, "none");  // the family's noise label
@@ -85,7 +85,7 @@ TEST(Extending, AToyEstimatorAndFamilyRunThroughTheExperimentPath) {
   }
   // The toy's normal error converges, about first order on the icosphere (0.45x per halving).
   const ErrorRow& coarse = run.rows[0];
-  const ErrorRow& fine = run.rows[9];
+  const ErrorRow& fine = run.rows[10];
   ASSERT_EQ(coarse.method, "TOY-NORMAL");
   ASSERT_EQ(fine.method, "TOY-NORMAL");
   EXPECT_GT(coarse.error, 0.0);

@@ -49,7 +49,7 @@ TEST(VertexNormals, SingleMethodOptionsOnOtherMethodsAreErrors) {
   normals.vertex_normals = VertexNormals::angle;
   expect_error("lhf-2", normals, "vertex-normals applies to the discrete operators only");
   for (const char* op :
-       {"meyer", "taubin", "rusinkiewicz", "quadric", "goldfeather", "normal-cycle"})
+       {"meyer", "taubin", "rusinkiewicz", "quadric", "goldfeather", "normal-cycle", "icc"})
     EXPECT_EQ(make_estimator(op, normals)->options().vertex_normals, VertexNormals::angle) << op;
   EstimatorOptions constant;
   constant.quadric_constant = true;
@@ -57,8 +57,9 @@ TEST(VertexNormals, SingleMethodOptionsOnOtherMethodsAreErrors) {
   EXPECT_TRUE(make_estimator("quadric", constant)->options().quadric_constant);
   EstimatorOptions ball;
   ball.ball_factor = 2.0;
-  expect_error("jet-3", ball, "ball-factor applies to method 'normal-cycle' only");
+  expect_error("jet-3", ball, "ball-factor applies to methods 'normal-cycle' and 'icc' only");
   EXPECT_EQ(make_estimator("normal-cycle", ball)->options().ball_factor, 2.0);
+  EXPECT_EQ(make_estimator("icc", ball)->options().ball_factor, 2.0);
 }
 
 }  // namespace
