@@ -110,7 +110,7 @@ void scale_radius(const Experiment& e, const Estimator& est, double h, Estimator
     opt.rings = std::max(1.0, std::round(2.0 * n) / 2.0);
   else if (est.name() == "quadric")
     opt.rings = std::max(1.0, std::round(n));
-  else if (est.name() == "normal-cycle")
+  else if (est.name() == "normal-cycle" || est.name() == "icc")
     opt.ball_factor = n;
 }
 

@@ -129,6 +129,7 @@ TEST(RadiusScaling, EachMethodGetsItsOwnNeighbourhoodParameter) {
   EXPECT_EQ(rings_of("quadric", 0.03).first, 3.0);  // 2.54 -> 3
   EXPECT_EQ(rings_of("lhf-2", 1.0).first, 1.0);     // 0.44 -> at least 1
   EXPECT_NEAR(rings_of("normal-cycle", 0.0121).second, 4.0, 1e-12);
+  EXPECT_NEAR(rings_of("icc", 0.0121).second, 4.0, 1e-12);
   EXPECT_EQ(rings_of("meyer", 0.0121), std::make_pair(0.0, 0.0));
   EXPECT_EQ(rings_of("xu-2", 0.0121), std::make_pair(0.0, 0.0));
   EXPECT_THROW(parse("radius-scaling alpha=0 c=1\nmesh bump-48 levels=1\nmethod lhf-2\n"),
