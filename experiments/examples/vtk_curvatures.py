@@ -28,10 +28,12 @@ python3-vtk9, and the current master compute the same):
   divided by a third of the area of the incident triangles (the barycentric area). Meyer's
   deficit is the same; its area is the mixed Voronoi area, which differs from the barycentric
   one wherever the triangles are not all alike, so the two Ks differ on irregular meshes.
-* Measured (the field study, experiments/field_estimators.exp): on torus-structured both H
-  and K converge as O(h^2), VTK's H about 3.4 times less accurate than Meyer's and its K
-  slightly more; on the irregular meshes (torus-unstructured, bump-irregular) neither
-  converges, and VTK's H error stays about 1.7 times Meyer's.
+* Measured (the field study, experiments/field_estimators.exp, L2 errors at the finest
+  level): on torus-structured both converge as O(h^2), VTK's H error 3.4 times Meyer's and its
+  K error 0.74 times. On the other five families neither converges in H or K; VTK's H error
+  is 1.7 times Meyer's on torus-unstructured, 1.6 on bump-irregular, 2.2 on bump-48, 1.5 on
+  torus-iso-projected (both diverge there) and 0.58 on torus-jittered, and its K error is
+  within 10% of Meyer's except on bump-48 (4 times) and bump-irregular (2.8 times).
 * Maximum/minimum curvature: H +- sqrt(H^2 - K), with H when H^2 - K < 0 (VTK then warns if it
   is below -0.1). This script forms k1, k2 the same way from the H and K it writes.
 * Orientation and normals. The filter takes no normals and does not reorient faces: the face
@@ -68,7 +70,7 @@ try:
     from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
     from vtkmodules.vtkFiltersGeneral import vtkCurvatures
 except ImportError as error:
-    sys.stderr.write("vtk_curvatures.py: cannot import VTK for %s (Debian package python3-vtk9, "
+    sys.stderr.write("vtk_curvatures.py: cannot import VTK for %s (install Debian's python3-vtk9: "
                      "make deps): %s\n" % (sys.executable, error))
     sys.exit(SKIP)
 
