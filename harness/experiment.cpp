@@ -172,6 +172,8 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
             m.label = v;
           } else if (m.is_external() && k == "command") {
             m.command = v;
+          } else if (m.is_external() && k == "description") {
+            m.description = v;
           } else if (m.is_external() && k == "timeout") {
             m.timeout_seconds = parse_double(v, where);
             if (!(m.timeout_seconds > 0))

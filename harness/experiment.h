@@ -25,9 +25,10 @@
 //               include/curvbench/estimator_options.h), and label="LHF-2 interp" to tell
 //               variants apart
 //   method      all-operators [options]   every registered degree-free operator, one line each
-//               external name=N command="prog {mesh} {out}" [timeout=SECONDS]: an outside
-//               estimator (external_estimator.h), labelled N, limited to SECONDS per case
-//               (default 600)
+//               external name=N command="prog {mesh} {out}" [timeout=SECONDS]
+//               [description="..."]: an outside estimator (external_estimator.h), labelled N,
+//               limited to SECONDS per case (default 600), described in REPORT.md by the
+//               description; a command exiting 77 skips the method (runner.h)
 //   panel       fig3-left "Fig. 3 (left). ..." normal L2  one table/plot per mesh family
 //
 // Methods that score interior vertices only (Estimator::scores_interior_only(): Xu-2, paper
@@ -66,6 +67,9 @@ struct ExperimentMethod {
   // spec "external": an outside estimator (external_estimator.h); its name is the label.
   std::string command;           ///< command=".. {mesh} .. {out}"
   double timeout_seconds = 0.0;  ///< timeout=S (<= 0: kDefaultExternalTimeout)
+  /// description="...": what it computes, one line in REPORT.md (not part of the case's key:
+  /// it does not change the results)
+  std::string description;
 
   bool is_external() const { return spec == "external"; }
 };

@@ -142,6 +142,14 @@ ExternalResult run_external_estimator(const Mesh& mesh, const ExternalRun& run) 
   if (WIFSIGNALED(status))
     throw ExternalEstimatorError(who + " " + quoted + " was killed by signal " +
                                  std::to_string(WTERMSIG(status)) + stderr_part());
+  if (WIFEXITED(status) && WEXITSTATUS(status) == kExternalSkipExitCode) {
+    const std::string reason = tail_lines(err_path, 1);
+    throw ExternalEstimatorUnavailable(
+        who + " " + quoted + " says it cannot run here (exit code " +
+            std::to_string(kExternalSkipExitCode) + ")" + stderr_part(),
+        reason.empty() ? "exit code " + std::to_string(kExternalSkipExitCode) + ", no message"
+                       : reason);
+  }
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
     throw ExternalEstimatorError(who + " " + quoted + " failed with exit code " +
                                  std::to_string(WEXITSTATUS(status)) + stderr_part());

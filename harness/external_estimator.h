@@ -7,6 +7,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/errors.h"
@@ -24,6 +25,22 @@ class ExternalEstimatorError : public InputError {
   using InputError::InputError;
 };
 
+/// The exit code by which an outside estimator says it cannot run here (a missing library or
+/// interpreter), as automake's SKIP: the runner skips the method instead of failing the run.
+inline constexpr int kExternalSkipExitCode = 77;
+
+/// The command exited with kExternalSkipExitCode. reason() is the last line of its stderr (or a
+/// fixed text when it wrote none).
+class ExternalEstimatorUnavailable : public ExternalEstimatorError {
+ public:
+  ExternalEstimatorUnavailable(const std::string& what, std::string reason)
+      : ExternalEstimatorError(what), reason_(std::move(reason)) {}
+  const std::string& reason() const { return reason_; }
+
+ private:
+  std::string reason_;
+};
+
 struct ExternalRun {
   std::string command;         ///< with {mesh} and {out}
   double timeout_seconds = 0;  ///< <= 0: kDefaultExternalTimeout
@@ -39,7 +56,8 @@ struct ExternalResult {
   double seconds = 0.0;                   ///< wall time of the command
 };
 
-/// Runs the command on the mesh and reads its estimates. Throws ExternalEstimatorError.
+/// Runs the command on the mesh and reads its estimates. Throws ExternalEstimatorUnavailable
+/// when it exits with kExternalSkipExitCode, ExternalEstimatorError for any other failure.
 ExternalResult run_external_estimator(const Mesh& mesh, const ExternalRun& run);
 
 /// The words of the command that name existing regular files (relative to the current folder),

@@ -232,6 +232,19 @@ bool render_plot(const std::string& base, const std::string& title,
   return true;
 }
 
+std::string outside_method_notes(const Experiment& e, const std::string& results_dir) {
+  std::string out;
+  for (const ExperimentMethod& m : e.methods)
+    if (m.is_external() && !m.description.empty())
+      out += "- `" + m.label + "` (outside estimator): " + m.description + "\n";
+  for (const SkippedMethod& s : read_skipped_csv(results_dir + "/skipped.csv"))
+    if (s.experiment == e.name)
+      out += "- `" + s.method + "` was skipped (" + std::to_string(s.cases) +
+             " cases): its command cannot run here (" + s.reason +
+             "). It has no rows below; install what it needs and rerun.\n";
+  return out.empty() ? out : out + "\n";
+}
+
 std::string write_report(const std::vector<Experiment>& experiments, const ReportOptions& options) {
   const std::string dir = options.results_dir;
   fs::create_directories(fs::path(dir) / "plots");
@@ -323,7 +336,8 @@ std::string write_report(const std::vector<Experiment>& experiments, const Repor
     }
     const auto rows = read_error_csv(csv);
     md << "## " << e.name << ": " << e.title << " (paper §" << e.section << ")\n\n"
-       << "Source: `experiments/" << fs::path(e.source).filename().string() << "`.\n\n";
+       << "Source: `experiments/" << fs::path(e.source).filename().string() << "`.\n\n"
+       << outside_method_notes(e, dir);
     for (const auto& panel : e.panels) {
       md << "### " << panel.caption << "\n\n";
       for (const auto& m : e.meshes) {

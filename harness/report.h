@@ -33,6 +33,11 @@ void write_table4_csv(const std::string& path, int max_grid_points);
 /// Returns the path of REPORT.md, or "" if options.stop asked to stop (REPORT.md untouched).
 std::string write_report(const std::vector<Experiment>& experiments, const ReportOptions& options);
 
+/// Markdown bullets for the outside estimators of an experiment: each `description="..."`, and
+/// each method skipped because its command cannot run here (from <results_dir>/skipped.csv,
+/// results_table.h), with the reason. Empty when there is neither.
+std::string outside_method_notes(const Experiment& e, const std::string& results_dir);
+
 /// The x axis of a plot: by default the mean edge length h, decreasing to the right, with each
 /// method's convergence rate in the legend. The accuracy-versus-cost plots put the time per
 /// vertex there instead (the rows' `h` then holds it).

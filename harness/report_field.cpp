@@ -114,6 +114,8 @@ bool append_field_estimators_section(std::ostringstream& md,
          << "; the words below are generated from the tables with that threshold.\n\n";
       header_written = true;
     }
+    if (const std::string notes = outside_method_notes(e, dir); !notes.empty())
+      md << "Outside estimators of " << e.name << ":\n\n" << notes;
     for (const ExperimentMesh& mesh : e.meshes) {
       std::vector<MethodRows> methods;
       std::map<std::string, size_t> index;

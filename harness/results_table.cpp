@@ -121,6 +121,34 @@ std::vector<TimingRow> read_timing_csv(const std::string& path) {
   return out;
 }
 
+void write_skipped_csv(const std::string& path, const std::vector<SkippedMethod>& rows) {
+  if (rows.empty()) {
+    std::error_code ec;
+    std::filesystem::remove(path, ec);
+    return;
+  }
+  std::ostringstream out;
+  out << provenance_comment() << "\n"
+      << "experiment,method,cases,reason\n";
+  for (const auto& r : rows) {
+    std::string reason = r.reason;
+    std::replace(reason.begin(), reason.end(), ',', ';');
+    out << r.experiment << ',' << r.method << ',' << r.cases << ',' << reason << "\n";
+  }
+  write_file_atomic(path, out.str());
+}
+
+std::vector<SkippedMethod> read_skipped_csv(const std::string& path) {
+  std::vector<SkippedMethod> out;
+  if (!std::filesystem::exists(path)) return out;
+  const CsvTable t = read_csv_table(path);
+  const size_t ce = t.col("experiment"), cm = t.col("method"), cc = t.col("cases"),
+               cr = t.col("reason");
+  for (size_t i = 0; i < t.rows.size(); ++i)
+    out.push_back({t.text(i, ce), t.text(i, cm), t.integer(i, cc), t.text(i, cr)});
+  return out;
+}
+
 void write_rate_csv(const std::string& path, const std::vector<RateRow>& rows) {
   std::ostringstream out;
   out << provenance_comment() << "\n" << kRateHeader << "\n";

@@ -12,6 +12,9 @@
 //   the wall time of the case's estimation (ErrorRow::seconds). Unlike the errors CSV it is not
 //   reproducible byte for byte: it is measured when a case is computed, and kept with the case
 //   in the case store, so a rerun that reuses a case writes its stored time again.
+// skipped CSV (results/skipped.csv, only when some method was skipped), one row per
+//   (experiment, method) an outside estimator skipped (runner.h): experiment,method,cases,reason
+//   (commas in the reason written as semicolons)
 // Numbers are written with %.17g so a CSV read back gives the same doubles.
 #pragma once
 
@@ -78,6 +81,20 @@ struct TimingRow {
 void write_timing_csv(const std::string& path, const std::vector<ErrorRow>& rows);
 /// Reads a timings CSV. Throws InputError naming file and line.
 std::vector<TimingRow> read_timing_csv(const std::string& path);
+
+/// An outside estimator that said it cannot run here (exit code kExternalSkipExitCode,
+/// external_estimator.h), with the cases of one experiment it skipped.
+struct SkippedMethod {
+  std::string experiment;
+  std::string method;  ///< the label (name=)
+  int cases = 0;       ///< cases of the experiment skipped
+  std::string reason;  ///< the last line of its stderr
+};
+
+/// Writes the skipped CSV atomically; with no rows, removes the file instead.
+void write_skipped_csv(const std::string& path, const std::vector<SkippedMethod>& rows);
+/// Reads a skipped CSV; a missing file has no rows. Throws InputError naming file and line.
+std::vector<SkippedMethod> read_skipped_csv(const std::string& path);
 
 /// Reads an errors CSV written by write_error_csv. Throws InputError naming file and line.
 std::vector<ErrorRow> read_error_csv(const std::string& path);

@@ -1,6 +1,7 @@
 #include "harness/run_pipeline.h"
 #include "harness/well_shaped_torus_table.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -138,6 +139,7 @@ PipelineResult run_pipeline(const PipelineOptions& o) {
   if (!o.report_only) {
     RunOptions ro;
     ro.threads = o.threads;
+    ro.message = o.message;
     ro.store_dir = store_dir;
     ro.force = o.force;
     ro.stop = o.stop;
@@ -161,8 +163,21 @@ PipelineResult run_pipeline(const PipelineOptions& o) {
     result.total = done.total;
     result.reused = done.reused;
     result.computed = done.computed;
-    if (done.interrupted || stop()) return stopped(done.reused + done.computed);
-    say(format("[run] reused %d of %d cases, computed %d", done.reused, done.total, done.computed));
+    if (done.interrupted || stop()) return stopped(done.reused + done.computed + done.skipped);
+    say(format("[run] reused %d of %d cases, computed %d", done.reused, done.total, done.computed) +
+        (done.skipped > 0
+             ? format(", skipped %d (outside estimators that cannot run here)", done.skipped)
+             : std::string()));
+    if (!sharded) {
+      // skipped.csv: this run's skips replace those of the experiments it ran.
+      std::vector<SkippedMethod> skipped;
+      for (const SkippedMethod& s : read_skipped_csv(o.output + "/skipped.csv"))
+        if (std::none_of(o.experiments.begin(), o.experiments.end(),
+                         [&](const Experiment& e) { return e.name == s.experiment; }))
+          skipped.push_back(s);
+      skipped.insert(skipped.end(), done.skipped_methods.begin(), done.skipped_methods.end());
+      write_skipped_csv(o.output + "/skipped.csv", skipped);
+    }
     if (sharded) {
       say("[run] shard " + std::to_string(o.shard) + "/" + std::to_string(o.shard_count) +
           " done; stored in " + store_dir);
@@ -183,6 +198,7 @@ PipelineResult run_pipeline(const PipelineOptions& o) {
         fs::create_directories(folder);
         RunOptions ro;
         ro.threads = o.threads;
+        ro.message = o.message;
         ro.store_dir = (fs::path(store_dir) / "readings" / fs::path(folder).filename()).string();
         ro.force = o.force;
         ro.stop = o.stop;
@@ -191,7 +207,7 @@ PipelineResult run_pipeline(const PipelineOptions& o) {
           write_error_csv(folder + "/" + e.name + ".csv", rows);
         };
         const RunSummary done = run_experiments(changed, ro);
-        if (done.interrupted || stop()) return stopped(done.reused + done.computed);
+        if (done.interrupted || stop()) return stopped(done.reused + done.computed + done.skipped);
       }
   }
 

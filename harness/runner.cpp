@@ -241,6 +241,17 @@ RunSummary run_experiments(const std::vector<Experiment>& experiments, const Run
     if (!stored[i]) total_work += case_work(cases[i]);
   MeshCache cache;
   RunSummary summary;
+  // Commands of outside estimators that said they cannot run here, with their reason.
+  std::map<std::string, std::string> unavailable;
+  const auto skip = [&](const RunCase& c, const std::string& reason) {
+    ++summary.skipped;
+    for (SkippedMethod& s : summary.skipped_methods)
+      if (s.experiment == c.experiment->name && s.method == c.method->label) {
+        ++s.cases;
+        return;
+      }
+    summary.skipped_methods.push_back({c.experiment->name, c.method->label, 1, reason});
+  };
   summary.total = static_cast<int>(todo.size());
   const auto start = clock::now();
   RunProgress p;
@@ -251,14 +262,29 @@ RunSummary run_experiments(const std::vector<Experiment>& experiments, const Run
     const auto t0 = clock::now();
     std::vector<ErrorRow> case_rows;
     p.reused = stored[i].has_value();
+    p.skipped = false;
     if (p.reused) {
       case_rows = std::move(*stored[i]);
       ++summary.reused;
-    } else {
-      case_rows = run_case(c, cache, options.threads);
-      if (store) store->save(c, case_rows);
+    } else if (const auto u = c.method->is_external() ? unavailable.find(c.method->command)
+                                                      : unavailable.end();
+               u != unavailable.end()) {
+      skip(c, u->second);
+      p.skipped = true;
       done_work += case_work(c);
-      ++summary.computed;
+    } else {
+      try {
+        case_rows = run_case(c, cache, options.threads);
+        if (store) store->save(c, case_rows);
+        ++summary.computed;
+      } catch (const ExternalEstimatorUnavailable& e) {
+        unavailable[c.method->command] = e.reason();
+        if (options.message)
+          options.message("[run] skipped method " + c.method->label + ": " + e.reason());
+        skip(c, e.reason());
+        p.skipped = true;
+      }
+      done_work += case_work(c);
     }
     const auto t1 = clock::now();
     ++p.done;

@@ -52,7 +52,8 @@ struct RunProgress {
   int done = 0;   ///< cases finished (computed or reused)
   int total = 0;  ///< cases in the run
   const RunCase* current = nullptr;
-  bool reused = false;  ///< the current case's rows came from the store
+  bool reused = false;   ///< the current case's rows came from the store
+  bool skipped = false;  ///< the current case's outside estimator cannot run here (no rows)
   double case_seconds = 0.0;
   double elapsed_seconds = 0.0;
   double eta_seconds = 0.0;  ///< estimate from the work (4^level) of the cases left to compute
@@ -62,6 +63,8 @@ struct RunProgress {
 struct RunOptions {
   int threads = 0;                                   ///< 0 = OpenMP default
   std::function<void(const RunProgress&)> progress;  ///< called after each case
+  /// One line ("[run] skipped method ..."), without newline.
+  std::function<void(const std::string&)> message;
   /// Called with an experiment's rows as soon as its last case is done (e.g. to write its CSV).
   std::function<void(const Experiment&, const std::vector<ErrorRow>&)> experiment_done;
   /// Folder of the case store (case_store.h); empty = no store, every case is computed.
@@ -76,11 +79,13 @@ struct RunOptions {
 };
 
 struct RunSummary {
-  std::vector<ErrorRow> rows;  ///< rows of the finished cases, in case order
-  int total = 0;               ///< cases in the run
-  int reused = 0;              ///< finished cases taken from the store
-  int computed = 0;            ///< finished cases computed in this run
-  bool interrupted = false;    ///< stopped before the last case
+  std::vector<ErrorRow> rows;                  ///< rows of the finished cases, in case order
+  int total = 0;                               ///< cases in the run
+  int reused = 0;                              ///< finished cases taken from the store
+  int computed = 0;                            ///< finished cases computed in this run
+  int skipped = 0;                             ///< cases of outside estimators that cannot run here
+  std::vector<SkippedMethod> skipped_methods;  ///< per (experiment, method), first-seen order
+  bool interrupted = false;                    ///< stopped before the last case
 };
 
 /// Expands the experiments into cases (experiment order, then mesh, level, method).
@@ -111,7 +116,11 @@ double case_cost(const RunCase& c);
 std::vector<size_t> shard_cases(const std::vector<RunCase>& cases, int k, int n);
 
 /// Runs all cases of the experiments (taking the unchanged ones from the store, if any),
-/// reporting progress, until done or options.stop() says to stop.
+/// reporting progress, until done or options.stop() says to stop. An outside estimator whose
+/// command exits with kExternalSkipExitCode is unavailable for the rest of the run: that case
+/// and every later case with the same command are skipped (not run, not stored, no rows; one
+/// options.message line the first time) and listed in RunSummary::skipped_methods, so that a
+/// later run where it can run computes them.
 RunSummary run_experiments(const std::vector<Experiment>& experiments, const RunOptions& options);
 
 }  // namespace curvbench

@@ -16,7 +16,9 @@ packages=(
   libcli11-dev             # command line
   libhwy-dev               # Google Highway: SIMD with run-time dispatch (batched fitting kernels)
   pybind11-dev python3-dev python3-numpy python3-pytest  # Python module (for /usr/bin/python3);
-                           # numpy also runs the outside-estimator example (experiments/examples/)
+                           # numpy also runs the outside-estimator examples (experiments/examples/)
+  python3-vtk9             # VTK for /usr/bin/python3: the vtk-curvatures method of the field
+                           # study (experiments/examples/vtk_curvatures.py; skipped without it)
   gnuplot-nox              # convergence plots (PNG and SVG)
   time                     # /usr/bin/time -v: peak memory in make bench
 )

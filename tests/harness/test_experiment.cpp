@@ -4,6 +4,8 @@
 #include <cmath>
 #include <filesystem>
 #include <set>
+#include <sstream>
+#include <string>
 
 #include "core/errors.h"
 #include "harness/experiment.h"
@@ -111,10 +113,12 @@ TEST(Experiment, SingleMethodOptions) {
   };
   expect_error("method lhf-2 vertex-normals=area\n",
                "bad.exp:4: vertex-normals applies to the discrete operators only");
-  expect_error("method meyer vertex-normals=cot\n", "bad.exp:4: vertex-normals: unknown value 'cot'");
+  expect_error("method meyer vertex-normals=cot\n",
+               "bad.exp:4: vertex-normals: unknown value 'cot'");
   expect_error("method meyer quadric-constant=yes\n",
                "bad.exp:4: quadric-constant applies to method 'quadric' only");
-  expect_error("method quadric quadric-constant=maybe\n", "bad.exp:4: quadric-constant: expected yes or no");
+  expect_error("method quadric quadric-constant=maybe\n",
+               "bad.exp:4: quadric-constant: expected yes or no");
   expect_error("method taubin ball-factor=1\n",
                "bad.exp:4: ball-factor applies to methods 'normal-cycle' and 'icc' only");
   expect_error("method normal-cycle ball-factor=-1\n", "bad.exp:4: ball-factor -1: out of range");
@@ -157,7 +161,22 @@ TEST(Experiment, ShippedDefinitionsAreValid) {
         EXPECT_LE(l, max_mesh_level(m.family)) << f;
       }
     }
-    for (const auto& m : e.methods) EXPECT_NO_THROW(make_estimator(m.spec, {})) << m.spec;
+    for (const auto& m : e.methods) {
+      if (!m.is_external()) {
+        EXPECT_NO_THROW(make_estimator(m.spec, {})) << m.spec;
+        continue;
+      }
+      // An outside estimator runs a script of the repository (from its root).
+      std::istringstream words(m.command);
+      int scripts = 0;
+      for (std::string w; words >> w;)
+        if (w.rfind("experiments/", 0) == 0) {
+          ++scripts;
+          EXPECT_TRUE(std::filesystem::is_regular_file(std::string(CURVBENCH_SOURCE_DIR) + "/" + w))
+              << f << ": " << w;
+        }
+      EXPECT_GE(scripts, 1) << f << ": " << m.command;
+    }
     for (const auto& p : e.panels) EXPECT_TRUE(panels.insert(p.id).second) << p.id;
   }
 }

@@ -1,9 +1,11 @@
 // Outside estimators as experiment methods (`method external`, harness/external_estimator.h):
 // the worked example (experiments/examples/, Python + numpy) runs end to end and its rows are
 // what `curvbench score` gives for the script's output; failures are typed errors naming the
-// case; the case store keys on the command and the script's content.
+// case; the case store keys on the command and the script's content; a command exiting 77
+// cannot run here and its method is skipped, not failed (docs/cli.md).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -14,9 +16,11 @@
 #include <tuple>
 #include <vector>
 
+#include "harness/experiment.h"
 #include "harness/external_estimator.h"
 #include "harness/results_table.h"
 #include "harness/score.h"
+#include "meshgen/generate.h"
 #include "tests/cli/cli_runner.h"
 
 namespace curvbench {
@@ -177,6 +181,133 @@ TEST(External, FailuresAreTypedErrorsNamingTheCase) {
     EXPECT_EQ(r.exit_code, 2) << method << ": " << r.output;
     EXPECT_NE(r.output.find("parse.exp:3"), std::string::npos) << method << ": " << r.output;
   }
+}
+
+// A command that writes vertex,H (-1 everywhere) for any mesh, with sh only: the vertex count
+// from the PLY's header.
+const std::string kShEstimator =
+    "n=$(grep -a -m1 '^element vertex' {mesh} | cut -d' ' -f3); "
+    "{ echo vertex,H; seq 0 $((n-1)) | sed 's/$/,-1/'; } > {out}";
+
+TEST(External, ExitCode77IsUnavailableNotFailed) {
+  MeshSpec spec;
+  spec.family = "bump-48";
+  const Mesh mesh = generate_mesh(spec).mesh;
+  ExternalRun run;
+  run.case_name = "unit";
+  run.command = "echo starting >&2; echo 'no libfoo here' >&2; : {mesh} {out}; exit 77";
+  try {
+    run_external_estimator(mesh, run);
+    FAIL() << "exit 77 did not throw";
+  } catch (const ExternalEstimatorUnavailable& e) {
+    EXPECT_EQ(e.reason(), "no libfoo here");  // the last line of its stderr
+    EXPECT_NE(std::string(e.what()).find("exit code 77"), std::string::npos) << e.what();
+  }
+  run.command = ": {mesh} {out}; exit 77";
+  try {
+    run_external_estimator(mesh, run);
+    FAIL() << "exit 77 did not throw";
+  } catch (const ExternalEstimatorUnavailable& e) {
+    EXPECT_EQ(e.reason(), "exit code 77, no message");
+  }
+  // Any other exit code is a failure, not a skip; the sh estimator itself works.
+  run.command = ": {mesh} {out}; exit 78";
+  try {
+    run_external_estimator(mesh, run);
+    FAIL() << "exit 78 did not throw";
+  } catch (const ExternalEstimatorUnavailable&) {
+    FAIL() << "exit 78 taken for a skip";
+  } catch (const ExternalEstimatorError& e) {
+    EXPECT_NE(std::string(e.what()).find("failed with exit code 78"), std::string::npos);
+  }
+  run.command = kShEstimator;
+  const ExternalResult r = run_external_estimator(mesh, run);
+  ASSERT_EQ(r.estimates.size(), static_cast<size_t>(mesh.num_vertices()));
+  EXPECT_EQ(r.estimates.back().H, -1.0);
+}
+
+TEST(External, DescriptionIsParsedForOutsideEstimatorsOnly) {
+  const Experiment e = parse_experiment_text(
+      "name d\nmesh bump-48 levels=1\nmethod external name=a command=\"x {mesh} {out}\" "
+      "description=\"what it does, in words\"\npanel p \"p\" H L2\n",
+      "d.exp");
+  ASSERT_EQ(e.methods.size(), 1u);
+  EXPECT_EQ(e.methods[0].description, "what it does, in words");
+  EXPECT_THROW(parse_experiment_text("name d\nmesh bump-48 levels=1\nmethod lhf-2 "
+                                     "description=\"x\"\npanel p \"p\" H L2\n",
+                                     "d.exp"),
+               InputError);
+}
+
+// The run goes on without the method: one message, no rows, skipped.csv and REPORT.md say why;
+// the skipped cases are not stored, so once the command can run a rerun computes them and the
+// skip notes go away.
+TEST(External, SkippedMethodLeavesTheRunGoingAndSaysWhy) {
+  const fs::path dir = fresh_dir("external_skip");
+  fs::create_directories(dir / "none");
+  const fs::path flag = dir / "available";
+  const std::string command = "test -f " + flag.string() +
+                              " || { echo 'libfoo is missing, install it' >&2; exit 77; }; " +
+                              kShEstimator;
+  std::ofstream(dir / "skip.exp")
+      << "name skip\nmesh bump-48 levels=1,2\nmesh torus-structured levels=1\n"
+         "method external name=gone command=\""
+      << command << "\" description=\"a test estimator\"\nmethod lhf-2\npanel p \"p\" H L2\n";
+  const fs::path out = dir / "out";
+  const std::string run = "'" + kBinary + "' run '" + (dir / "skip.exp").string() +
+                          "' --experiments-dir '" + (dir / "none").string() +
+                          "' --threads 1 --table4-max 16 --no-plots --output '" + out.string() +
+                          "'";
+  auto count = [](const std::string& text, const std::string& what) {
+    int n = 0;
+    for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+  };
+  auto r = sh(run);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  // Once per run, although three cases skip.
+  EXPECT_EQ(count(r.output, "[run] skipped method gone: libfoo is missing, install it\n"), 1)
+      << r.output;
+  EXPECT_NE(r.output.find("computed 3, skipped 3 (outside estimators that cannot run here)"),
+            std::string::npos)
+      << r.output;
+  auto rows = read_error_csv((out / "skip.csv").string());
+  EXPECT_EQ(rows.size(), 3u);  // lhf-2's only
+  EXPECT_TRUE(std::all_of(rows.begin(), rows.end(),
+                          [](const ErrorRow& row) { return row.method == "LHF-2"; }));
+  const auto skipped = read_skipped_csv((out / "skipped.csv").string());
+  ASSERT_EQ(skipped.size(), 1u);
+  EXPECT_EQ(skipped[0].experiment, "skip");
+  EXPECT_EQ(skipped[0].method, "gone");
+  EXPECT_EQ(skipped[0].cases, 3);
+  EXPECT_EQ(skipped[0].reason, "libfoo is missing; install it");  // commas would split the CSV
+  std::string report = sh("cat '" + (out / "REPORT.md").string() + "'").output;
+  EXPECT_NE(report.find("- `gone` (outside estimator): a test estimator"), std::string::npos);
+  EXPECT_NE(report.find("- `gone` was skipped (3 cases): its command cannot run here (libfoo is "
+                        "missing; install it)"),
+            std::string::npos)
+      << report;
+
+  // Not stored: the same run skips them again (and reuses lhf-2's).
+  r = sh(run);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(reused(r.output), 3) << r.output;
+  EXPECT_EQ(count(r.output, "[run] skipped method gone"), 1) << r.output;
+
+  // Now it can run: its cases are computed and the skip notes are gone.
+  std::ofstream(flag) << "yes\n";
+  r = sh(run);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("skipped"), std::string::npos) << r.output;
+  EXPECT_EQ(reused(r.output), 3) << r.output;
+  rows = read_error_csv((out / "skip.csv").string());
+  EXPECT_EQ(std::count_if(rows.begin(), rows.end(),
+                          [](const ErrorRow& row) { return row.method == "gone"; }),
+            3);
+  EXPECT_FALSE(fs::exists(out / "skipped.csv"));
+  report = sh("cat '" + (out / "REPORT.md").string() + "'").output;
+  EXPECT_EQ(report.find("was skipped"), std::string::npos) << report;
+  EXPECT_NE(report.find("- `gone` (outside estimator): a test estimator"), std::string::npos);
 }
 
 }  // namespace
