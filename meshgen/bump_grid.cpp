@@ -56,11 +56,12 @@ GeneratedMesh bump_48(int level) {
       }
     }
   }
-  return lift_onto_bump(xy, std::move(F), "bump-48", level,
-                        "bump-48 level " + std::to_string(level) +
-                            ": Gaussian bump a=81/16 on [0,1]^2, 4-8 mesh (docs/algorithms.md 10.2), "
-                            "N=" +
-                            std::to_string(N));
+  return lift_onto_bump(
+      xy, std::move(F), "bump-48", level,
+      "bump-48 level " + std::to_string(level) +
+          ": Gaussian bump a=81/16 on [0,1]^2, 4-8 mesh (docs/algorithms.md 10.2), "
+          "N=" +
+          std::to_string(N));
 }
 
 }  // namespace curvbench

@@ -23,6 +23,7 @@
 #include <unordered_map>
 
 #include "core/errors.h"
+#include "meshgen/generation_cache.h"
 #include "surfaces/torus.h"
 
 namespace curvbench {
@@ -169,13 +170,7 @@ GeneratedMesh torus_unstructured(int level, std::uint64_t seed) {
     throw UsageError("torus-unstructured: level " + std::to_string(level) + " out of range [1, " +
                      std::to_string(kMaxLevel) + "]");
   // Meshing level 4 takes tens of seconds: each (level, seed) is generated once per process.
-  static std::mutex mutex;
-  static std::map<std::pair<int, std::uint64_t>, GeneratedMesh> cache;
-  std::lock_guard<std::mutex> lock(mutex);
-  const auto key = std::make_pair(level, seed);
-  auto it = cache.find(key);
-  if (it == cache.end()) it = cache.emplace(key, generate(level, seed)).first;
-  return it->second;
+  return generate_once("torus-unstructured", level, seed, generate);
 }
 
 }  // namespace curvbench

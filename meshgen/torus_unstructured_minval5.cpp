@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "meshgen/generation_cache.h"
 #include "meshgen/torus_unstructured.h"
 
 namespace curvbench {
@@ -315,13 +316,7 @@ GeneratedMesh torus_unstructured_minval5(int level, std::uint64_t seed) {
   if (level < 1 || level > torus_unstructured_max_level())
     throw UsageError("torus-unstructured-minval5: level " + std::to_string(level) +
                      " out of range [1, " + std::to_string(torus_unstructured_max_level()) + "]");
-  static std::mutex mutex;
-  static std::map<std::pair<int, std::uint64_t>, GeneratedMesh> cache;
-  std::lock_guard<std::mutex> lock(mutex);
-  const auto key = std::make_pair(level, seed);
-  auto it = cache.find(key);
-  if (it == cache.end()) it = cache.emplace(key, generate(level, seed)).first;
-  return it->second;
+  return generate_once("torus-unstructured-minval5", level, seed, generate);
 }
 
 }  // namespace curvbench

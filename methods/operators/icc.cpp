@@ -69,6 +69,7 @@
 
 #include "core/huge_pages.h"
 #include "methods/local_frame.h"
+#include "methods/operators/face_ball.h"
 #include "methods/operators/operator_estimator.h"
 #include "methods/vertex_result.h"
 
@@ -101,15 +102,6 @@ Curvature icc_curvature(const IccMeasures& s, const Vec3& n) {
 
 namespace {
 
-struct IccBallWorkspace final : Workspace {
-  explicit IccBallWorkspace(const Mesh& mesh) : stamp(static_cast<size_t>(mesh.num_faces()), 0) {
-    queue.reserve(256);
-  }
-  std::vector<std::uint32_t> stamp;
-  std::uint32_t current = 0;
-  std::vector<int> queue;
-};
-
 /// Per-mesh data: the measures of every face (an m-vector, m = number of faces).
 struct IccData final : OperatorMeshData {
   std::vector<IccMeasures> faces;
@@ -138,7 +130,7 @@ class IccEstimator final : public OperatorEstimator {
   std::string display_name() const override { return "ICC"; }
 
   std::unique_ptr<Workspace> make_workspace(const Mesh& mesh) const override {
-    if (options_.ball_factor > 0.0) return std::make_unique<IccBallWorkspace>(mesh);
+    if (options_.ball_factor > 0.0) return std::make_unique<FaceBallWorkspace>(mesh);
     return std::make_unique<Workspace>();
   }
 
@@ -180,28 +172,16 @@ class IccEstimator final : public OperatorEstimator {
       for (int f : faces) sum.add(data.faces[static_cast<size_t>(f)]);
       used = static_cast<int>(faces.size());
     } else {
-      auto& ws = static_cast<IccBallWorkspace&>(base);
+      auto& ws = static_cast<FaceBallWorkspace&>(base);
       const double r = options_.ball_factor * mesh.mean_edge_length();
       const Vec3 c = mesh.position(v);
-      if (++ws.current == 0) {  // stamps wrapped: clear
-        std::fill(ws.stamp.begin(), ws.stamp.end(), 0);
-        ws.current = 1;
-      }
-      ws.queue.assign(faces.begin(), faces.end());
-      for (int f : faces) ws.stamp[static_cast<size_t>(f)] = ws.current;
-      for (size_t q = 0; q < ws.queue.size(); ++q) {
-        const int f = ws.queue[q];
+      walk_face_ball(faces, ws, [&](int f, auto&& enqueue) {
         const double w = fraction_in_ball(mesh, f, c, r);
-        if (!(w > 0.0)) continue;
+        if (!(w > 0.0)) return;
         sum.add(data.faces[static_cast<size_t>(f)], w);
         ++used;
-        for (int k = 0; k < 3; ++k) {
-          const int g = mesh.face_neighbor(f, k);
-          if (g < 0 || ws.stamp[static_cast<size_t>(g)] == ws.current) continue;
-          ws.stamp[static_cast<size_t>(g)] = ws.current;
-          ws.queue.push_back(g);
-        }
-      }
+        for (int k = 0; k < 3; ++k) enqueue(mesh.face_neighbor(f, k));
+      });
     }
     const Curvature cv = icc_curvature(sum, data.normal(ctx, v));
     if (!set_operator_quantities(cv, computes(), used, ring, out)) set_failed(ring, used, out);

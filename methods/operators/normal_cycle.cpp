@@ -42,6 +42,7 @@
 #include "core/shape_operator.h"
 #include "core/text.h"
 #include "methods/local_frame.h"
+#include "methods/operators/face_ball.h"
 #include "methods/operators/face_geometry.h"
 #include "methods/operators/operator_estimator.h"
 #include "methods/vertex_result.h"
@@ -49,15 +50,6 @@
 namespace curvbench {
 
 namespace {
-
-struct BallWorkspace final : Workspace {
-  explicit BallWorkspace(const Mesh& mesh) : stamp(static_cast<size_t>(mesh.num_faces()), 0) {
-    queue.reserve(256);
-  }
-  std::vector<std::uint32_t> stamp;
-  std::uint32_t current = 0;
-  std::vector<int> queue;
-};
 
 /// Per-mesh data: the signed dihedral angle of every face edge, computed once per mesh (each
 /// interior edge is visited from 2 faces at each of 4 vertices by estimate()).
@@ -109,7 +101,7 @@ class NormalCycleEstimator final : public OperatorEstimator {
   bool scores_interior_only() const override { return true; }
 
   std::unique_ptr<Workspace> make_workspace(const Mesh& mesh) const override {
-    if (options_.ball_factor > 0.0) return std::make_unique<BallWorkspace>(mesh);
+    if (options_.ball_factor > 0.0) return std::make_unique<FaceBallWorkspace>(mesh);
     return std::make_unique<Workspace>();
   }
 
@@ -207,18 +199,11 @@ class NormalCycleEstimator final : public OperatorEstimator {
             len2_12);
       }
     } else {
-      auto& ws = static_cast<BallWorkspace&>(base);
+      auto& ws = static_cast<FaceBallWorkspace&>(base);
       const double r = options_.ball_factor * mesh.mean_edge_length();
       area = std::numbers::pi * r * r;
       const Vec3 c = mesh.position(v);
-      if (++ws.current == 0) {  // stamps wrapped: clear
-        std::fill(ws.stamp.begin(), ws.stamp.end(), 0);
-        ws.current = 1;
-      }
-      ws.queue.assign(faces.begin(), faces.end());
-      for (int f : faces) ws.stamp[static_cast<size_t>(f)] = ws.current;
-      for (size_t q = 0; q < ws.queue.size(); ++q) {
-        const int f = ws.queue[q];
+      walk_face_ball(faces, ws, [&](int f, auto&& enqueue) {
         for (int k = 0; k < 3; ++k) {
           const Vec3 a = mesh.position(mesh.face_vertex(f, k));
           const Vec3 b = mesh.position(mesh.face_vertex(f, (k + 1) % 3));
@@ -231,12 +216,9 @@ class NormalCycleEstimator final : public OperatorEstimator {
           }
           if (f < g)
             add(b - a, data.beta[3 * static_cast<size_t>(f) + k], inside, (b - a).squaredNorm());
-          if (ws.stamp[static_cast<size_t>(g)] != ws.current) {
-            ws.stamp[static_cast<size_t>(g)] = ws.current;
-            ws.queue.push_back(g);
-          }
+          enqueue(g);
         }
-      }
+      });
     }
     const double ring = options_.ball_factor > 0.0 ? 0.0 : 1.0;
     if (boundary) {

@@ -11,21 +11,15 @@
 #include "harness/paper_tables.h"
 #include "meshgen/generate.h"
 #include "meshgen/torus_unstructured.h"
+#include "torus_test_util.h"
 
 namespace curvbench {
 namespace {
 
-constexpr double kR = 1.0, kr = 0.3;
-
-double torus_distance(const Vec3& p) {
-  const double rho = std::hypot(p.x(), p.y());
-  return std::abs(std::hypot(rho - kR, p.z()) - kr);
-}
+using testing::torus_distance;
 
 Vec3 outward(const Vec3& p) {
-  const double rho = std::hypot(p.x(), p.y());
-  const Vec3 c(kR * p.x() / rho, kR * p.y() / rho, 0.0);
-  return (p - c).normalized();
+  return testing::torus_outward(p);
 }
 
 class TorusUnstructured : public ::testing::TestWithParam<int> {};

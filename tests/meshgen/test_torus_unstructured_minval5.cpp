@@ -16,21 +16,15 @@
 #include "meshgen/generate.h"
 #include "meshgen/torus_unstructured.h"
 #include "meshgen/torus_unstructured_minval5.h"
+#include "torus_test_util.h"
 
 namespace curvbench {
 namespace {
 
-constexpr double kR = 1.0, kr = 0.3;
-
-double torus_distance(const Vec3& p) {
-  const double rho = std::hypot(p.x(), p.y());
-  return std::abs(std::hypot(rho - kR, p.z()) - kr);
-}
+using testing::torus_distance;
 
 Vec3 outward(const Vec3& p) {
-  const double rho = std::hypot(p.x(), p.y());
-  const Vec3 c(kR * p.x() / rho, kR * p.y() / rho, 0.0);
-  return (p - c).normalized();
+  return testing::torus_outward(p);
 }
 
 class TorusUnstructuredMinval5 : public ::testing::TestWithParam<int> {};
@@ -90,7 +84,7 @@ TEST_P(TorusUnstructuredMinval5, NoLowValenceWellShapedOnTheTorusPaperCounts) {
   for (int v = 0; v < m.num_vertices(); v += 97) {
     const SurfacePoint s = g.surface->evaluate(g.exact_points.row(v).transpose());
     EXPECT_NEAR(s.normal.dot(outward(m.position(v))), 1.0, 1e-12);
-    EXPECT_DOUBLE_EQ(s.k2, -1.0 / kr);
+    EXPECT_DOUBLE_EQ(s.k2, -1.0 / testing::kTorusr);
   }
 }
 
