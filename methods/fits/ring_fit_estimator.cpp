@@ -201,7 +201,7 @@ void RingFitEstimator::estimate(const MeshContext& ctx, int v, Workspace& base,
   const LocalFrame frame = make_local_frame(m0);
   const int d = options_.degree;
   const int min_nb = min_neighbours(d);
-  const bool safeguard = use_normal_safeguard();
+  bool safeguard = use_normal_safeguard();
   // The fit with the rank-failure rule, on the method's parameterization or (project) on the
   // orthogonal projection onto the frame plane (LOP's: the base class's parameterize()).
   const auto fit_with_growth = [&](bool project, FitResult& fit, bool& fit_partial,
@@ -239,7 +239,15 @@ void RingFitEstimator::estimate(const MeshContext& ctx, int v, Workspace& base,
   FitResult fit;
   bool fit_partial = false;
   double fit_ring = 0.0;
-  if (!fit_with_growth(false, fit, fit_partial, fit_ring)) {
+  bool fitted = fit_with_growth(false, fit, fit_partial, fit_ring);
+  if (!fitted && safeguard) {
+    // The normal safeguard left no plane (e.g. the bottom vertex of an open octahedron, whose
+    // neighbours' normals all turn away, the rest of the points on a line): the points without
+    // it, as the safeguard's degree reduction intends (at least the normal, degree_reduced).
+    safeguard = false;
+    fitted = fit_with_growth(false, fit, fit_partial, fit_ring);
+  }
+  if (!fitted) {
     set_failed(fit_ring, fit.rows, out);
     return;
   }

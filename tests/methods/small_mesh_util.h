@@ -79,9 +79,25 @@ inline Mesh tetrahedron() {
 /// The regular octahedron, outward faces.
 inline Mesh octahedron() {
   return mesh_of({{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}},
-                 {{{0, 2, 4}}, {{2, 1, 4}}, {{1, 3, 4}}, {{3, 0, 4}}, {{2, 0, 5}}, {{1, 2, 5}},
-                  {{3, 1, 5}}, {{0, 3, 5}}},
+                 {{{0, 2, 4}},
+                  {{2, 1, 4}},
+                  {{1, 3, 4}},
+                  {{3, 0, 4}},
+                  {{2, 0, 5}},
+                  {{1, 2, 5}},
+                  {{3, 1, 5}},
+                  {{0, 3, 5}}},
                  "octahedron");
+}
+
+/// An octahedron (apexes 0 and 5 on the y axis, the square 1-2-3-4 at y = 0) without two of the
+/// faces at apex 5: vertex 5 keeps the faces 1-5-2 and 3-2-5, and its neighbours' normals turn
+/// more than 90 degrees from its own. The mesh of Debian's CGAL data file hedra_open.off.
+inline Mesh open_octahedron() {
+  const double a = 1.686, b = 1.192;
+  return mesh_of({{0, a, 0}, {b, 0, -b}, {-b, 0, -b}, {-b, 0, b}, {b, 0, b}, {0, -a, 0}},
+                 {{{0, 4, 1}}, {{1, 5, 2}}, {{2, 3, 0}}, {{1, 2, 0}}, {{3, 4, 0}}, {{3, 2, 5}}},
+                 "open octahedron");
 }
 
 /// `big` with a tetrahedron of edge ~0.1 beside it (a second, four-vertex component; its
@@ -96,8 +112,8 @@ inline Mesh with_tiny_tetrahedron(const Mesh& big) {
   const int base = static_cast<int>(P.size());
   for (int v = 0; v < 4; ++v) P.push_back(Vec3(5.0, 0.0, 0.0) + 0.05 * tet.position(v));
   for (int f = 0; f < 4; ++f)
-    T.push_back({base + tet.face_vertex(f, 0), base + tet.face_vertex(f, 1),
-                 base + tet.face_vertex(f, 2)});
+    T.push_back(
+        {base + tet.face_vertex(f, 0), base + tet.face_vertex(f, 1), base + tet.face_vertex(f, 2)});
   return mesh_of(P, T, "sphere-and-tetrahedron");
 }
 

@@ -110,6 +110,22 @@ TEST(SmallMeshes, EveryMethodGivesTheNormalOrFailsOnlyWhereItHasNoTangentPlane) 
   }
 }
 
+// Where the normal safeguard leaves no plane (the bottom vertex of an open octahedron: its
+// neighbours' normals turn away and the remaining points lie on a line), the height fits refit
+// without it: a unit normal, degree 1, not a failed vertex.
+TEST(SmallMeshes, HeightFitsGiveTheNormalWhereTheSafeguardLeavesNoPlane) {
+  const Mesh mesh = testing::open_octahedron();
+  for (const char* method : {"lhf", "lop"}) {
+    const auto res = estimate_mesh(mesh, *make_estimator(method, {}));
+    for (int v = 0; v < mesh.num_vertices(); ++v) {
+      const VertexEstimate& q = res[static_cast<size_t>(v)];
+      EXPECT_NE(q.status, VertexStatus::failed) << method << " " << v;
+      EXPECT_NEAR(q.normal.norm(), 1.0, 1e-12) << method << " " << v;
+    }
+    EXPECT_EQ(res[5].degree, 1) << method;
+  }
+}
+
 TEST(SmallMeshes, OnlyTheTinyComponentFailsAndItsCauseIsTheComponent) {
   const Mesh mesh = testing::with_tiny_tetrahedron(testing::icosphere(2, 1.0));
   const std::vector<VertexDefect> defects = vertex_defects(mesh);
