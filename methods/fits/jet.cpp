@@ -10,7 +10,8 @@
 //     status degree_reduced, as the ring fits' safeguard). Where the points of a whole small
 //     component single out no plane (kFlatPca; a tetrahedron, an octahedron), CGAL's frame is
 //     arbitrary and a normal it gives far from the mesh's is meaningless: degree 1 on the vertex
-//     and its 1-ring instead, failed if that has no plane either.
+//     and its 1-ring instead; if that has no plane either (a regular tetrahedron), the vertex
+//     normal m0 alone, status partial (failed only without one: an isolated vertex).
 //   points: the centre first (CGAL's origin), then the neighbours in discovery order; CGAL does
 //     its own PCA frame, preconditioning and unweighted SVD least squares (no eq. 15 weights, no
 //     safeguard, no rank-failure rule, no 128-point cap).
@@ -102,7 +103,7 @@ class JetEstimator final : public Estimator {
     int d = options_.degree;
     while (d >= 1 && 1 + static_cast<int>(ws.rings.neighbours().size()) < num_coefficients(d)) --d;
     if (d < 1) {
-      set_failed(ws.rings.ring(), 1 + static_cast<int>(ws.rings.neighbours().size()), out);
+      set_normal_only(m0, 1 + static_cast<int>(ws.rings.neighbours().size()), ws.rings.ring(), out);
       return;
     }
     const Fit first = fit(ctx, v, m0, ws, d, out);
@@ -123,7 +124,9 @@ class JetEstimator final : public Estimator {
       ws.rings.collect_integer(v, 1);
       if (1 + ws.rings.neighbours().size() >= 3 && fit(ctx, v, m0, ws, 1, out) == Fit::done) return;
     }
-    set_failed(ws.rings.ring(), 1 + static_cast<int>(ws.rings.neighbours().size()), out);
+    // No jet at all: the vertex normal the jet would have been oriented by, alone (status
+    // partial, as the operators do where their fits are singular; failed without one).
+    set_normal_only(m0, 1 + static_cast<int>(ws.rings.neighbours().size()), ws.rings.ring(), out);
   }
 
  private:
