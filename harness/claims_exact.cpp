@@ -109,46 +109,43 @@ void claim_a3(const Data& d, Check& c) {
          join(paperinf, ", ") + ")");
 }
 
-void claim_a4(const Data& d, Check& c, double tolerance) {
+// Calls f(n, true mean edge length, paper column) for each of Table 4's rows present.
+template <class F>
+void for_each_table4_edge(const Data& d, Check& c, F&& f) {
   if (!have_table4(d, c)) return;
   const size_t ch = d.table4->col("mean_edge_length");
-  for (const auto& row4 : paper::kTable4) {
-    const double paper = row4.edge_column;
-    const int row = table4_row(d, c, row4.grid_points);
-    if (row < 0) continue;
-    const double h = d.table4->number(row, ch), ratio = h / paper;
+  for (const auto& row4 : paper::kTable4)
+    if (const int row = table4_row(d, c, row4.grid_points); row >= 0)
+      f(row4.grid_points, d.table4->number(row, ch), row4.edge_column);
+}
+
+void claim_a4(const Data& d, Check& c, double tolerance) {
+  for_each_table4_edge(d, c, [&](int n, double h, double paper) {
+    const double ratio = h / paper;
     c.require(std::abs(ratio - 2.0) <= tolerance,
-              "n = " + std::to_string(row4.grid_points) + ": true mean edge length " + g3(h) +
-                  " / paper column " + g3(paper) + " = " + f2(ratio) + " (band 2.00 +- " +
-                  f2(tolerance) + ")");
+              "n = " + std::to_string(n) + ": true mean edge length " + g3(h) + " / paper column " +
+                  g3(paper) + " = " + f2(ratio) + " (band 2.00 +- " + f2(tolerance) + ")");
     // Context, not part of the band: the column has 2 significant digits, so its rounding
     // alone moves the ratio by up to 0.5 unit / value (4.5% at 0.011).
     const double unit = last_digit_unit(paper, 2);
-    c.info("n = " + std::to_string(row4.grid_points) + ": half the mean edge length " +
-           g3(0.5 * h) + " rounds to " + g3(std::round(0.5 * h / unit) * unit) +
-           " at the paper's 2 digits "
-           "(paper " +
-           g3(paper) + "; rounding of the column alone allows the ratio 2 +- " +
-           f2(2.0 * 0.5 * unit / paper) + ")");
-  }
+    c.info("n = " + std::to_string(n) + ": half the mean edge length " + g3(0.5 * h) +
+           " rounds to " + g3(std::round(0.5 * h / unit) * unit) +
+           " at the paper's 2 digits (paper " + g3(paper) +
+           "; rounding of the column alone allows the ratio 2 +- " + f2(2.0 * 0.5 * unit / paper) +
+           ")");
+  });
 }
 
 // A4 at the paper's printed precision: half the true mean edge length rounds to the column.
 void claim_a4_rounded(const Data& d, Check& c) {
-  if (!have_table4(d, c)) return;
-  const size_t ch = d.table4->col("mean_edge_length");
-  for (const auto& row4 : paper::kTable4) {
-    const double paper = row4.edge_column;
-    const int row = table4_row(d, c, row4.grid_points);
-    if (row < 0) continue;
-    const double half = 0.5 * d.table4->number(row, ch);
+  for_each_table4_edge(d, c, [&](int n, double h, double paper) {
     const double unit = last_digit_unit(paper, 2);
-    const double rounded = std::round(half / unit) * unit;
+    const double rounded = std::round(0.5 * h / unit) * unit;
     c.require(std::abs(rounded - paper) < 0.5 * unit,
-              "n = " + std::to_string(row4.grid_points) + ": half the true mean edge length " +
-                  g3(half) + " rounds to " + g3(rounded) + " at 2 significant digits (paper " +
-                  g3(paper) + ")");
-  }
+              "n = " + std::to_string(n) + ": half the true mean edge length " + g3(0.5 * h) +
+                  " rounds to " + g3(rounded) + " at 2 significant digits (paper " + g3(paper) +
+                  ")");
+  });
 }
 
 // Errors below this are roundoff (e.g. principal directions on a perfectly symmetric mesh, ~1e-16)
