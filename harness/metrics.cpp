@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/errors.h"
+#include "mesh/mesh_checks.h"
 
 namespace curvbench {
 
@@ -154,20 +155,10 @@ VertexSet parse_vertex_set(const std::string& s) {
 std::vector<int> select_vertices(const Mesh& mesh, VertexSet set) {
   const int n = mesh.num_vertices();
   std::vector<char> in(n, 0);
-  std::vector<int> valence;
-  if (set == VertexSet::valence_4_or_less || set == VertexSet::valence_5_or_more) {
-    std::vector<std::vector<int>> nbrs(static_cast<size_t>(n));
-    for (int f = 0; f < mesh.num_faces(); ++f)
-      for (int k = 0; k < 3; ++k) {
-        const int a = mesh.face_vertex(f, k), b = mesh.face_vertex(f, (k + 1) % 3);
-        nbrs[static_cast<size_t>(a)].push_back(b);
-        nbrs[static_cast<size_t>(b)].push_back(a);
-      }
-    for (auto& nb : nbrs) {
-      std::sort(nb.begin(), nb.end());
-      valence.push_back(static_cast<int>(std::unique(nb.begin(), nb.end()) - nb.begin()));
-    }
-  }
+  const std::vector<int> valence =
+      set == VertexSet::valence_4_or_less || set == VertexSet::valence_5_or_more
+          ? vertex_valences(mesh)
+          : std::vector<int>{};
   for (int v = 0; v < n; ++v) {
     switch (set) {
       case VertexSet::all:

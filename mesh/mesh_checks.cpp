@@ -138,7 +138,7 @@ int count_nonmanifold_vertices(const Mesh& mesh) {
   return static_cast<int>(std::count(flags.begin(), flags.end(), 1));
 }
 
-std::vector<int> valence_histogram(const Mesh& mesh) {
+std::vector<int> vertex_valences(const Mesh& mesh) {
   // Each undirected edge once, as (smaller, larger) vertex: its endpoints each gain a neighbour.
   std::vector<std::pair<int, int>> edges;
   edges.reserve(static_cast<size_t>(3 * mesh.num_faces()));
@@ -154,8 +154,12 @@ std::vector<int> valence_histogram(const Mesh& mesh) {
     ++valence[static_cast<size_t>(a)];
     ++valence[static_cast<size_t>(b)];
   }
+  return valence;
+}
+
+std::vector<int> valence_histogram(const Mesh& mesh) {
   std::vector<int> histogram;
-  for (const int v : valence) {
+  for (const int v : vertex_valences(mesh)) {
     if (static_cast<size_t>(v) >= histogram.size()) histogram.resize(static_cast<size_t>(v) + 1, 0);
     ++histogram[static_cast<size_t>(v)];
   }

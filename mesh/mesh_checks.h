@@ -49,6 +49,9 @@ int count_components(const Mesh& mesh);
 /// boundary loops on a manifold mesh; boundary loops touching at a vertex count once.
 int count_boundary_loops(const Mesh& mesh);
 
+/// The valence of every vertex (n entries): its number of distinct edge neighbours. O(m log m).
+std::vector<int> vertex_valences(const Mesh& mesh);
+
 /// Valence histogram: entry k is the number of vertices with exactly k distinct edge neighbours
 /// (the valence of meshgen's mesh_quality; isolated vertices count at 0, boundary vertices too).
 /// The vector ends at the largest valence (size max valence + 1; empty for a mesh without
