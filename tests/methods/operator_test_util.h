@@ -18,6 +18,13 @@
 
 namespace curvbench::testing {
 
+/// Options with the ball of radius c times the mean edge length (normal cycle, ICC).
+inline EstimatorOptions ball(double c) {
+  EstimatorOptions o;
+  o.ball_factor = c;
+  return o;
+}
+
 /// Max errors on an icosphere of radius a (exact: k1 = k2 = H = -1/a, K = 1/a^2, outward n).
 struct SphereErrors {
   double h = 0.0;  ///< mean edge length

@@ -18,12 +18,6 @@ namespace {
 
 using namespace testing;
 
-EstimatorOptions ball(double c) {
-  EstimatorOptions o;
-  o.ball_factor = c;
-  return o;
-}
-
 // The measures of vertex v's faces with the corner normals u (n x 3), and its curvatures.
 Curvature one_ring(const Mesh& mesh, const VertexMatrix& u, int v) {
   IccMeasures s;

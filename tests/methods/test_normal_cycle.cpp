@@ -16,12 +16,6 @@ namespace {
 
 using namespace testing;
 
-EstimatorOptions ball(double c) {
-  EstimatorOptions o;
-  o.ball_factor = c;
-  return o;
-}
-
 TEST(NormalCycle, RegistryOptionsAndLabel) {
   EXPECT_EQ(make_estimator("normal-cycle", {})->label(), "Normal-cycle");
   EXPECT_THROW(make_estimator("normal-cycle-2", {}), UsageError);
