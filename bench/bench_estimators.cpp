@@ -35,6 +35,7 @@
 #include "harness/paper_tables.h"
 #include "meshgen/generate.h"
 #include "methods/estimator.h"
+#include "methods/fits/ring_fit_estimator.h"
 #include "mesh/neighbourhood_table.h"
 
 // GCC 12 reports a false -Wrestrict in std::string operator+ (const char*, string&&) at -O3
@@ -63,13 +64,25 @@ struct MethodSpec {
   /// Neighbourhoods from a table built once per mesh before timing (NeighbourhoodCache, as the
   /// experiment runner sweeps methods and degrees on one mesh); rows labelled "... cached".
   bool cached = false;
+  /// LHF only: the whole estimator with this solver instead of the safeguarded QR (claim F7's
+  /// whole-estimator comparison); rows labelled "LHF-2 whole, SVD (Jacobi)".
+  std::optional<LsqSolver> solver = std::nullopt;
 };
 
 // The row label: the estimator's, plus " scalar" for the scalar fitting kernel and " cached"
 // for neighbourhoods from a prebuilt table.
-std::string row_label(const Estimator& est, bool cached) {
+std::string row_label(const Estimator& est, bool cached,
+                      std::optional<LsqSolver> solver = std::nullopt) {
+  if (solver) return est.label() + " whole, SVD (Jacobi)";
   return est.label() + (est.options().kernel == Kernel::scalar ? " scalar" : "") +
          (cached ? " cached" : "");
+}
+
+// The estimator of a row, with its solver replaced where the row asks for one.
+std::unique_ptr<Estimator> make_row_estimator(const MethodSpec& spec, const EstimatorOptions& o) {
+  std::unique_ptr<Estimator> est = make_estimator(spec.name, o);
+  if (spec.solver) dynamic_cast<RingFitEstimator&>(*est).set_solver(*spec.solver);
+  return est;
 }
 
 // The label without spaces, for --benchmark_filter ("LHF-2 scalar" -> "LHF-2_scalar").
@@ -80,7 +93,8 @@ std::string benchmark_name(std::string label) {
 
 // Every registered method at its bench degrees (MethodInfo::bench_degrees; 0: a degree-free
 // operator), one thread, in registry order; then the extra rows: LHF-2 on 2 threads, the scalar
-// kernel of LHF-2, LHF-4 and LOP-2, and LHF-2 and LHF-4 with prebuilt neighbourhoods.
+// kernel of LHF-2, LHF-4 and LOP-2, LHF-2 and LHF-4 with prebuilt neighbourhoods, and LHF-2 with
+// the Jacobi SVD in place of the safeguarded QR.
 std::vector<MethodSpec> methods_to_time() {
   std::vector<MethodSpec> out;
   for (const MethodInfo& m : method_table())
@@ -89,6 +103,7 @@ std::vector<MethodSpec> methods_to_time() {
   for (const auto& [name, degree] : {std::pair{"lhf", 2}, {"lhf", 4}, {"lop", 2}})
     out.push_back({name, degree, 1, false, Kernel::scalar});
   for (int degree : {2, 4}) out.push_back({"lhf", degree, 1, false, Kernel::batched, true});
+  out.push_back({"lhf", 2, 1, false, Kernel::batched, false, LsqSolver::jacobi_svd});
   return out;
 }
 
@@ -111,13 +126,13 @@ void BM_Estimate(benchmark::State& state, const MethodSpec spec) {
   o.degree = spec.degree;
   o.threads = spec.threads;
   o.kernel = spec.kernel;
-  const std::unique_ptr<Estimator> est = make_estimator(spec.name, o);
+  const std::unique_ptr<Estimator> est = make_row_estimator(spec, o);
   Sample& s = (spec.scaling ? g_scaling : g_log)
                   .get({family_of(level),
                         level,
                         mesh.num_vertices(),
                         mesh.num_faces(),
-                        row_label(*est, spec.cached),
+                        row_label(*est, spec.cached, spec.solver),
                         spec.degree,
                         spec.threads,
                         {}});
@@ -153,7 +168,7 @@ void register_all() {
     EstimatorOptions o;
     o.degree = m.degree;
     o.kernel = m.kernel;
-    const std::string label = row_label(*make_estimator(m.name, o), m.cached);
+    const std::string label = row_label(*make_row_estimator(m, o), m.cached, m.solver);
     // Samples in registration order, so the rows keep it when repetitions run interleaved.
     for (int level = 1; level <= kLevels; ++level)
       g_log.get({kFamily,

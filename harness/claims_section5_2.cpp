@@ -1,6 +1,7 @@
 // Claims D1-D6: the noise-free open surface (the bump; paper §5.2, Figs. 9-14), one registry
 // entry each (harness/claims_kit.h; docs/claims.md). Experiments fig09-10 (degree 2), fig11-12
 // (degrees 3, 4) and fig13-14 (boundary vertices).
+#include <algorithm>
 #include <cmath>
 
 #include "harness/claims_kit.h"
@@ -33,6 +34,149 @@ std::string degree_band_text(const Band& offset) {
   return out;
 }
 
+constexpr const char* kInteriorDiag = "diag-d-bump-interior";
+constexpr const char* kLevel5Diag = "diag-d6-level5";
+
+const Series* interior(const Data& d, Check& c, const std::string& family, const std::string& m,
+                       const std::string& q) {
+  return d.find(c, query(kInteriorDiag, family, m, q, "L2", "none", 0.0, "interior"));
+}
+
+const Series* boundary_ring(const Data& d, Check& c, const std::string& family,
+                            const std::string& m, const std::string& q) {
+  return d.find(c, query("fig13-14", family, m, q, "L2", "none", 0.0, "boundary-ring"));
+}
+
+// "a, b, c, d" of the level-by-level ratios a/b, and their maximum.
+std::string ratio_list(const Series& a, const Series& b, double& max_ratio) {
+  std::vector<std::string> values;
+  for (const auto& x : error_ratios(a, b)) {
+    values.push_back(f2(x.value));
+    max_ratio = std::max(max_ratio, x.value);
+  }
+  return join(values, ", ");
+}
+
+// D1's measured cause: the K spread of the degree-2 fits split into the interior vertices
+// (diag-d-bump-interior) and the boundary ring (fig13-14), and the LSCM map's solver.
+std::string why_d1(const Data& d, const Band& band) {
+  std::vector<std::string> parts;
+  bool interior_outside = false, ring_inside = true;
+  for (const auto& fam : kBumps) {
+    Check scratch;
+    const Series* lhf = interior(d, scratch, fam, "LHF-2", "K");
+    const Series* lop = interior(d, scratch, fam, "LOP-2", "K");
+    const Series* lscm = interior(d, scratch, fam, "LSCM-2", "K");
+    const Series* fast = interior(d, scratch, fam, "LSCM-fast-2", "K");
+    const Series* lhf_ring = boundary_ring(d, scratch, fam, "LHF-2", "K");
+    const Series* lscm_ring = boundary_ring(d, scratch, fam, "LSCM-2", "K");
+    if (!lhf || !lop || !lscm || !fast || !lhf_ring || !lscm_ring) return "";
+    double m_in = 0.0, m_ring = 0.0, m_lop = 0.0, m_fast = 0.0;
+    const std::string in = ratio_list(*lscm, *lhf, m_in);
+    const std::string ring = ratio_list(*lscm_ring, *lhf_ring, m_ring);
+    ratio_list(*lop, *lhf, m_lop);
+    ratio_list(*fast, *lscm, m_fast);
+    interior_outside = interior_outside || !band.holds(m_in);
+    ring_inside = ring_inside && band.holds(m_ring);
+    parts.push_back(fam + ": interior " + in + ", boundary ring " + ring +
+                    " (LOP-2 / LHF-2 interior at most " + f2(m_lop) +
+                    ", LSCM-fast-2 / LSCM-2 at most " + f2(m_fast) + ")");
+  }
+  const std::string numbers =
+      "diagnostic diag-d-bump-interior (REPORT.md), K L2 of LSCM-2 / LHF-2 at levels 1-4: " +
+      join(parts, "; ");
+  if (!(interior_outside && ring_inside)) return "tried " + numbers;
+  return "the LSCM map on the interior: " + numbers +
+         ". The three fits agree on the boundary ring; the spread is LSCM-2's Gaussian curvature "
+         "at the interior vertices, the same with the fast solve of the same map, so it comes "
+         "from the conformal parameterization, not from the solver or the boundary";
+}
+
+// D2's measured cause: the degree-2 H rates over the interior (diag-d-bump-interior), over the
+// boundary ring (fig13-14) and over all vertices (fig09-10), against the tori's: how much the
+// boundary lowers each bump's rate, and where the interior itself sets it.
+std::string why_d2(const Data& d, const std::vector<std::string>& tori, double gap) {
+  std::vector<std::string> parts;
+  for (const auto& fam : kBumps) {
+    Check scratch;
+    const Series* in = interior(d, scratch, fam, "LHF-2", "H");
+    const Series* ring = boundary_ring(d, scratch, fam, "LHF-2", "H");
+    const Series* all = bump(d, scratch, fam, "LHF-2", "H", "L2");
+    if (!in || !ring || !all) return "";
+    const double loss = in->rate() - all->rate();
+    parts.push_back(
+        fam + ": interior " + f2(in->rate()) + ", boundary ring " + f2(ring->rate()) +
+        ", all vertices " + f2(all->rate()) +
+        (loss >= gap ? " (the boundary lowers the rate by " + f2(loss) + ", as the paper says)"
+                     : " (the interior converges no faster than the boundary ring: its irregular "
+                       "stencils, not the boundary, set the rate)"));
+  }
+  std::vector<std::string> torus_rates;
+  for (const auto& tor : tori) {
+    Check scratch;
+    if (const Series* t = torus2(d, scratch, tor, "LHF-2", "H", "L2"))
+      torus_rates.push_back(tor + " " + f2(t->rate()));
+  }
+  return "the rates split by vertex set (diagnostic diag-d-bump-interior, REPORT.md), LHF-2 H "
+         "L2: " +
+         join(parts, "; ") + "; the tori the bump is compared with converge at " +
+         join(torus_rates, ", ") +
+         ", below the symmetric-stencil rate 2 themselves, so a bump whose interior is as "
+         "symmetric as the 4-8 mesh's ends level with them";
+}
+
+// D5's measured cause: the LHF-4 / LSCM-4 rate gap over the interior (diag-d-bump-interior).
+std::string why_d5(const Data& d, const Band& band) {
+  std::vector<std::string> parts;
+  bool holds_everywhere = true;
+  for (const auto& fam : kBumps) {
+    bool any = false;
+    std::vector<std::string> gaps;
+    for (const char* q : {"normal", "H"}) {
+      Check scratch;
+      const Series* lhf = interior(d, scratch, fam, "LHF-4", q);
+      const Series* lscm = interior(d, scratch, fam, "LSCM-4", q);
+      if (!lhf || !lscm) return "";
+      const double g = lhf->rate() - lscm->rate();
+      any = any || band.holds(g);
+      gaps.push_back(std::string(q) + " " + f2(lhf->rate()) + " - " + f2(lscm->rate()) + " = " +
+                     f2(g));
+    }
+    holds_everywhere = holds_everywhere && any;
+    parts.push_back(fam + ": " + join(gaps, ", "));
+  }
+  return std::string(holds_everywhere ? "the boundary ring: " : "tried ") +
+         "over the interior vertices alone (diagnostic diag-d-bump-interior, REPORT.md), "
+         "rate(LHF-4) - rate(LSCM-4) is " +
+         join(parts, "; ") + " (" + band.text() + " for normals or H" +
+         (holds_everywhere ? ": the claim holds without the boundary ring)" : ": not enough either)");
+}
+
+// D6's measured cause: LHF-4 on the boundary ring one level finer (diag-d6-level5).
+std::string why_d6(const Data& d, const Band& curvature_offset) {
+  const Band band = Band::in(4 + curvature_offset.lo, 4 + curvature_offset.hi, 2);
+  std::vector<std::string> parts;
+  bool all_inside = true;
+  for (const auto& fam : kBumps)
+    for (const char* q : {"H", "K"}) {
+      Check scratch;
+      const Series* s = d.find(
+          scratch, query(kLevel5Diag, fam, "LHF-4", q, "L2", "none", 2.5, "boundary-ring"));
+      if (!s || s->points.size() < 5) return "";
+      all_inside = all_inside && band.holds(s->rate());
+      parts.push_back(fam + " " + q + " rate over levels 1-" + std::to_string(s->last().level) +
+                      " " + f2(s->rate()) + " (" +
+                      s->detail().substr(s->detail().find("level-to-level")) + ")");
+    }
+  return std::string(all_inside ? "the levels: " : "tried ") +
+         "one level finer than the paper's four (diagnostic diag-d6-level5, REPORT.md), LHF-4 "
+         "boundary ring: " +
+         join(parts, "; ") + " (band " + band.text() + ")" +
+         (all_inside ? "; the level-4-to-5 rates approach the theoretical d - 1 = 3, so the "
+                       "rates over levels 1-4 are still pre-asymptotic at the boundary"
+                     : "");
+}
+
 }  // namespace
 
 std::vector<ClaimEntry> section5_2_claims() {
@@ -60,7 +204,8 @@ std::vector<ClaimEntry> section5_2_claims() {
                                                join(methods_of(ss), ", "));
                      }
                  },
-                 {}});
+                 {},
+                 [=](const Data& d) { return why_d1(d, d1); }});
 
   const Band d2_gap = Band::at_least(0.2);
   out.push_back({"D2",
@@ -85,7 +230,8 @@ std::vector<ClaimEntry> section5_2_claims() {
                        }
                      }
                  },
-                 {}});
+                 {},
+                 [=](const Data& d) { return why_d2(d, tori(), d2_gap.lo); }});
 
   out.push_back({"D3",
                  "Xu-2 curvatures fail to converge on the bump",
@@ -158,11 +304,11 @@ std::vector<ClaimEntry> section5_2_claims() {
          }
        },
        {},
-       // Measured cause: the same gap with the LSCM map solved by conjugate gradients
-       // (lscm-cg-4, the solver of C4's Why line), when the experiment ran it.
+       // Measured cause: the gap over the interior vertices (diag-d-bump-interior); also tried:
+       // the LSCM map solved by conjugate gradients (lscm-cg-4, the solver of C4's Why line).
        [=](const Data& d) -> std::string {
          std::vector<std::string> parts;
-         bool holds_everywhere = true;
+         bool cg_holds = true;
          for (const auto& fam : kBumps) {
            bool any = false;
            std::vector<std::string> gaps;
@@ -170,19 +316,25 @@ std::vector<ClaimEntry> section5_2_claims() {
              Check scratch;
              const Series* lhf = bump(d, scratch, fam, "LHF-4", q, "L2");
              const Series* cg = bump(d, scratch, fam, "LSCM-CG-4", q, "L2");
-             if (!lhf || !cg) return "";
+             if (!lhf || !cg) return why_d5(d, d5);
              const double gap = lhf->rate() - cg->rate();
              any = any || d5.holds(gap);
              gaps.push_back(std::string(q) + " " + f2(gap));
            }
-           holds_everywhere = holds_everywhere && any;
+           cg_holds = cg_holds && any;
            parts.push_back(fam + ": " + join(gaps, ", "));
          }
-         return std::string(holds_everywhere ? "the LSCM solver: " : "tried the LSCM solver: ") +
-                "with the map solved by conjugate gradients to 1e-6 (lscm-cg-4), "
-                "rate(LHF-4) - rate(LSCM-CG-4) is " +
-                join(parts, "; ") + " (" + d5.text() + " for normals or H" +
-                (holds_everywhere ? ": the claim holds with that solver)" : ": not enough either)");
+         const std::string cg =
+             "with the map solved by conjugate gradients to 1e-6 (lscm-cg-4), "
+             "rate(LHF-4) - rate(LSCM-CG-4) is " +
+             join(parts, "; ") + " (" + d5.text() + " for normals or H" +
+             (cg_holds ? ": the claim holds with that solver)" : ": not enough either)");
+         if (cg_holds) return "the LSCM solver: " + cg;
+         const std::string interior_part = why_d5(d, d5);
+         if (interior_part.empty()) return "tried the LSCM solver: " + cg;
+         if (interior_part.rfind("tried ", 0) == 0)
+           return "tried the LSCM solver: " + cg + "; " + interior_part.substr(6);
+         return interior_part + "; also tried the LSCM solver: " + cg;
        }});
 
   // Relative to the degree d.
@@ -216,23 +368,28 @@ std::vector<ClaimEntry> section5_2_claims() {
            }
        },
        {},
-       // Tried: how the safeguard's condition test changes the 4-8 boundary stencils of LHF-4
-       // (docs/claims.md, "The safeguard on near-degenerate stencils").
+       // Measured cause: one level finer (diag-d6-level5); also how the safeguard's condition
+       // test changes the 4-8 boundary stencils of LHF-4 (docs/claims.md, "The safeguard on
+       // near-degenerate stencils").
        [=](const Data& d) -> std::string {
          std::vector<std::string> parts;
          for (const char* q : {"normal", "H", "K"}) {
            Check scratch;
-           const Series* s = d.find(
-               scratch, query("fig13-14", kBump48, "LHF-4", q, "L2", "none", 0.0, "boundary-ring"));
+           const Series* s = boundary_ring(d, scratch, kBump48, "LHF-4", q);
            if (!s) return "";
            parts.push_back(std::string(q) + " " +
                            s->detail().substr(s->detail().find("level-to-level")));
          }
-         return "tried the safeguard's condition test on the degree-4 stencils of the 4-8 mesh's "
-                "boundary, which lie on four grid lines (docs/claims.md): with the tolerance fixed "
-                "at 1e-3 it drops their quartic block from level 4 on only, so the bump-48 LHF-4 "
-                "boundary-ring rates mix two stencils (" +
-                join(parts, "; ") + ")";
+         const std::string safeguard =
+             "the safeguard's condition test on the degree-4 stencils of the 4-8 mesh's "
+             "boundary, which lie on four grid lines (docs/claims.md): with the tolerance fixed "
+             "at 1e-3 it drops their quartic block from level 4 on only, so the bump-48 LHF-4 "
+             "boundary-ring rates mix two stencils (" +
+             join(parts, "; ") + ")";
+         const std::string levels = why_d6(d, d6_curvature);
+         if (levels.empty() || levels.rfind("tried ", 0) == 0)
+           return "tried " + safeguard + (levels.empty() ? "" : "; " + levels.substr(6));
+         return levels + "; and on bump-48 " + safeguard;
        }});
   return out;
 }

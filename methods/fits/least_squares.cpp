@@ -85,6 +85,19 @@ int truncated_svd_solve(const FitMatrix& A, const RhsMatrix& B, SvdAlgorithm alg
   return truncated_from(scratch.bdc, B, threshold, relative, X);
 }
 
+int generic_qr_solve(const FitMatrix& A, const RhsMatrix& B, CoeffMatrix& X,
+                     LeastSquaresScratch& scratch) {
+  const Eigen::Index n = A.cols();
+  X.setZero(n, B.cols());
+  if (A.rows() < n) return 0;
+  scratch.householder.compute(Eigen::MatrixXd(A));
+  const auto R = scratch.householder.matrixQR().topLeftCorner(n, n);
+  for (Eigen::Index j = 0; j < n; ++j)
+    if (!(std::abs(R(j, j)) > 0.0)) return 0;
+  X = scratch.householder.solve(Eigen::MatrixXd(B));
+  return static_cast<int>(n);
+}
+
 int normal_equations_eigen_solve(const FitMatrix& A, const RhsMatrix& B, double threshold,
                                  CoeffMatrix& X, LeastSquaresScratch& scratch) {
   const Eigen::Index n = A.cols();

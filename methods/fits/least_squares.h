@@ -1,5 +1,5 @@
 // Column scaling (paper eq. 14) and the comparison least-squares solvers of paper §4.3.1:
-// truncated SVD and Xu's eigen-solve of the normal equations. The default solver, the
+// truncated SVD, Xu's eigen-solve of the normal equations and a generic Householder QR. The default solver, the
 // safeguarded QR of §4.3.2, is in safeguarded_qr.h.
 //
 // Shapes: A is m x n (m rows <= kMaxRows, n columns <= kMaxCols, already row-weighted and
@@ -8,6 +8,7 @@
 #pragma once
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/QR>
 #include <Eigen/SVD>
 
 #include "methods/fits/vandermonde.h"
@@ -36,6 +37,7 @@ struct LeastSquaresScratch {
       Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, kMaxCols, kMaxCols>;
   Eigen::JacobiSVD<FitMatrix> jacobi;
   Eigen::BDCSVD<Eigen::MatrixXd> bdc;
+  Eigen::HouseholderQR<Eigen::MatrixXd> householder;
   Eigen::SelfAdjointEigenSolver<SquareMatrix> eigen;
   SquareMatrix ata;
   CoeffMatrix atb;
@@ -48,6 +50,12 @@ struct LeastSquaresScratch {
 int truncated_svd_solve(const FitMatrix& A, const RhsMatrix& B, SvdAlgorithm algorithm,
                         double threshold, bool relative, CoeffMatrix& X,
                         LeastSquaresScratch& scratch);
+
+/// Least squares by Eigen's general HouseholderQR on a dynamic-size copy of A (no rank or degree
+/// safeguard; allocates). A timing baseline only: the safeguarded QR (safeguarded_qr.h) is the
+/// solver of the fits. Returns n when every |R_jj| > 0, else 0 with X = 0.
+int generic_qr_solve(const FitMatrix& A, const RhsMatrix& B, CoeffMatrix& X,
+                     LeastSquaresScratch& scratch);
 
 /// Xu's solver (paper §4.3.1, docs/algorithms.md §7): eigendecomposition A^T A = U diag(s) U^T,
 /// X = sum over s_i >= threshold of u_i u_i^T A^T B / s_i (absolute threshold on the eigenvalues,

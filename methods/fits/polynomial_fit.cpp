@@ -39,6 +39,8 @@ FitResult fit_polynomial(const RowVector& u, const RowVector& v, const RhsMatrix
     int rank = 0;
     if (settings.solver == LsqSolver::normal_eigen) {
       rank = normal_equations_eigen_solve(A, B, settings.threshold, X, scratch.lsq);
+    } else if (settings.solver == LsqSolver::generic_qr) {
+      rank = generic_qr_solve(A, B, X, scratch.lsq);
     } else {
       const SvdAlgorithm alg =
           settings.solver == LsqSolver::jacobi_svd ? SvdAlgorithm::jacobi : SvdAlgorithm::bdc;

@@ -26,6 +26,8 @@ enum class LsqSolver {
   jacobi_svd,      ///< truncated SVD (Eigen::JacobiSVD)
   bdc_svd,         ///< truncated SVD (Eigen::BDCSVD)
   normal_eigen,    ///< Xu: eigen-solve of A^T A with an absolute eigenvalue threshold
+  generic_qr,      ///< Eigen's general dynamic-size HouseholderQR, no safeguard (a timing
+                   ///< baseline for claim F7: a library QR as the paper's would have been)
 };
 
 struct FitSettings {

@@ -393,8 +393,8 @@ TEST(LeastSquares, QrAndSvdAgreeOnWellConditionedSystems) {
       s.include_constant = ic;
       const FitResult qr = fit_polynomial(u, v, f, w, s, scratch);
       ASSERT_EQ(qr.degree, d);
-      for (LsqSolver solver :
-           {LsqSolver::jacobi_svd, LsqSolver::bdc_svd, LsqSolver::normal_eigen}) {
+      for (LsqSolver solver : {LsqSolver::jacobi_svd, LsqSolver::bdc_svd, LsqSolver::normal_eigen,
+                               LsqSolver::generic_qr}) {
         if (solver == LsqSolver::normal_eigen && d > 4) continue;  // cond^2 too large
         s.solver = solver;
         s.scaling =
@@ -412,6 +412,15 @@ TEST(LeastSquares, QrAndSvdAgreeOnWellConditionedSystems) {
                 << row;
       }
     }
+}
+
+TEST(LeastSquares, GenericQrRefusesFewerRowsThanColumns) {
+  FitMatrix A = FitMatrix::Ones(3, 6);
+  RhsMatrix B = RhsMatrix::Ones(3, 1);
+  CoeffMatrix X;
+  LeastSquaresScratch scratch;
+  EXPECT_EQ(generic_qr_solve(A, B, X, scratch), 0);
+  EXPECT_TRUE((X.array() == 0.0).all());
 }
 
 TEST(LeastSquares, EigenThresholdSolvesUnderdeterminedXuSystem) {
