@@ -178,37 +178,51 @@ PipelineResult run_pipeline(const PipelineOptions& o) {
       skipped.insert(skipped.end(), done.skipped_methods.begin(), done.skipped_methods.end());
       write_skipped_csv(o.output + "/skipped.csv", skipped);
     }
-    if (sharded) {
-      say("[run] shard " + std::to_string(o.shard) + "/" + std::to_string(o.shard_count) +
-          " done; stored in " + store_dir);
-      return result;
-    }
   }
 
-  // The alternative readings: the experiments each changes, in their own folder and case store.
-  if (!o.report_only && o.readings) {
+  // The alternative readings: the experiments each changes, in their own folder and case store
+  // (<store>/readings/<reading>=<choice>). A shard computes its part of each reading's cases too;
+  // --report-only writes each reading's CSVs from that store.
+  if (o.readings) {
     for (const Reading& reading : readings())
       for (size_t i = 1; i < reading.choices.size(); ++i) {
         const ReadingChoice& choice = reading.choices[i];
         const std::vector<Experiment> changed = apply_reading(o.experiments, choice);
         if (changed.empty()) continue;
         const std::string folder = reading_folder(o.output, reading, choice);
+        const std::string reading_store =
+            (fs::path(store_dir) / "readings" / fs::path(folder).filename()).string();
+        fs::create_directories(folder);
+        if (o.report_only) {
+          for (const auto& [name, r] : stored_rows(changed, CaseStore(reading_store), folder))
+            write_error_csv(folder + "/" + name + ".csv", r);
+          say(format("[run] reading %s=%s: wrote %zu CSVs from the case store", reading.id.c_str(),
+                     choice.name.c_str(), changed.size()));
+          continue;
+        }
         say(format("[run] reading %s=%s: %zu experiments, %zu cases", reading.id.c_str(),
                    choice.name.c_str(), changed.size(), expand_cases(changed).size()));
-        fs::create_directories(folder);
         RunOptions ro;
         ro.threads = o.threads;
         ro.message = o.message;
-        ro.store_dir = (fs::path(store_dir) / "readings" / fs::path(folder).filename()).string();
+        ro.store_dir = reading_store;
         ro.force = o.force;
         ro.stop = o.stop;
         ro.progress = o.progress;
-        ro.experiment_done = [folder](const Experiment& e, const std::vector<ErrorRow>& rows) {
-          write_error_csv(folder + "/" + e.name + ".csv", rows);
-        };
+        ro.shard = o.shard;
+        ro.shard_count = o.shard_count;
+        if (!sharded)
+          ro.experiment_done = [folder](const Experiment& e, const std::vector<ErrorRow>& rows) {
+            write_error_csv(folder + "/" + e.name + ".csv", rows);
+          };
         const RunSummary done = run_experiments(changed, ro);
         if (done.interrupted || stop()) return stopped(done.reused + done.computed + done.skipped);
       }
+  }
+  if (sharded) {
+    say("[run] shard " + std::to_string(o.shard) + "/" + std::to_string(o.shard_count) +
+        " done; stored in " + store_dir);
+    return result;
   }
 
   // Rates over every experiment CSV present (all of them, not only the ones just run).

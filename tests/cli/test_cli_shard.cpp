@@ -158,5 +158,43 @@ TEST_F(CliShard, ThreeShardProcessesThenTheReportEqualOneRun) {
   EXPECT_NE(r.output.find(ids.front()), std::string::npos) << r.output;
 }
 
+// The alternative readings (harness/readings.h) are cases too: each shard computes its part of
+// them into the store's readings/ folder, and the report writes their CSVs as one run does.
+TEST_F(CliShard, ShardsComputeTheReadingsToo) {
+  const fs::path dir = root_ / "reading-experiments";
+  fs::create_directories(dir);
+  // torus-unstructured is swapped by the reading well-shaped-torus=min-valence-5.
+  std::ofstream(dir / "well.exp") << "name    well\n"
+                                     "title   \"Reading check\"\n"
+                                     "section 5.1\n"
+                                     "mesh    torus-unstructured levels=1\n"
+                                     "method  lhf-2\n"
+                                     "method  xu-2\n"
+                                     "panel   well-n \"Fig. 0. L2 errors in normals.\" normal L2\n";
+  const std::string common = " --experiments-dir " + dir.string() +
+                             " --table4-max 16 --threads 1 --no-plots";
+  const fs::path single = root_ / "single", sharded = root_ / "sharded", store = root_ / "store";
+  const auto one = run_cli("run well --output " + single.string() + common);
+  ASSERT_EQ(one.exit_code, 0) << one.output;
+  const std::string reading_csv = "readings/well-shaped-torus=min-valence-5/well.csv";
+  ASSERT_TRUE(fs::exists(single / reading_csv)) << one.output;
+  for (int k = 1; k <= 2; ++k) {
+    const auto r = run_cli("run well --cache " + store.string() + " --output " + sharded.string() +
+                           " --shard " + std::to_string(k) + "/2" + common);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_FALSE(fs::exists(sharded / reading_csv)) << "a shard writes only the store";
+  }
+  const auto r = run_cli("run well --report-only --cache " + store.string() + " --output " +
+                         sharded.string() + common);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto want = outputs(single), got = outputs(sharded);
+  for (const char* name : {"well.csv", "CLAIMS.md", "REPORT.md"}) {
+    ASSERT_TRUE(want.count(name) && got.count(name)) << name;
+    EXPECT_TRUE(got.at(name) == want.at(name)) << name << " differs from the single-process run";
+  }
+  ASSERT_TRUE(got.count(reading_csv)) << r.output;
+  EXPECT_TRUE(got.at(reading_csv) == want.at(reading_csv));
+}
+
 }  // namespace
 }  // namespace curvbench
