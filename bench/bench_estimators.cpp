@@ -33,10 +33,10 @@
 
 #include "bench/table5.h"
 #include "harness/paper_tables.h"
+#include "mesh/neighbourhood_table.h"
 #include "meshgen/generate.h"
 #include "methods/estimator.h"
 #include "methods/fits/ring_fit_estimator.h"
-#include "mesh/neighbourhood_table.h"
 
 // GCC 12 reports a false -Wrestrict in std::string operator+ (const char*, string&&) at -O3
 // (GCC bug 105329).

@@ -19,7 +19,8 @@
 // column scaling).
 //
 // Extra flag: --table5_rows=FILE writes the Fit rows ("LHF-2 QR", "LHF-2 SVD (Jacobi)",
-// "LHF-2 SVD (BDC)", "LHF-2 generic QR (Eigen)") in the table5_timing.csv format; bench_estimators merges them.
+// "LHF-2 SVD (BDC)", "LHF-2 generic QR (Eigen)") in the table5_timing.csv format; bench_estimators
+// merges them.
 #include <benchmark/benchmark.h>
 
 #include <array>
@@ -34,11 +35,11 @@
 #include "meshgen/generate.h"
 #include "methods/estimator.h"
 #include "methods/fits/least_squares.h"
-#include "methods/local_frame.h"
 #include "methods/fits/polynomial_fit.h"
 #include "methods/fits/ring_fit_estimator.h"
 #include "methods/fits/safeguarded_qr.h"
 #include "methods/fits/weights.h"
+#include "methods/local_frame.h"
 
 namespace curvbench::bench {
 namespace {

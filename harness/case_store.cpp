@@ -158,6 +158,12 @@ std::string case_id(const RunCase& c) {
          std::to_string(c.level) + "_" + method + "_" + options;
 }
 
+namespace {
+std::string skipped_path(const std::string& case_path) {
+  return case_path.substr(0, case_path.size() - 4) + ".skipped";
+}
+}  // namespace
+
 std::string CaseStore::path(const RunCase& c) const {
   return (fs::path(directory_) / (case_id(c) + ".csv")).string();
 }
@@ -211,6 +217,32 @@ void CaseStore::save(const RunCase& c, const std::vector<ErrorRow>& rows) const 
       error_csv_text(rows, "# " + case_inputs(c) + ";code=" + escaped(version_) + "\n" +
                                kSecondsComment + format_double(seconds));
   write_file_atomic(path(c), first_line(case_hash(c, version_), fnv1a64(rest)) + "\n" + rest);
+  std::error_code ec;
+  fs::remove(skipped_path(path(c)), ec);
+}
+
+void CaseStore::save_skipped(const RunCase& c, const std::string& reason) const {
+  const std::string rest = reason + "\n";
+  write_file_atomic(skipped_path(path(c)),
+                    first_line(case_hash(c, version_), fnv1a64(rest)) + "\n" + rest);
+}
+
+std::optional<std::string> CaseStore::load_skipped(const RunCase& c) const {
+  const std::string p = skipped_path(path(c));
+  std::error_code ec;
+  if (!fs::is_regular_file(p, ec)) return std::nullopt;
+  std::string text;
+  try {
+    text = read_file(p);
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+  const auto nl = text.find('\n');
+  if (nl == std::string::npos || text.empty() || text.back() != '\n') return std::nullopt;
+  const std::string rest = text.substr(nl + 1);
+  if (text.compare(0, nl, first_line(case_hash(c, version_), fnv1a64(rest))) != 0)
+    return std::nullopt;
+  return rest.substr(0, rest.size() - 1);
 }
 
 int CaseStore::prune(const std::vector<RunCase>& cases) const {
@@ -218,6 +250,7 @@ int CaseStore::prune(const std::vector<RunCase>& cases) const {
   for (const auto& c : cases) {
     const fs::path p = path(c);
     keep.insert(p);
+    keep.insert(skipped_path(p.string()));
     folders.insert(p.parent_path());
   }
   int removed = 0;
@@ -226,7 +259,8 @@ int CaseStore::prune(const std::vector<RunCase>& cases) const {
     if (!fs::is_directory(folder, ec)) continue;
     std::vector<fs::path> extra;
     for (const auto& entry : fs::directory_iterator(folder, ec))
-      if (entry.is_regular_file() && entry.path().extension() == ".csv" &&
+      if (entry.is_regular_file() &&
+          (entry.path().extension() == ".csv" || entry.path().extension() == ".skipped") &&
           !keep.count(entry.path()))
         extra.push_back(entry.path());
     for (const auto& p : extra) removed += fs::remove(p, ec) ? 1 : 0;

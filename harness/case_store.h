@@ -73,6 +73,14 @@ class CaseStore {
   /// Stores the rows of case c atomically (replacing a previous file).
   void save(const RunCase& c, const std::vector<ErrorRow>& rows) const;
 
+  /// Records that case c was skipped (an outside estimator that cannot run here, exit 77) with
+  /// its reason, so that --report-only of a sharded study knows it; save() of the case removes
+  /// the record. The runner does not reuse a record: it asks the outside estimator again.
+  void save_skipped(const RunCase& c, const std::string& reason) const;
+
+  /// The reason recorded by save_skipped for case c, or nothing (none, stale or corrupt).
+  std::optional<std::string> load_skipped(const RunCase& c) const;
+
   /// Removes the files in the folders of the experiments of `cases` that belong to none of
   /// `cases` (cases since removed or changed); returns how many.
   int prune(const std::vector<RunCase>& cases) const;

@@ -149,7 +149,8 @@ std::string why_d5(const Data& d, const Band& band) {
          "over the interior vertices alone (diagnostic diag-d-bump-interior, REPORT.md), "
          "rate(LHF-4) - rate(LSCM-4) is " +
          join(parts, "; ") + " (" + band.text() + " for normals or H" +
-         (holds_everywhere ? ": the claim holds without the boundary ring)" : ": not enough either)");
+         (holds_everywhere ? ": the claim holds without the boundary ring)"
+                           : ": not enough either)");
 }
 
 // D6's measured cause: LHF-4 on the boundary ring one level finer (diag-d6-level5).
@@ -160,8 +161,8 @@ std::string why_d6(const Data& d, const Band& curvature_offset) {
   for (const auto& fam : kBumps)
     for (const char* q : {"H", "K"}) {
       Check scratch;
-      const Series* s = d.find(
-          scratch, query(kLevel5Diag, fam, "LHF-4", q, "L2", "none", 2.5, "boundary-ring"));
+      const Series* s =
+          d.find(scratch, query(kLevel5Diag, fam, "LHF-4", q, "L2", "none", 2.5, "boundary-ring"));
       if (!s || s->points.size() < 5) return "";
       all_inside = all_inside && band.holds(s->rate());
       parts.push_back(fam + " " + q + " rate over levels 1-" + std::to_string(s->last().level) +

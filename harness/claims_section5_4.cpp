@@ -116,7 +116,8 @@ std::string why_f7(const Data& d, const Band& speedup) {
          "dynamic-size HouseholderQR, no safeguard: bench_solvers' row \"" +
          kF7GenericQr + "\") is " + g + " times slower at levels 1-4 (" +
          (generic_inside ? "inside" : "outside") + " the band " + speedup.text(-1) +
-         "), against curvbench's fixed-size safeguarded QR " + q + "; "
+         "), against curvbench's fixed-size safeguarded QR " + q +
+         "; "
          "the whole LHF-2 estimator with the Jacobi SVD (\"" +
          kF7WholeSvd + "\") against the default is " + w +
          " times slower (table5_timing.csv, make bench)";

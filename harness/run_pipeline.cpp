@@ -26,11 +26,12 @@ std::string format(const char* fmt, auto... args) {
   return buf;
 }
 
-// Report-only: each experiment's rows from the store. Throws InputError naming the missing cases
-// of an experiment that is partly stored (or not stored and without a CSV).
-std::map<std::string, std::vector<ErrorRow>> stored_rows(const std::vector<Experiment>& experiments,
-                                                         const CaseStore& store,
-                                                         const std::string& output) {
+// Report-only: each experiment's rows from the store, and the cases recorded as skipped (an
+// outside estimator that could not run) in `skipped` if given. Throws InputError naming the
+// missing cases of an experiment that is partly stored (or not stored and without a CSV).
+std::map<std::string, std::vector<ErrorRow>> stored_rows(
+    const std::vector<Experiment>& experiments, const CaseStore& store, const std::string& output,
+    std::vector<SkippedMethod>* skipped = nullptr) {
   const auto cases = expand_cases(experiments);
   std::map<std::string, std::vector<ErrorRow>> rows;
   std::map<std::string, int> found;
@@ -41,6 +42,17 @@ std::map<std::string, std::vector<ErrorRow>> stored_rows(const std::vector<Exper
     if (auto r = store.load(c)) {
       rows[name].insert(rows[name].end(), r->begin(), r->end());
       ++found[name];
+    } else if (auto reason = store.load_skipped(c)) {
+      rows[name];  // the experiment's CSV is written even if every case was skipped
+      ++found[name];
+      if (!skipped) continue;
+      const auto same = std::find_if(skipped->begin(), skipped->end(), [&](const auto& s) {
+        return s.experiment == name && s.method == c.method->label;
+      });
+      if (same != skipped->end())
+        ++same->cases;
+      else
+        skipped->push_back({name, c.method->label, 1, *reason});
     } else {
       missing_of[name].push_back(case_id(c));
     }
@@ -63,6 +75,18 @@ std::map<std::string, std::vector<ErrorRow>> stored_rows(const std::vector<Exper
                      " cases missing or stale (run their shards first):" + list);
   }
   return rows;
+}
+
+// skipped.csv: these skips replace those of the experiments just run or reported.
+void write_skipped(const std::string& output, const std::vector<Experiment>& experiments,
+                   const std::vector<SkippedMethod>& now) {
+  std::vector<SkippedMethod> skipped;
+  for (const SkippedMethod& s : read_skipped_csv(output + "/skipped.csv"))
+    if (std::none_of(experiments.begin(), experiments.end(),
+                     [&](const Experiment& e) { return e.name == s.experiment; }))
+      skipped.push_back(s);
+  skipped.insert(skipped.end(), now.begin(), now.end());
+  write_skipped_csv(output + "/skipped.csv", skipped);
 }
 
 }  // namespace
@@ -111,12 +135,14 @@ PipelineResult run_pipeline(const PipelineOptions& o) {
 
   if (o.report_only) {
     const CaseStore store(store_dir);
-    const auto rows = stored_rows(o.experiments, store, o.output);
+    std::vector<SkippedMethod> skipped_now;
+    const auto rows = stored_rows(o.experiments, store, o.output, &skipped_now);
     for (const auto& [name, r] : rows) {
       write_error_csv(o.output + "/" + name + ".csv", r);
       write_timing_csv(o.output + "/timings/" + name + ".csv", r);
       say("[run] wrote " + o.output + "/" + name + ".csv from the case store");
     }
+    write_skipped(o.output, o.experiments, skipped_now);
   }
   if (!sharded) {
     say("[run] Table 2 (ring sizes)");
@@ -168,16 +194,7 @@ PipelineResult run_pipeline(const PipelineOptions& o) {
         (done.skipped > 0
              ? format(", skipped %d (outside estimators that cannot run here)", done.skipped)
              : std::string()));
-    if (!sharded) {
-      // skipped.csv: this run's skips replace those of the experiments it ran.
-      std::vector<SkippedMethod> skipped;
-      for (const SkippedMethod& s : read_skipped_csv(o.output + "/skipped.csv"))
-        if (std::none_of(o.experiments.begin(), o.experiments.end(),
-                         [&](const Experiment& e) { return e.name == s.experiment; }))
-          skipped.push_back(s);
-      skipped.insert(skipped.end(), done.skipped_methods.begin(), done.skipped_methods.end());
-      write_skipped_csv(o.output + "/skipped.csv", skipped);
-    }
+    if (!sharded) write_skipped(o.output, o.experiments, done.skipped_methods);
   }
 
   // The alternative readings: the experiments each changes, in their own folder and case store

@@ -245,6 +245,7 @@ RunSummary run_experiments(const std::vector<Experiment>& experiments, const Run
   std::map<std::string, std::string> unavailable;
   const auto skip = [&](const RunCase& c, const std::string& reason) {
     ++summary.skipped;
+    if (store) store->save_skipped(c, reason);
     for (SkippedMethod& s : summary.skipped_methods)
       if (s.experiment == c.experiment->name && s.method == c.method->label) {
         ++s.cases;

@@ -1,6 +1,6 @@
 // Column scaling (paper eq. 14) and the comparison least-squares solvers of paper §4.3.1:
-// truncated SVD, Xu's eigen-solve of the normal equations and a generic Householder QR. The default solver, the
-// safeguarded QR of §4.3.2, is in safeguarded_qr.h.
+// truncated SVD, Xu's eigen-solve of the normal equations and a generic Householder QR. The default
+// solver, the safeguarded QR of §4.3.2, is in safeguarded_qr.h.
 //
 // Shapes: A is m x n (m rows <= kMaxRows, n columns <= kMaxCols, already row-weighted and
 // column-scaled), B is m x k (k <= kMaxRhs), X is n x k. All solvers treat every right-hand side

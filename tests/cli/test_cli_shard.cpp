@@ -1,5 +1,5 @@
-// A study sharded over processes (the cluster recipe of docs/cluster.md): `curvbench run --shard K/3`
-// as three concurrent processes into one case store (--cache), then `--report-only`, gives the
+// A study sharded over processes (the cluster recipe of docs/cluster.md): `curvbench run --shard
+// K/3` as three concurrent processes into one case store (--cache), then `--report-only`, gives the
 // same bytes (CSVs, rates, REPORT.md, CLAIMS.md, plots) as one single-process run. Also: the case
 // ids and the partition (--list-cases), and the report of an incomplete store naming what is
 // missing.
@@ -171,8 +171,8 @@ TEST_F(CliShard, ShardsComputeTheReadingsToo) {
                                      "method  lhf-2\n"
                                      "method  xu-2\n"
                                      "panel   well-n \"Fig. 0. L2 errors in normals.\" normal L2\n";
-  const std::string common = " --experiments-dir " + dir.string() +
-                             " --table4-max 16 --threads 1 --no-plots";
+  const std::string common =
+      " --experiments-dir " + dir.string() + " --table4-max 16 --threads 1 --no-plots";
   const fs::path single = root_ / "single", sharded = root_ / "sharded", store = root_ / "store";
   const auto one = run_cli("run well --output " + single.string() + common);
   ASSERT_EQ(one.exit_code, 0) << one.output;

@@ -310,5 +310,41 @@ TEST(External, SkippedMethodLeavesTheRunGoingAndSaysWhy) {
   EXPECT_NE(report.find("- `gone` (outside estimator): a test estimator"), std::string::npos);
 }
 
+// Sharded: each shard records its skipped cases in the store, and --report-only writes the
+// skipped.csv and REPORT.md notes one run writes (instead of failing on missing cases).
+TEST(External, ShardedStudyReportsTheSkippedMethod) {
+  const fs::path dir = fresh_dir("external_skip_shard");
+  fs::create_directories(dir / "none");
+  std::ofstream(dir / "skip.exp")
+      << "name skip\nmesh bump-48 levels=1,2\nmethod external name=gone command=\""
+      << "echo 'libfoo is missing' >&2; : {mesh} {out}; exit 77"
+      << "\"\nmethod lhf-2\npanel p \"p\" H L2\n";
+  // A fixed date: REPORT.md's header would otherwise differ between runs a second apart.
+  const std::string base = "SOURCE_DATE_EPOCH=1790000000 '" + kBinary + "' run '" +
+                           (dir / "skip.exp").string() + "' --experiments-dir '" +
+                           (dir / "none").string() +
+                           "' --threads 1 --table4-max 16 --no-plots --no-readings";
+  const fs::path single = dir / "single", sharded = dir / "sharded", store = dir / "store";
+  auto r = sh(base + " --output '" + single.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const char* k : {"1/2", "2/2"}) {
+    r = sh(base + " --output '" + sharded.string() + "' --cache '" + store.string() + "' --shard " +
+           k);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+  }
+  r = sh(base + " --output '" + sharded.string() + "' --cache '" + store.string() +
+         "' --report-only");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto skipped = read_skipped_csv((sharded / "skipped.csv").string());
+  ASSERT_EQ(skipped.size(), 1u);
+  EXPECT_EQ(skipped[0].method, "gone");
+  EXPECT_EQ(skipped[0].cases, 2);
+  EXPECT_EQ(skipped[0].reason, "libfoo is missing");
+  for (const char* name : {"skip.csv", "skipped.csv", "REPORT.md"})
+    EXPECT_EQ(sh("cat '" + (sharded / name).string() + "'").output,
+              sh("cat '" + (single / name).string() + "'").output)
+        << name;
+}
+
 }  // namespace
 }  // namespace curvbench
