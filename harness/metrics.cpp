@@ -213,6 +213,10 @@ ErrorValue compute_error(Quantity q, Norm norm, std::span<const VertexEstimate> 
     r.value = r.vertices == 0 ? kNaN : (norm == Norm::L2 ? std::sqrt(num / r.vertices) : num);
     return r;
   }
+  double scale = 0.0;  // the same norm of the curvature scale (see zero_exact_norm below)
+  const auto accumulate = [norm](double& sum, double x) {
+    sum = norm == Norm::L2 ? sum + x * x : std::max(sum, x);
+  };
   for (int v : vertices) {
     const VertexEstimate& e = estimates[v];
     if (!usable(e, q)) {
@@ -220,19 +224,13 @@ ErrorValue compute_error(Quantity q, Norm norm, std::span<const VertexEstimate> 
       continue;
     }
     const SurfacePoint& p = exact[v];
-    double err, ref = 0.0;
     if (q == Quantity::normal) {
-      err = (e.normal - p.normal).norm();
+      accumulate(num, (e.normal - p.normal).norm());
     } else {
-      err = std::abs(scalar_of(q, e) - scalar_of(q, p));
-      ref = std::abs(scalar_of(q, p));
-    }
-    if (norm == Norm::L2) {
-      num += err * err;
-      den += ref * ref;
-    } else {
-      num = std::max(num, err);
-      den = std::max(den, ref);
+      accumulate(num, std::abs(scalar_of(q, e) - scalar_of(q, p)));
+      accumulate(den, std::abs(scalar_of(q, p)));
+      const double k = std::max(std::abs(p.k1), std::abs(p.k2));
+      accumulate(scale, q == Quantity::K ? k * k : k);
     }
     ++r.vertices;
   }
@@ -241,7 +239,11 @@ ErrorValue compute_error(Quantity q, Norm norm, std::span<const VertexEstimate> 
   } else if (q == Quantity::normal) {
     r.value = norm == Norm::L2 ? std::sqrt(num / r.vertices) : num;
   } else {
-    r.value = den > 0.0 ? (norm == Norm::L2 ? std::sqrt(num / den) : num / den) : kNaN;
+    // A quantity that vanishes on every scored vertex (k1 and K on a cylinder) has no relative
+    // error: it is measured against the curvature scale instead (metrics.h).
+    r.zero_exact_norm = !(den > 0.0);
+    const double d = r.zero_exact_norm ? scale : den;
+    r.value = d > 0.0 ? (norm == Norm::L2 ? std::sqrt(num / d) : num / d) : kNaN;
   }
   return r;
 }

@@ -2,6 +2,9 @@
 //
 //   normals      L2 = sqrt(mean_i |n~_i - n_i|^2),  Linf = max_i |n~_i - n_i|        (absolute)
 //   H, K, k1, k2 L2 = |k~ - k|_2 / |k|_2,          Linf = |k~ - k|_inf / |k|_inf    (relative)
+//                when |k| = 0 over the scored vertices (k1 and K on a cylinder), the denominator
+//                is the same norm of the curvature scale s_i = max(|k1_i|, |k2_i|) (s_i^2 for K):
+//                an absolute error in units of the surface's curvature (NaN if s = 0 too)
 //   d1           L2 = sqrt(mean_i e_i^2), e_i = min(|d~1 - d1|, |d~1 + d1|), over non-umbilic
 //                vertices (|k1 - k2| > 1e-8 max|k|), Linf = max_i e_i
 //   rate         log(e_1 / e_N) / log(h_1 / h_N) with the measured mean edge lengths
@@ -47,6 +50,9 @@ struct ErrorValue {
   double value = 0.0;  ///< the error; NaN if no vertex contributed
   int vertices = 0;    ///< vertices that contributed
   int excluded = 0;    ///< vertices of the set skipped because their estimate is excluded/NaN
+  /// H, K, k1, k2: the exact quantity is zero on every scored vertex, so `value` is relative to
+  /// the curvature scale instead of to the quantity's own norm.
+  bool zero_exact_norm = false;
 };
 
 /// Whether a method computing `computed` outputs quantity q (d1: the directions).

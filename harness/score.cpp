@@ -268,7 +268,8 @@ std::string score_json(const ScoreResult& r, const std::string& mesh_path,
     j += std::string(i ? ", " : "") + "{\"quantity\": " + str(to_string(s.quantity)) +
          ", \"L2\": " + num(s.l2.value) + ", \"Linf\": " + num(s.linf.value) +
          ", \"counted\": " + std::to_string(s.l2.vertices) +
-         ", \"failed\": " + std::to_string(s.l2.excluded) + "}";
+         ", \"failed\": " + std::to_string(s.l2.excluded) +
+         (s.l2.zero_exact_norm ? ", \"relative_to\": \"curvature scale\"" : "") + "}";
   }
   return j + "]}\n";
 }
@@ -286,6 +287,12 @@ std::string score_text(const ScoreResult& r) {
                   s.l2.vertices, s.l2.excluded);
     out += buf;
   }
+  for (const QuantityScore& s : r.scores)
+    if (s.l2.zero_exact_norm)
+      out += std::string("exact ") + to_string(s.quantity) +
+             " is 0 on every vertex: its errors are relative to the curvature scale max(|k1|, "
+             "|k2|)" +
+             (s.quantity == Quantity::K ? "^2" : "") + " (docs/metrics.md)\n";
   return out;
 }
 

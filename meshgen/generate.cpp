@@ -45,7 +45,17 @@
     "well-shaped torus without valence 3 or 4 (torus-unstructured after edge flips and "          \
     "relaxation)",                                                                                \
     "the well-shaped torus of sections 5.1 and 5.3, read as a mesh without vertices of "          \
-    "valence 3 or 4 (an alternative to torus-unstructured)", "none")
+    "valence 3 or 4 (an alternative to torus-unstructured)", "none")                         \
+  X("lantern", 4, generate_lantern,                                                               \
+    "Schwarz lantern of a cylinder (slices ~ sectors: normals and area converge)",                \
+    "not in the paper (hard meshes, issue: meshes that break estimators)", "none")                \
+  X("lantern-squeezed", 4, generate_lantern_squeezed,                                             \
+    "squeezed Schwarz lantern of a cylinder (slices ~ sectors^2: positions converge, face "       \
+    "normals and area do not)",                                                                   \
+    "not in the paper (hard meshes, issue: meshes that break estimators)", "none")                \
+  X("ellipsoid", 4, generate_ellipsoid,                                                           \
+    "ellipsoid with semi-axes 1, 0.8, 0.6 (Delaunay-refined; four umbilics)",                     \
+    "not in the paper (hard meshes, issue: meshes that break estimators)", "none")
 // clang-format on
 
 namespace curvbench {

@@ -1,153 +1,48 @@
 #include "meshgen/torus_unstructured.h"
 
-#include <CGAL/Complex_2_in_triangulation_3.h>
-#include <CGAL/Delaunay_triangulation_3.h>
-#include <CGAL/Delaunay_triangulation_cell_base_with_circumcenter_3.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Implicit_surface_3.h>
-#include <CGAL/Random.h>
-#include <CGAL/Robust_circumcenter_traits_3.h>
-#include <CGAL/Surface_mesh_cell_base_3.h>
-#include <CGAL/Surface_mesh_vertex_base_3.h>
-#include <CGAL/make_surface_mesh.h>
-
-#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <map>
-#include <mutex>
-#include <numbers>
-#include <numeric>
 #include <string>
-#include <unordered_map>
 
 #include "core/errors.h"
+#include "meshgen/delaunay_surface_mesh.h"
 #include "meshgen/generation_cache.h"
 #include "surfaces/torus.h"
 
 namespace curvbench {
 namespace {
 
-// CGAL's default surface-mesher triangulation, with time-stamped vertices and cells: handles then
-// compare by creation order instead of by address (CGAL's Compact_container uses the stamps when
-// the type declares Has_timestamp), so the refinement order, and the mesh, do not depend on the
-// state of the heap (without the stamps, meshing level 1 first changed level 2 from 5246 to 5307
-// vertices).
-template <class Base>
-struct Timestamped : Base {
-  using Base::Base;
-  template <class TDS2>
-  struct Rebind_TDS {
-    using Other = Timestamped<typename Base::template Rebind_TDS<TDS2>::Other>;
-  };
-  using Has_timestamp = CGAL::Tag_true;
-  std::size_t time_stamp() const { return stamp_; }
-  void set_time_stamp(std::size_t s) { stamp_ = s; }
-
- private:
-  std::size_t stamp_ = static_cast<std::size_t>(-1);
-};
-using Kernel =
-    CGAL::Robust_circumcenter_traits_3<CGAL::Exact_predicates_inexact_constructions_kernel>;
-using Vb = Timestamped<CGAL::Surface_mesh_vertex_base_3<Kernel>>;
-using Cb = Timestamped<CGAL::Delaunay_triangulation_cell_base_with_circumcenter_3<
-    Kernel, CGAL::Surface_mesh_cell_base_3<Kernel>>>;
-using Tr = CGAL::Delaunay_triangulation_3<Kernel, CGAL::Triangulation_data_structure_3<Vb, Cb>>;
-using C2t3 = CGAL::Complex_2_in_triangulation_3<Tr>;
-using GT = Tr::Geom_traits;
-using Point3 = GT::Point_3;
-
 constexpr double kR = 1.0, kr = 0.3;
 
-struct TorusFunction {
-  GT::FT operator()(const Point3& p) const {
-    const double q = std::sqrt(p.x() * p.x() + p.y() * p.y()) - kR;
-    return q * q + p.z() * p.z() - kr * kr;
-  }
-};
-using ImplicitTorus = CGAL::Implicit_surface_3<GT, TorusFunction>;
+double torus_function(double x, double y, double z) {
+  const double q = std::sqrt(x * x + y * y) - kR;
+  return q * q + z * z - kr * kr;
+}
+
+// The angle around the axis and the angle around the tube.
+std::array<double, 2> torus_angles(const Vec3& p) {
+  return {std::atan2(p.y(), p.x()),
+          std::atan2(p.z(), std::sqrt(p.x() * p.x() + p.y() * p.y()) - kR)};
+}
 
 // Surface Delaunay ball radius bound per level, calibrated once (seed 1) so that the vertex
 // counts fall within 3% of the paper's 1338, 5246, 21156, 85208.
 constexpr double kRadius[] = {0.0826, 0.0397, 0.0197, 0.0098};
 constexpr int kMaxLevel = 4;
 
-// Z-order (Morton) key of two angles in [-pi, pi]: 21 bits each, bits interleaved.
-std::uint64_t morton_key(double a, double b) {
-  const auto quantize = [](double x) {
-    const double t = (x + std::numbers::pi) / (2.0 * std::numbers::pi);
-    return static_cast<std::uint64_t>(std::clamp(t, 0.0, 1.0) * double((1u << 21) - 1));
-  };
-  const std::uint64_t qa = quantize(a), qb = quantize(b);
-  std::uint64_t key = 0;
-  for (int bit = 0; bit < 21; ++bit)
-    key |= ((qa >> bit) & 1u) << (2 * bit + 1) | ((qb >> bit) & 1u) << (2 * bit);
-  return key;
-}
-
 GeneratedMesh generate(int level, std::uint64_t seed) {
   const double rho = kRadius[level - 1];
-  CGAL::get_default_random() = CGAL::Random(static_cast<unsigned int>(seed));
-  Tr tr;
-  C2t3 c2t3(tr);
-  const ImplicitTorus surface(TorusFunction(), GT::Sphere_3(CGAL::ORIGIN, 2.0 * 2.0), 1e-10);
-  const CGAL::Surface_mesh_default_criteria_3<Tr> criteria(30.0, rho, 0.1 * rho);
-  CGAL::make_surface_mesh(c2t3, surface, criteria, CGAL::Manifold_tag());
-
-  SurfacePtr torus = make_torus(kR, kr);
-  std::map<Tr::Vertex_handle, int> index;
-  std::vector<Vec3> points;
-  for (auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
-    if (c2t3.face_status(v) == C2t3::NOT_IN_COMPLEX) continue;
-    index.emplace(v, static_cast<int>(points.size()));
-    const Point3& p = v->point();
-    points.push_back(torus->project(Vec3(p.x(), p.y(), p.z())));
-  }
-  std::vector<std::array<int, 3>> faces;
-  for (auto f = c2t3.facets_begin(); f != c2t3.facets_end(); ++f) {
-    const auto cell = f->first;
-    const int i = f->second;
-    std::array<int, 3> t;
-    for (int k = 0, n = 0; k < 4; ++k)
-      if (k != i) t[n++] = index.at(cell->vertex(k));
-    // Outward: the face normal agrees with the torus normal at the centroid.
-    const Vec3 a = points[t[0]], b = points[t[1]], c = points[t[2]];
-    const Vec3 centroid = (a + b + c) / 3.0;
-    if ((b - a).cross(c - a).dot(torus->evaluate(centroid).normal) < 0) std::swap(t[1], t[2]);
-    faces.push_back(t);
-  }
-  // The mesher numbers vertices in refinement order, which scatters neighbours across memory
-  // (at level 4 every ring gather misses the cache). Renumber along a Z-order curve of the
-  // torus angles (theta around the axis, phi around the tube), then sort the faces by their
-  // smallest vertex: neighbours get nearby numbers, as on a structured mesh. Deterministic.
-  const size_t nv = points.size();
-  std::vector<std::uint64_t> key(nv);
-  for (size_t i = 0; i < nv; ++i) {
-    const Vec3& p = points[i];
-    const double theta = std::atan2(p.y(), p.x());
-    const double phi = std::atan2(p.z(), std::sqrt(p.x() * p.x() + p.y() * p.y()) - kR);
-    key[i] = morton_key(theta, phi);
-  }
-  std::vector<int> order(nv);
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key[a] < key[b]; });
-  std::vector<int> new_index(nv);
-  for (size_t i = 0; i < nv; ++i) new_index[static_cast<size_t>(order[i])] = static_cast<int>(i);
-  for (auto& t : faces)
-    for (int& k : t) k = new_index[static_cast<size_t>(k)];
-  std::stable_sort(faces.begin(), faces.end(), [](const auto& a, const auto& b) {
-    return std::min({a[0], a[1], a[2]}) < std::min({b[0], b[1], b[2]});
-  });
-  VertexMatrix V(nv, 3);
-  for (size_t i = 0; i < nv; ++i) V.row(i) = points[static_cast<size_t>(order[i])].transpose();
-  FaceMatrix F(faces.size(), 3);
-  for (size_t i = 0; i < faces.size(); ++i) F.row(i) << faces[i][0], faces[i][1], faces[i][2];
-
-  GeneratedMesh out;
-  out.exact_points = V;
-  out.mesh = Mesh(std::move(V), std::move(F), "torus-unstructured");
-  out.surface = std::move(torus);
+  ImplicitMeshing spec;
+  spec.implicit = torus_function;
+  spec.bounding_radius = 2.0;
+  spec.radius_bound = rho;
+  spec.surface = make_torus(kR, kr);
+  spec.angles = torus_angles;
+  spec.seed = seed;
+  spec.name = "torus-unstructured";
+  GeneratedMesh out = delaunay_surface_mesh(spec);
   out.family = "torus-unstructured";
   out.level = level;
   char buf[256];

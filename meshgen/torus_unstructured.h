@@ -2,15 +2,11 @@
 // §5.1 and Table 5: V = 1338, 5246, 21156, 85208; docs/mesh_families.md).
 //
 // Torus R = 1, r = 0.3, implicit function f(p) = (sqrt(x^2 + y^2) - R)^2 + z^2 - r^2.
-// Generator: CGAL's Delaunay-refinement surface mesher (Surface_mesher, make_surface_mesh with
-// Surface_mesh_default_criteria_3: angle bound 30 degrees, surface Delaunay ball radius bound
-// rho_L, centre-to-surface distance bound 0.1 rho_L, manifold output). rho_L is fixed per level
-// (kRadius in the .cpp, calibrated once so that V is within 3% of the paper's counts). The
-// mesher's initial points come from CGAL's default random generator, which is reseeded with
-// `seed` right before meshing, and the triangulation's vertices and cells carry creation stamps
-// so that CGAL orders them by creation instead of by address: the mesh is the same bytes on
-// every run, whatever the process did before. Every vertex is then moved
-// to its exact closest point on the torus (Torus::project), so positions are exact to roundoff.
+// Generator: CGAL's Delaunay-refinement surface mesher through delaunay_surface_mesh.h (angle
+// bound 30 degrees, surface Delaunay ball radius bound rho_L, centre-to-surface distance bound
+// 0.1 rho_L, manifold output; seeded and creation-stamped, so the same bytes on every run; every
+// vertex then moved to its exact closest point on the torus, Torus::project). rho_L is fixed per
+// level (kRadius in the .cpp, calibrated once so that V is within 3% of the paper's counts).
 // Triangles are oriented outward (the normal of each face agrees with the torus normal at its
 // centroid). Valences are mixed (typically 4-9), the minimum angle is >= 25 degrees (tested).
 //

@@ -33,18 +33,12 @@ SurfacePoint Sphere::evaluate(const Vec3& p) const {
   const Vec3 q = project(p);
   if (!q.allFinite()) return nan_surface_point();
   const Vec3 n = q.normalized();
-  // Duff, Burgess, Christensen, Hery, Kensler, Liani, Villemin, "Building an orthonormal basis,
-  // revisited", JCGT 6(1), 2017: a unit tangent defined for every unit n.
-  const double sign = std::copysign(1.0, n.z());
-  const double a = -1.0 / (sign + n.z());
-  const double b = n.x() * n.y() * a;
   SurfacePoint s;
   s.point = q;
   s.normal = n;
   s.k1 = s.k2 = s.H = -1.0 / a_;
   s.K = 1.0 / (a_ * a_);
-  s.d1 = Vec3(1.0 + sign * n.x() * n.x() * a, sign * b, -sign * n.x()).normalized();
-  s.d2 = n.cross(s.d1).normalized();  // d1 x d2 = n
+  orthonormal_tangents(n, s.d1, s.d2);  // d1 x d2 = n
   s.umbilic = true;
   return s;
 }

@@ -52,6 +52,46 @@ TEST(Metrics, ExactEstimatesHaveZeroError) {
       EXPECT_EQ(compute_error(q, n, f.est, f.exact, f.all).value, 0.0) << to_string(q);
 }
 
+// A quantity that is zero on every scored vertex (k1 and K on a cylinder of radius 2: k2 = -1/2)
+// is measured against the curvature scale s = max(|k1|, |k2|) (s^2 for K); one that is not keeps
+// its relative error; with s = 0 too (a plane) the error is NaN.
+TEST(Metrics, ZeroExactNormFallsBackToTheCurvatureScale) {
+  Fixture f = make(4);
+  for (size_t i = 0; i < f.exact.size(); ++i) {
+    f.exact[i].k1 = 0.0;
+    f.exact[i].k2 = -0.5;
+    f.exact[i].H = -0.25;
+    f.exact[i].K = 0.0;
+    f.est[i].k1 = i % 2 ? 0.1 : -0.1;
+    f.est[i].k2 = -0.5;
+    f.est[i].H = -0.25 + 0.05 * (i % 2 ? 1 : -1);
+    f.est[i].K = i == 3 ? 0.2 : 0.1;
+  }
+  const ErrorValue k1 = compute_error(Quantity::k1, Norm::L2, f.est, f.exact, f.all);
+  EXPECT_TRUE(k1.zero_exact_norm);
+  EXPECT_NEAR(k1.value, 0.1 / 0.5, 1e-15);
+  const ErrorValue kl2 = compute_error(Quantity::K, Norm::L2, f.est, f.exact, f.all);
+  EXPECT_TRUE(kl2.zero_exact_norm);
+  EXPECT_NEAR(kl2.value, std::sqrt((3 * 0.01 + 0.04) / (4 * 0.0625)), 1e-15);
+  const ErrorValue klinf = compute_error(Quantity::K, Norm::Linf, f.est, f.exact, f.all);
+  EXPECT_TRUE(klinf.zero_exact_norm);
+  EXPECT_NEAR(klinf.value, 0.2 / 0.25, 1e-15);
+  const ErrorValue h = compute_error(Quantity::H, Norm::L2, f.est, f.exact, f.all);
+  EXPECT_FALSE(h.zero_exact_norm);
+  EXPECT_NEAR(h.value, 0.05 / 0.25, 1e-15);
+  EXPECT_FALSE(compute_error(Quantity::normal, Norm::L2, f.est, f.exact, f.all).zero_exact_norm);
+  for (auto& p : f.exact) p.k2 = p.H = 0.0;  // a plane: no scale either
+  EXPECT_TRUE(std::isnan(compute_error(Quantity::K, Norm::L2, f.est, f.exact, f.all).value));
+  // One vertex with K != 0 is enough for the relative error.
+  Fixture g = make(4);
+  for (auto& p : g.exact) p.K = 0.0;
+  g.exact[2].K = 2.0;
+  for (auto& e : g.est) e.K = 0.0;
+  const ErrorValue rel = compute_error(Quantity::K, Norm::L2, g.est, g.exact, g.all);
+  EXPECT_FALSE(rel.zero_exact_norm);
+  EXPECT_NEAR(rel.value, 1.0, 1e-15);
+}
+
 TEST(Metrics, ConstantOffsetInMeanCurvature) {
   Fixture f = make(4);  // H = 0.5, 1, 1.5, 2
   for (auto& e : f.est) e.H += 0.1;

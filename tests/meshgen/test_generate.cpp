@@ -29,8 +29,9 @@ std::string usage_error(const MeshSpec& spec) {
 
 TEST(Generate, Families) {
   const std::vector<std::string> expected = {
-      "torus-structured", "torus-jittered", "torus-iso",          "torus-iso-projected",
-      "bump-48",          "bump-irregular", "torus-unstructured", "torus-unstructured-minval5"};
+      "torus-structured", "torus-jittered",   "torus-iso",          "torus-iso-projected",
+      "bump-48",          "bump-irregular",   "torus-unstructured", "torus-unstructured-minval5",
+      "lantern",          "lantern-squeezed", "ellipsoid"};
   EXPECT_EQ(mesh_families(), expected);
   EXPECT_EQ(max_mesh_level("torus-structured"), 6);  // 5-6: beyond the paper, for scaling
   EXPECT_EQ(max_mesh_level("torus-jittered"), 6);
