@@ -17,8 +17,8 @@
 //   radius-scaling alpha=0.5 c=0.44             optional: each method's neighbourhood radius is
 //               c h^alpha in the mesh's units (h its mean edge length) at every level: rings
 //               c h^(alpha-1) rounded to half rings (>= 1) for the fits, to whole rings for the
-//               quadric, ball-factor c h^(alpha-1) for the normal cycle and ICC; the 1-ring methods
-//               keep their 1-ring
+//               quadric, ball-factor c h^(alpha-1) for the normal cycle and ICC; the 1-ring methods keep
+//               their 1-ring
 //   method      lhf-2 [rings=2.5] [vertex-set=interior]  one line per method and degree
 //               any estimator option of role "result" as name=value (rings, centre=no,
 //               qr-tol=1e-8, vertex-normals=max, ball-factor=2, ...: the table of

@@ -15,10 +15,10 @@
 
 #include "core/build_info.h"
 #include "harness/case_store.h"
+#include "methods/option_schema.h"
 #include "harness/results_table.h"
 #include "harness/runner.h"
 #include "mesh/io.h"
-#include "methods/option_schema.h"
 #include "tests/cli/cli_runner.h"
 
 namespace curvbench {

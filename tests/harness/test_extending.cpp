@@ -56,8 +56,9 @@ void register_toys() {
   static const bool once = [] {
     register_estimator({"toy-normal", 0, 0, {}, 0.1, "test only: the area-weighted normal"},
                        &make_toy_normal);
-    register_mesh_family(
-        {"toy-sphere", 4, "unit icosphere (test only)", "not in the paper", "none"}, &toy_sphere);
+    register_mesh_family({"toy-sphere", 4, "unit icosphere (test only)", "not in the paper",
+                          "none"},
+                         &toy_sphere);
     return true;
   }();
   (void)once;
@@ -96,7 +97,8 @@ TEST(Extending, AToyEstimatorAndFamilyRunThroughTheExperimentPath) {
 
 TEST(Extending, RegistrationErrors) {
   register_toys();
-  EXPECT_THROW(register_estimator({"toy-normal", 0, 0, {}, 1.0, ""}, &make_toy_normal), UsageError);
+  EXPECT_THROW(register_estimator({"toy-normal", 0, 0, {}, 1.0, ""}, &make_toy_normal),
+               UsageError);
   EXPECT_THROW(register_estimator({"Toy2", 0, 0, {}, 1.0, ""}, &make_toy_normal), UsageError);
   EXPECT_THROW(register_estimator({"toy3", 0, 2, {}, 1.0, ""}, &make_toy_normal), UsageError);
   EXPECT_THROW(register_estimator({"external", 0, 0, {}, 1.0, ""}, &make_toy_normal), UsageError);

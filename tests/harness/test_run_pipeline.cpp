@@ -46,8 +46,8 @@ TEST(RunPipeline, FullRunThenRerunReusesEveryCaseWithTheSameBytes) {
   EXPECT_EQ(first.total, 4);  // 2 levels x 2 methods
   EXPECT_EQ(first.computed, 4);
   EXPECT_EQ(first.reused, 0);
-  for (const char* f :
-       {"pipeline-test.csv", "rates.csv", "table2.csv", "table4.csv", "REPORT.md", "CLAIMS.md"})
+  for (const char* f : {"pipeline-test.csv", "rates.csv", "table2.csv", "table4.csv", "REPORT.md",
+                        "CLAIMS.md"})
     EXPECT_TRUE(fs::exists(dir / f)) << f;
   EXPECT_EQ(first.report, (dir / "REPORT.md").string());
   const std::string csv = testing::slurp(dir / "pipeline-test.csv");
