@@ -329,8 +329,8 @@ bool append_field_estimators_section(std::ostringstream& md,
       const std::vector<double> targets = time_targets(timed);
       if (targets.empty()) continue;
       md << "Cheapest estimator reaching a target L2 error in H on `" << mesh.family
-         << "` (time of the whole mesh's estimation at the first level where the error is at "
-            "most the target; levels "
+         << "` (the least time of the whole mesh's estimation over the levels where the error "
+            "is at most the target; levels "
          << *levels.begin() << "-" << finest << "):\n\n"
          << "| target | cheapest (level, time, error) | runner-up (level, time, error) |\n"
          << "|---|---|---|\n";
