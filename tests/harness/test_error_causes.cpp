@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <numbers>
 #include <string>
@@ -201,6 +202,13 @@ TEST(ErrorCauses, EachBinIsTheErrorSummedDirectlyOverItsVerticesAtTheFinestLevel
   EXPECT_EQ(causes.front().error, rows.front().error);
 }
 
+// A cell of the REPORT.md table: the error with three significant digits.
+std::string cause_tables_cell(double e) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2e", e);
+  return buf;
+}
+
 TEST(ErrorCauses, CsvColumnsRoundTripAndTheCaseStoreKeepsThem) {
   const auto dir = testing::fresh_dir("error_causes_csv");
   const Experiment e = causes_experiment();
@@ -214,6 +222,16 @@ TEST(ErrorCauses, CsvColumnsRoundTripAndTheCaseStoreKeepsThem) {
 
   const std::string path = (dir / "errors_by_cause" / "causes.csv").string();
   write_cause_csv(path, causes);
+  // For the REPORT.md table below: the same rows as a method scored over the interior.
+  std::vector<CauseRow> with_interior = causes;
+  for (CauseRow r : causes) {
+    r.method = "Inner";
+    r.vertex_set = "interior";
+    r.error *= 2.0;
+    with_interior.push_back(r);
+  }
+  const std::string report_dir = (dir / "report").string();
+  write_cause_csv(report_dir + "/errors_by_cause/causes.csv", with_interior);
   const std::string text = read_file(path);
   EXPECT_EQ(text.rfind("# curvbench", 0), 0u) << text;  // the provenance line
   const std::string header =
@@ -246,13 +264,20 @@ TEST(ErrorCauses, CsvColumnsRoundTripAndTheCaseStoreKeepsThem) {
   EXPECT_EQ(case_inputs(coarse).find(";causes="), std::string::npos);
 
   // The REPORT.md table: the bins as columns, the counts, one row per method.
-  const std::string md = cause_tables_markdown(e, dir.string());
+  const std::string md = cause_tables_markdown(e, report_dir);
   EXPECT_NE(md.find("**`torus-unstructured`**, level 2"), std::string::npos) << md;
   EXPECT_NE(md.find("| method | all | val <=4 | val 5 | val 6 | val 7 | val >=8 | <10° |"),
             std::string::npos)
       << md;
-  EXPECT_NE(md.find("| *vertices* | " + std::to_string(all_count) + " |"), std::string::npos) << md;
-  EXPECT_NE(md.find("| Meyer |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| *vertices (all)* | " + std::to_string(all_count) + " |"), std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| Meyer | " + cause_tables_cell(causes.front().error) + " |"),
+            std::string::npos)
+      << md;
+  // A method scored over another vertex set (a tie goes to the first seen) names it.
+  EXPECT_NE(md.find("| Inner (interior) | " + cause_tables_cell(2.0 * causes.front().error) + " |"),
+            std::string::npos)
+      << md;
   Experiment other = e;
   other.name = "missing";
   EXPECT_TRUE(cause_tables_markdown(other, dir.string()).empty());
