@@ -28,10 +28,10 @@ std::string format(const char* fmt, auto... args) {
 
 // Report-only: each experiment's rows from the store. Throws InputError naming the missing cases
 // of an experiment that is partly stored (or not stored and without a CSV).
-// Their errors by cause into `causes`.
+// Their errors by cause into `causes` if given.
 std::map<std::string, std::vector<ErrorRow>> stored_rows(
     const std::vector<Experiment>& experiments, const CaseStore& store, const std::string& output,
-    std::map<std::string, std::vector<CauseRow>>& causes) {
+    std::map<std::string, std::vector<CauseRow>>* causes = nullptr) {
   const auto cases = expand_cases(experiments);
   std::map<std::string, std::vector<ErrorRow>> rows;
   std::map<std::string, int> found;
@@ -42,7 +42,8 @@ std::map<std::string, std::vector<ErrorRow>> stored_rows(
     std::vector<CauseRow> case_causes;
     if (auto r = store.load(c, &case_causes)) {
       rows[name].insert(rows[name].end(), r->begin(), r->end());
-      causes[name].insert(causes[name].end(), case_causes.begin(), case_causes.end());
+      if (causes)
+        (*causes)[name].insert((*causes)[name].end(), case_causes.begin(), case_causes.end());
       ++found[name];
     } else {
       missing_of[name].push_back(case_id(c));
@@ -53,7 +54,7 @@ std::map<std::string, std::vector<ErrorRow>> stored_rows(
     if (m == missing_of.end()) continue;
     if (found[e.name] == 0 && fs::exists(fs::path(output) / (e.name + ".csv"))) {
       rows.erase(e.name);  // nothing stored: keep the existing CSV
-      causes.erase(e.name);
+      if (causes) causes->erase(e.name);
       continue;
     }
     missing.insert(missing.end(), m->second.begin(), m->second.end());
@@ -116,7 +117,7 @@ PipelineResult run_pipeline(const PipelineOptions& o) {
   if (o.report_only) {
     const CaseStore store(store_dir);
     std::map<std::string, std::vector<CauseRow>> causes;
-    const auto rows = stored_rows(o.experiments, store, o.output, causes);
+    const auto rows = stored_rows(o.experiments, store, o.output, &causes);
     for (const auto& [name, r] : rows) {
       write_error_csv(o.output + "/" + name + ".csv", r);
       write_timing_csv(o.output + "/timings/" + name + ".csv", r);
