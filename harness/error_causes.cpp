@@ -71,15 +71,22 @@ std::vector<double> min_incident_angles(const Mesh& mesh) {
   return out;
 }
 
-std::vector<std::vector<int>> cause_bin_vertices(const Mesh& mesh,
-                                                 std::span<const SurfacePoint> exact,
-                                                 std::span<const int> vertices) {
-  const std::vector<int> valence = vertex_valences(mesh);
-  const std::vector<double> angle = min_incident_angles(mesh);
-  double kmax = 0.0;
+VertexCauses vertex_causes(const Mesh& mesh, std::span<const SurfacePoint> exact) {
+  VertexCauses c;
+  c.valence = vertex_valences(mesh);
+  c.min_angle = min_incident_angles(mesh);
   for (int v = 0; v < mesh.num_vertices(); ++v)
     if (std::isfinite(exact[static_cast<size_t>(v)].K))
-      kmax = std::max(kmax, std::abs(exact[static_cast<size_t>(v)].K));
+      c.max_abs_K = std::max(c.max_abs_K, std::abs(exact[static_cast<size_t>(v)].K));
+  return c;
+}
+
+std::vector<std::vector<int>> cause_bin_vertices(const VertexCauses& causes,
+                                                 std::span<const SurfacePoint> exact,
+                                                 std::span<const int> vertices) {
+  const std::vector<int>& valence = causes.valence;
+  const std::vector<double>& angle = causes.min_angle;
+  const double kmax = causes.max_abs_K;
   std::vector<std::vector<int>> bins(std::size(kBins));
   for (int v : vertices) {
     const auto i = static_cast<size_t>(v);
@@ -101,11 +108,11 @@ std::vector<std::vector<int>> cause_bin_vertices(const Mesh& mesh,
   return bins;
 }
 
-std::vector<CauseRow> cause_rows(const ErrorRow& like, const Mesh& mesh,
+std::vector<CauseRow> cause_rows(const ErrorRow& like, const VertexCauses& causes,
                                  std::span<const VertexEstimate> estimates,
                                  std::span<const SurfacePoint> exact,
                                  std::span<const int> vertices) {
-  const auto bins = cause_bin_vertices(mesh, exact, vertices);
+  const auto bins = cause_bin_vertices(causes, exact, vertices);
   std::vector<CauseRow> out;
   for (size_t b = 0; b < bins.size(); ++b) {
     const ErrorValue ev = compute_error(kCauseQuantity, kCauseNorm, estimates, exact, bins[b]);

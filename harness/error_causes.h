@@ -44,9 +44,17 @@ inline constexpr Norm kCauseNorm = Norm::L2;
 /// Smallest corner angle (degrees) of the triangles incident on each vertex; NaN without one.
 std::vector<double> min_incident_angles(const Mesh& mesh);
 
-/// For each bin of cause_bins(), the vertices of `vertices` in it (increasing if `vertices` is).
+/// What the bins of a mesh's vertices are made from, computed once per mesh.
+struct VertexCauses {
+  std::vector<int> valence;       ///< vertex_valences
+  std::vector<double> min_angle;  ///< min_incident_angles
+  double max_abs_K = 0.0;         ///< the largest finite |K| of the exact points
+};
 /// `exact` holds the exact surface point of every mesh vertex.
-std::vector<std::vector<int>> cause_bin_vertices(const Mesh& mesh,
+VertexCauses vertex_causes(const Mesh& mesh, std::span<const SurfacePoint> exact);
+
+/// For each bin of cause_bins(), the vertices of `vertices` in it (increasing if `vertices` is).
+std::vector<std::vector<int>> cause_bin_vertices(const VertexCauses& causes,
                                                  std::span<const SurfacePoint> exact,
                                                  std::span<const int> vertices);
 
@@ -66,7 +74,7 @@ struct CauseRow {
 
 /// One row per bin: compute_error(kCauseQuantity, kCauseNorm) over the bin's vertices, the other
 /// columns copied from `like` (a row of the case).
-std::vector<CauseRow> cause_rows(const ErrorRow& like, const Mesh& mesh,
+std::vector<CauseRow> cause_rows(const ErrorRow& like, const VertexCauses& causes,
                                  std::span<const VertexEstimate> estimates,
                                  std::span<const SurfacePoint> exact,
                                  std::span<const int> vertices);

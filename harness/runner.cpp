@@ -217,8 +217,10 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads,
   }
   if (causes != nullptr) {
     causes->clear();
-    if (finest_level(*c.mesh, c.level) && computes(computed, kCauseQuantity))
-      *causes = cause_rows(like, mesh, est, sm.exact, vertices);
+    if (finest_level(*c.mesh, c.level) && computes(computed, kCauseQuantity)) {
+      if (!sm.causes) sm.causes = std::make_unique<VertexCauses>(vertex_causes(mesh, sm.exact));
+      *causes = cause_rows(like, *sm.causes, est, sm.exact, vertices);
+    }
   }
   return rows;
 }

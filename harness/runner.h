@@ -27,6 +27,9 @@ struct ScoredMesh {
   /// The starting neighbourhoods of generated.mesh, gathered once per spec and shared by every
   /// method and degree run on it (bit-identical results; mesh/neighbourhood_table.h).
   std::unique_ptr<NeighbourhoodCache> neighbourhoods;
+  /// The per-vertex inputs of the errors by cause (error_causes.h), made by run_case on the
+  /// first case of the mesh that needs them and shared by the others (the runner is sequential).
+  mutable std::unique_ptr<VertexCauses> causes;
 };
 
 /// Generated meshes keyed by (family, level, noise order, seed); generated on first use.

@@ -43,7 +43,7 @@ Mesh fan(const std::vector<double>& angles_deg) {
 std::map<std::string, std::vector<int>> bins_of(const Mesh& mesh,
                                                 const std::vector<SurfacePoint>& exact,
                                                 const std::vector<int>& vertices) {
-  const auto bins = cause_bin_vertices(mesh, exact, vertices);
+  const auto bins = cause_bin_vertices(vertex_causes(mesh, exact), exact, vertices);
   EXPECT_EQ(bins.size(), cause_bins().size());
   std::map<std::string, std::vector<int>> out;
   for (size_t b = 0; b < bins.size(); ++b)
