@@ -50,6 +50,8 @@ std::string file_safe(const std::string& s) {
 
 // Line 3 of a case file: the estimation time of the case, in seconds.
 constexpr const char* kSecondsComment = "# estimate-seconds ";
+// The line before the errors by cause of a case file.
+constexpr const char* kCausesComment = "# errors by cause\n";
 
 const char* yes_no(bool b) {
   return b ? "yes" : "no";
@@ -140,7 +142,10 @@ std::string case_inputs(const RunCase& c) {
                                  ";radius-c=" + format_double(e.radius_c)
                            : std::string()) +
          ";vertex-set=" + std::string(to_string(e.vertex_set)) + ";" + method_inputs(*c.method) +
-         ";measures=" + measures;
+         ";measures=" + measures +
+         (finest_level(*c.mesh, c.level)
+              ? ";causes=" + std::string(to_string(kCauseQuantity)) + "/" + to_string(kCauseNorm)
+              : std::string());
 }
 
 std::uint64_t case_hash(const RunCase& c, const std::string& version) {
@@ -168,7 +173,8 @@ std::string CaseStore::path(const RunCase& c) const {
   return (fs::path(directory_) / (case_id(c) + ".csv")).string();
 }
 
-std::optional<std::vector<ErrorRow>> CaseStore::load(const RunCase& c) const {
+std::optional<std::vector<ErrorRow>> CaseStore::load(const RunCase& c,
+                                                     std::vector<CauseRow>* causes) const {
   const std::string p = path(c);
   std::error_code ec;
   if (!fs::is_regular_file(p, ec)) return std::nullopt;
@@ -180,12 +186,20 @@ std::optional<std::vector<ErrorRow>> CaseStore::load(const RunCase& c) const {
   }
   const auto nl = text.find('\n');
   if (nl == std::string::npos) return std::nullopt;
-  const std::string_view rest = std::string_view(text).substr(nl + 1);
+  std::string_view rest = std::string_view(text).substr(nl + 1);
   if (text.compare(0, nl, first_line(case_hash(c, version_), fnv1a64(rest))) != 0)
     return std::nullopt;  // stale (other inputs or code) or corrupt
+  // The errors by cause, if any, follow the errors.
+  std::string_view cause_text;
+  if (const auto at = rest.find("\n" + std::string(kCausesComment)); at != std::string_view::npos) {
+    cause_text = rest.substr(at + 1 + std::string_view(kCausesComment).size());
+    rest = rest.substr(0, at + 1);
+  }
   std::vector<ErrorRow> rows;
+  std::vector<CauseRow> cause_rows;
   try {
     rows = parse_error_csv(std::string(rest), p);
+    if (!cause_text.empty()) cause_rows = parse_cause_csv(std::string(cause_text), p);
   } catch (const InputError&) {
     return std::nullopt;
   }
@@ -208,14 +222,19 @@ std::optional<std::vector<ErrorRow>> CaseStore::load(const RunCase& c) const {
   for (const auto& r : rows)
     if (r.experiment != c.experiment->name || r.family != c.mesh->family || r.level != c.level)
       return std::nullopt;
+  for (const auto& r : cause_rows)
+    if (r.experiment != c.experiment->name || r.family != c.mesh->family || r.level != c.level)
+      return std::nullopt;
+  if (causes) *causes = std::move(cause_rows);
   return rows;
 }
 
-void CaseStore::save(const RunCase& c, const std::vector<ErrorRow>& rows) const {
+void CaseStore::save(const RunCase& c, const std::vector<ErrorRow>& rows,
+                     const std::vector<CauseRow>& causes) const {
   const double seconds = rows.empty() ? std::nan("") : rows.front().seconds;
-  const std::string rest =
-      error_csv_text(rows, "# " + case_inputs(c) + ";code=" + escaped(version_) + "\n" +
-                               kSecondsComment + format_double(seconds));
+  std::string rest = error_csv_text(rows, "# " + case_inputs(c) + ";code=" + escaped(version_) +
+                                              "\n" + kSecondsComment + format_double(seconds));
+  if (!causes.empty()) rest += kCausesComment + cause_csv_text(causes, "");
   write_file_atomic(path(c), first_line(case_hash(c, version_), fnv1a64(rest)) + "\n" + rest);
   std::error_code ec;
   fs::remove(skipped_path(path(c)), ec);

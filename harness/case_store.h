@@ -9,6 +9,8 @@
 //     line 3   "# estimate-seconds <s>": the case's estimation time when it was computed; a
 //              reused case keeps it (ErrorRow::seconds), so reruns report the same times
 //     then     the errors CSV of results_table.h (header + this case's rows)
+//     then     at the finest level of the mesh, if the method gave H: the line "# errors by
+//              cause" and the errors-by-cause CSV of error_causes.h (header + rows)
 //
 //   <method> is the method's label or spec with characters outside [A-Za-z0-9.+-] replaced by
 //   '_'; the 8 hex digits are a hash of the method's options, so that variants of one method
@@ -25,6 +27,7 @@
 #include <string_view>
 #include <vector>
 
+#include "harness/error_causes.h"
 #include "harness/experiment.h"
 #include "harness/results_table.h"
 #include "harness/runner.h"
@@ -46,7 +49,8 @@ const std::string& code_version();
 
 /// One line naming every input that determines the rows of case c, except the code version:
 /// experiment name, mesh family, level, noise order and seed, noisy flag, vertex sets, method
-/// spec, label and every estimator option, and the (quantity, norm) pairs of the panels. Titles,
+/// spec, label and every estimator option, the (quantity, norm) pairs of the panels, and at the
+/// mesh's finest level that the errors by cause are kept (error_causes.h). Titles,
 /// captions and the thread count do not change the rows and are not included.
 std::string case_inputs(const RunCase& c);
 
@@ -67,11 +71,14 @@ class CaseStore {
   /// The file of case c (whether it exists or not).
   std::string path(const RunCase& c) const;
 
-  /// The stored rows of case c, or nothing if the file is missing, stale or corrupt.
-  std::optional<std::vector<ErrorRow>> load(const RunCase& c) const;
+  /// The stored rows of case c, or nothing if the file is missing, stale or corrupt; its errors
+  /// by cause into `causes` if given.
+  std::optional<std::vector<ErrorRow>> load(const RunCase& c,
+                                            std::vector<CauseRow>* causes = nullptr) const;
 
-  /// Stores the rows of case c atomically (replacing a previous file).
-  void save(const RunCase& c, const std::vector<ErrorRow>& rows) const;
+  /// Stores the rows (and errors by cause) of case c atomically (replacing a previous file).
+  void save(const RunCase& c, const std::vector<ErrorRow>& rows,
+            const std::vector<CauseRow>& causes = {}) const;
 
   /// Records that case c was skipped (an outside estimator that cannot run here, exit 77) with
   /// its reason, so that --report-only of a sharded study knows it; save() of the case removes

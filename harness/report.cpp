@@ -17,8 +17,10 @@
 #include "core/atomic_file.h"
 #include "core/build_info.h"
 #include "core/errors.h"
+#include "harness/error_causes.h"
 #include "harness/metrics.h"
 #include "harness/paper_tables.h"
+#include "harness/plot_styles.h"
 #include "harness/report_field.h"
 #include "harness/well_shaped_torus_table.h"
 #include "mesh/io.h"
@@ -168,12 +170,15 @@ bool render_plot(const std::string& base, const std::string& title,
         gp << format_double(r->h) << ' ' << format_double(r->error) << "\n";
     gp << "EOD\n";
   }
+  std::vector<std::string> labels;
+  for (const auto& s : series) labels.push_back(s.method);
+  const std::vector<PlotStyle> styles = plot_styles(labels);  // one look per method everywhere
   std::ostringstream plot;
   plot << "plot ";
   for (size_t i = 0; i < series.size(); ++i) {
     const double rate = series_rate(series[i]);
-    plot << (i ? ", " : "") << "$S" << i << " using 1:2 with linespoints lw 2 pt " << (i % 7) + 4
-         << " title \"" << series[i].method
+    plot << (i ? ", " : "") << "$S" << i << " using 1:2 with linespoints lw 2 ps 1.2 "
+         << gnuplot_style(styles[i]) << " title \"" << series[i].method
          << (x_axis.rate_in_legend ? " (rate " + fixed(rate) + ")" : "") << "\" noenhanced";
   }
   // Dashed reference slopes O(h^p) for the orders the panel's rates round to (1-4), anchored at
@@ -395,6 +400,7 @@ std::string write_report(const std::vector<Experiment>& experiments, const Repor
         }
       }
     }
+    md << cause_tables_markdown(e, dir);
   }
   if (!append_field_estimators_section(md, experiments, options, missing_plots)) return "";
   if (missing_plots > 0)

@@ -1,5 +1,6 @@
 #include "harness/report_field.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -78,7 +79,62 @@ std::string quantity_name(Quantity q) {
   }
 }
 
+// "0.0123 s".
+std::string seconds_text(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g s", s);
+  return buf;
+}
+
+bool reaches(const ErrorRow& r, double target) {
+  return std::isfinite(r.error) && r.error <= target && std::isfinite(r.seconds);
+}
+
 }  // namespace
+
+CheapestToReach cheapest_to_reach(const std::vector<ErrorRow>& rows, double target) {
+  CheapestToReach out;
+  out.target = target;
+  // Per method, its cheapest row reaching the target; then the two cheapest methods.
+  std::map<std::string, const ErrorRow*> per_method;
+  for (const ErrorRow& r : rows) {
+    if (!reaches(r, target)) continue;
+    const ErrorRow*& m = per_method[r.method];
+    if (m == nullptr || r.seconds < m->seconds) m = &r;
+  }
+  for (const auto& [method, r] : per_method) {
+    if (out.best == nullptr || r->seconds < out.best->seconds) {
+      out.runner_up = out.best;
+      out.best = r;
+    } else if (out.runner_up == nullptr || r->seconds < out.runner_up->seconds) {
+      out.runner_up = r;
+    }
+  }
+  return out;
+}
+
+std::vector<double> time_targets(const std::vector<ErrorRow>& rows) {
+  std::map<std::string, const ErrorRow*> cheapest;  // each method's cheapest timed row
+  for (const ErrorRow& r : rows) {
+    if (!std::isfinite(r.seconds)) continue;
+    const ErrorRow*& m = cheapest[r.method];
+    if (m == nullptr || r.seconds < m->seconds) m = &r;
+  }
+  std::vector<double> out;
+  for (int k = 1; k <= 8 && !cheapest.empty(); ++k) {
+    const double target = 1.0 / std::pow(10.0, k);
+    const bool reached = std::any_of(rows.begin(), rows.end(),
+                                     [&](const ErrorRow& r) { return reaches(r, target); });
+    if (!reached) {
+      out.push_back(target);
+      break;
+    }
+    const bool at_once = std::all_of(cheapest.begin(), cheapest.end(),
+                                     [&](const auto& m) { return reaches(*m.second, target); });
+    if (!at_once) out.push_back(target);
+  }
+  return out;
+}
 
 bool append_field_estimators_section(std::ostringstream& md,
                                      const std::vector<Experiment>& experiments,
@@ -91,12 +147,15 @@ bool append_field_estimators_section(std::ostringstream& md,
     if (!fs::exists(csv)) continue;
     const std::vector<ErrorRow> rows = read_error_csv(csv);
     // Microseconds per vertex by (family, level, method), when the timings were kept.
-    std::map<std::tuple<std::string, int, std::string>, double> us_per_vertex;
+    // and seconds of the whole case.
+    std::map<std::tuple<std::string, int, std::string>, double> us_per_vertex, case_seconds;
     const std::string timings = dir + "/timings/" + e.name + ".csv";
     if (fs::exists(timings))
       for (const TimingRow& t : read_timing_csv(timings))
-        if (t.vertices > 0 && std::isfinite(t.seconds))
+        if (t.vertices > 0 && std::isfinite(t.seconds)) {
           us_per_vertex[{t.family, t.level, t.method}] = 1e6 * t.seconds / t.vertices;
+          case_seconds[{t.family, t.level, t.method}] = t.seconds;
+        }
 
     if (!header_written) {
       md << "## The estimators in common use\n\n"
@@ -107,7 +166,9 @@ bool append_field_estimators_section(std::ostringstream& md,
             "mesh over its vertices, with the run's threads, measured when the case was "
             "computed); and the accuracy-versus-cost plot of the L2 error in H against the time "
             "per vertex, one point per method and level (levels joined, finest at the bottom "
-            "right for a converging method). A series *converges* when its average L2 rate and "
+            "right for a converging method); and the time to solution, the L2 error in H "
+            "against the time of the whole mesh, with the cheapest estimator reaching each "
+            "target error. A series *converges* when its average L2 rate and "
             "its rate between the two finest levels are both at least "
          << rate_text(kConvergenceRateThreshold) << " (a finest-level error of at most "
          << error_text(kRoundOffError) << " counts as exact up to round-off)"
@@ -232,6 +293,59 @@ bool append_field_estimators_section(std::ostringstream& md,
         else
           ++missing_plots;
       }
+
+      // Time to solution: L2 error in H against the seconds of the whole mesh, per method over
+      // the levels, and the cheapest method reaching each target error.
+      std::vector<ErrorRow> timed;
+      for (const MethodRows& m : methods)
+        if (const auto* s = m.find(Quantity::H, Norm::L2))
+          for (const auto& [level, r] : *s) {
+            const auto t = case_seconds.find({mesh.family, level, m.method});
+            if (t == case_seconds.end()) continue;
+            ErrorRow p = *r;
+            p.seconds = t->second;
+            timed.push_back(p);
+          }
+      if (timed.empty()) continue;
+      if (options.plots) {
+        if (options.stop && options.stop()) return false;
+        std::vector<ErrorRow> points = timed;
+        for (ErrorRow& p : points) p.h = p.seconds;  // the x axis of the plot
+        const std::string base = "field-time_" + e.name + "_" + mesh.family;
+        PlotAxis axis;
+        axis.label = "time of the whole mesh (seconds)";
+        axis.reversed = false;
+        axis.rate_in_legend = false;
+        axis.reference_slopes = false;
+        if (render_plot(dir + "/plots/" + base,
+                        "Time to solution: L2 error in H against the time of the mesh [" +
+                            mesh.family + (any->noise != "none" ? ", noise " + any->noise : "") +
+                            "]",
+                        points, axis))
+          md << "![" << base << "](plots/" << base << ".png) ([svg](plots/" << base << ".svg))\n\n";
+        else
+          ++missing_plots;
+      }
+      const std::vector<double> targets = time_targets(timed);
+      if (targets.empty()) continue;
+      md << "Cheapest estimator reaching a target L2 error in H on `" << mesh.family
+         << "` (the least time of the whole mesh's estimation over the levels where the error "
+            "is at most the target; levels "
+         << *levels.begin() << "-" << finest << "):\n\n"
+         << "| target | cheapest (level, time, error) | runner-up (level, time, error) |\n"
+         << "|---|---|---|\n";
+      const auto cell = [](const ErrorRow* r) {
+        return r == nullptr ? std::string("-")
+                            : r->method + " (" + std::to_string(r->level) + ", " +
+                                  seconds_text(r->seconds) + ", " + error_text(r->error) + ")";
+      };
+      for (double target : targets) {
+        const CheapestToReach c = cheapest_to_reach(timed, target);
+        md << "| " << error_text(target) << " | "
+           << (c.best == nullptr ? "no estimator reaches it at these levels" : cell(c.best))
+           << " | " << cell(c.runner_up) << " |\n";
+      }
+      md << "\n";
     }
   }
   return true;

@@ -5,10 +5,16 @@
 //     average convergence rate of its series, and the time per vertex;
 //   - an accuracy-versus-cost plot (log-log): L2 error in H against the time per vertex, one
 //     point per method and level (plots/field-frontier_<experiment>_<family>.{png,svg});
+//   - the time to solution (log-log): L2 error in H against the time of the whole mesh's
+//     estimation, one curve per method over the levels
+//     (plots/field-time_<experiment>_<family>.{png,svg}), and a table of the cheapest method
+//     reaching each target error (cheapest_to_reach);
 //   - sentences, generated from the numbers, saying which estimators converge on which meshes.
 #pragma once
 
+#include <span>
 #include <sstream>
+#include <string>
 #include <vector>
 
 #include "harness/experiment.h"
@@ -22,6 +28,21 @@ inline constexpr double kConvergenceRateThreshold = 0.5;
 /// A series whose finest-level error is at most this is exact up to round-off (e.g. d1 on the
 /// structured torus, where symmetry makes it exact); its rate means nothing.
 inline constexpr double kRoundOffError = 1e-10;
+
+/// The cheapest way to a target error: among `rows` (each method's series of one quantity and
+/// norm on one family, ErrorRow::seconds the time of the case), the row of least time whose error
+/// is at most the target, and the cheapest such row of another method (the runner-up).
+struct CheapestToReach {
+  double target = 0.0;
+  const ErrorRow* best = nullptr;       ///< nullptr: no row reaches the target
+  const ErrorRow* runner_up = nullptr;  ///< nullptr: no other method reaches it
+};
+CheapestToReach cheapest_to_reach(const std::vector<ErrorRow>& rows, double target);
+
+/// The target errors of the time-to-solution table: the powers of ten from 1e-1 to 1e-8 that
+/// some row reaches but some method does not reach at its cheapest row (the others are reached
+/// by every method at once), then the next power of ten if no row reaches it.
+std::vector<double> time_targets(const std::vector<ErrorRow>& rows);
 
 /// Appends the section to `md` (nothing when no field-estimators experiment has results).
 /// Returns false if options.stop asked to stop while plotting (the report is then abandoned).

@@ -26,11 +26,13 @@ std::string format(const char* fmt, auto... args) {
   return buf;
 }
 
-// Report-only: each experiment's rows from the store, and the cases recorded as skipped (an
-// outside estimator that could not run) in `skipped` if given. Throws InputError naming the
-// missing cases of an experiment that is partly stored (or not stored and without a CSV).
+// Report-only: each experiment's rows from the store, their errors by cause into `causes` and
+// the cases recorded as skipped (an outside estimator that could not run) into `skipped`, each
+// if given. Throws InputError naming the missing cases of an experiment that is partly stored
+// (or not stored and without a CSV).
 std::map<std::string, std::vector<ErrorRow>> stored_rows(
     const std::vector<Experiment>& experiments, const CaseStore& store, const std::string& output,
+    std::map<std::string, std::vector<CauseRow>>* causes = nullptr,
     std::vector<SkippedMethod>* skipped = nullptr) {
   const auto cases = expand_cases(experiments);
   std::map<std::string, std::vector<ErrorRow>> rows;
@@ -39,8 +41,11 @@ std::map<std::string, std::vector<ErrorRow>> stored_rows(
   std::map<std::string, std::vector<std::string>> missing_of;
   for (const RunCase& c : cases) {
     const std::string& name = c.experiment->name;
-    if (auto r = store.load(c)) {
+    std::vector<CauseRow> case_causes;
+    if (auto r = store.load(c, &case_causes)) {
       rows[name].insert(rows[name].end(), r->begin(), r->end());
+      if (causes)
+        (*causes)[name].insert((*causes)[name].end(), case_causes.begin(), case_causes.end());
       ++found[name];
     } else if (auto reason = store.load_skipped(c)) {
       rows[name];  // the experiment's CSV is written even if every case was skipped
@@ -62,6 +67,7 @@ std::map<std::string, std::vector<ErrorRow>> stored_rows(
     if (m == missing_of.end()) continue;
     if (found[e.name] == 0 && fs::exists(fs::path(output) / (e.name + ".csv"))) {
       rows.erase(e.name);  // nothing stored: keep the existing CSV
+      if (causes) causes->erase(e.name);
       continue;
     }
     missing.insert(missing.end(), m->second.begin(), m->second.end());
@@ -136,10 +142,12 @@ PipelineResult run_pipeline(const PipelineOptions& o) {
   if (o.report_only) {
     const CaseStore store(store_dir);
     std::vector<SkippedMethod> skipped_now;
-    const auto rows = stored_rows(o.experiments, store, o.output, &skipped_now);
+    std::map<std::string, std::vector<CauseRow>> causes;
+    const auto rows = stored_rows(o.experiments, store, o.output, &causes, &skipped_now);
     for (const auto& [name, r] : rows) {
       write_error_csv(o.output + "/" + name + ".csv", r);
       write_timing_csv(o.output + "/timings/" + name + ".csv", r);
+      write_cause_csv(o.output + "/errors_by_cause/" + name + ".csv", causes[name]);
       say("[run] wrote " + o.output + "/" + name + ".csv from the case store");
     }
     write_skipped(o.output, o.experiments, skipped_now);
@@ -178,6 +186,9 @@ PipelineResult run_pipeline(const PipelineOptions& o) {
       write_error_csv(out_dir + "/" + e.name + ".csv", rows);
       write_timing_csv(out_dir + "/timings/" + e.name + ".csv", rows);
       say("[run] wrote " + out_dir + "/" + e.name + ".csv");
+    };
+    ro.causes_done = [out_dir](const Experiment& e, const std::vector<CauseRow>& rows) {
+      write_cause_csv(out_dir + "/errors_by_cause/" + e.name + ".csv", rows);
     };
     if (sharded)
       say(format("[run] shard %d/%d: %d cases of %zu experiments", o.shard, o.shard_count,

@@ -1,5 +1,6 @@
 // The whole `curvbench run` pipeline as a library function: runs experiments through the case
-// store (runner.h, case_store.h), writes each experiment's error CSV, table2.csv, table4.csv,
+// store (runner.h, case_store.h), writes each experiment's error CSV, its timings and errors by
+// cause (results_table.h, error_causes.h), table2.csv, table4.csv,
 // rates.csv, REPORT.md with the plots, and CLAIMS.md into the output folder; and the experiments
 // each alternative reading changes (readings.h) into <output>/readings/.
 //

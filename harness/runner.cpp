@@ -123,7 +123,8 @@ std::vector<RunCase> expand_cases(const std::vector<Experiment>& experiments) {
   return cases;
 }
 
-std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads) {
+std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads,
+                               std::vector<CauseRow>* causes) {
   const Experiment& e = *c.experiment;
   const ScoredMesh& sm =
       cache.get(c.mesh->family, c.level, e.noise_order_of(*c.mesh), e.noise_seed, e.noise_model);
@@ -187,31 +188,39 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads) 
     set = VertexSet::interior;
   const std::vector<int> vertices = select_vertices(mesh, set);
 
+  ErrorRow like;  // the columns every row of the case shares
+  like.experiment = e.name;
+  like.surface = sm.generated.surface->name();
+  like.family = c.mesh->family;
+  like.level = c.level;
+  like.vertices = mesh.num_vertices();
+  like.h = mesh.mean_edge_length();
+  like.method = method_label;
+  like.degree = degree;
+  like.rings = rings;
+  like.noise = noise_label(e, *c.mesh);
+  like.vertex_set = to_string(set);
+  like.degree_reduced = reduced;
+  like.failed = failed;
+  like.seconds = seconds;
   std::vector<ErrorRow> rows;
   for (const auto& [q, norm] : panel_measures(e)) {
     if (!computes(computed, q)) continue;  // not an output of the method: no error row
     const ErrorValue ev = compute_error(q, norm, est, sm.exact, vertices);
-    ErrorRow r;
-    r.experiment = e.name;
-    r.surface = sm.generated.surface->name();
-    r.family = c.mesh->family;
-    r.level = c.level;
-    r.vertices = mesh.num_vertices();
-    r.h = mesh.mean_edge_length();
-    r.method = method_label;
-    r.degree = degree;
-    r.rings = rings;
-    r.noise = noise_label(e, *c.mesh);
-    r.vertex_set = to_string(set);
+    ErrorRow r = like;
     r.quantity = to_string(q);
     r.norm = to_string(norm);
     r.error = ev.value;
     r.counted = ev.vertices;
     r.excluded = ev.excluded;
-    r.degree_reduced = reduced;
-    r.failed = failed;
-    r.seconds = seconds;
     rows.push_back(std::move(r));
+  }
+  if (causes != nullptr) {
+    causes->clear();
+    if (finest_level(*c.mesh, c.level) && computes(computed, kCauseQuantity)) {
+      if (!sm.causes) sm.causes = std::make_unique<VertexCauses>(vertex_causes(mesh, sm.exact));
+      *causes = cause_rows(like, *sm.causes, est, sm.exact, vertices);
+    }
   }
   return rows;
 }
@@ -232,8 +241,9 @@ RunSummary run_experiments(const std::vector<Experiment>& experiments, const Run
   if (!options.store_dir.empty()) store.emplace(options.store_dir);
   // Stored rows of the unchanged cases, read up front so the ETA covers only the work left.
   std::vector<std::optional<std::vector<ErrorRow>>> stored(cases.size());
+  std::vector<std::vector<CauseRow>> stored_causes(cases.size());
   if (store && !options.force)
-    for (size_t i : todo) stored[i] = store->load(cases[i]);
+    for (size_t i : todo) stored[i] = store->load(cases[i], &stored_causes[i]);
   // ETA from vertices: sizes are known from the levels only after generation, so weight each
   // case by 4^level (every family's vertex count grows about 4x per level).
   double total_work = 0.0, done_work = 0.0;
@@ -262,10 +272,12 @@ RunSummary run_experiments(const std::vector<Experiment>& experiments, const Run
     const RunCase& c = cases[i];
     const auto t0 = clock::now();
     std::vector<ErrorRow> case_rows;
+    std::vector<CauseRow> case_causes;
     p.reused = stored[i].has_value();
     p.skipped = false;
     if (p.reused) {
       case_rows = std::move(*stored[i]);
+      case_causes = std::move(stored_causes[i]);
       ++summary.reused;
     } else if (const auto u = c.method->is_external() ? unavailable.find(c.method->command)
                                                       : unavailable.end();
@@ -275,8 +287,8 @@ RunSummary run_experiments(const std::vector<Experiment>& experiments, const Run
       done_work += case_work(c);
     } else {
       try {
-        case_rows = run_case(c, cache, options.threads);
-        if (store) store->save(c, case_rows);
+        case_rows = run_case(c, cache, options.threads, &case_causes);
+        if (store) store->save(c, case_rows, case_causes);
         ++summary.computed;
       } catch (const ExternalEstimatorUnavailable& e) {
         unavailable[c.method->command] = e.reason();
@@ -296,6 +308,7 @@ RunSummary run_experiments(const std::vector<Experiment>& experiments, const Run
     p.vertices = case_rows.empty() ? 0 : case_rows.front().vertices;
     if (options.progress) options.progress(p);
     summary.rows.insert(summary.rows.end(), case_rows.begin(), case_rows.end());
+    summary.cause_rows.insert(summary.cause_rows.end(), case_causes.begin(), case_causes.end());
     const bool last_of_experiment =
         i + 1 == cases.size() || cases[i + 1].experiment != c.experiment;
     if (!sharded && last_of_experiment && options.experiment_done) {
@@ -303,6 +316,12 @@ RunSummary run_experiments(const std::vector<Experiment>& experiments, const Run
       for (const auto& r : summary.rows)
         if (r.experiment == c.experiment->name) mine.push_back(r);
       options.experiment_done(*c.experiment, mine);
+    }
+    if (!sharded && last_of_experiment && options.causes_done) {
+      std::vector<CauseRow> mine;
+      for (const auto& r : summary.cause_rows)
+        if (r.experiment == c.experiment->name) mine.push_back(r);
+      options.causes_done(*c.experiment, mine);
     }
     if (t + 1 < todo.size() && options.stop && options.stop()) {
       summary.interrupted = true;

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "harness/error_causes.h"
 #include "harness/experiment.h"
 #include "harness/results_table.h"
 #include "mesh/neighbourhood_table.h"
@@ -26,6 +27,9 @@ struct ScoredMesh {
   /// The starting neighbourhoods of generated.mesh, gathered once per spec and shared by every
   /// method and degree run on it (bit-identical results; mesh/neighbourhood_table.h).
   std::unique_ptr<NeighbourhoodCache> neighbourhoods;
+  /// The per-vertex inputs of the errors by cause (error_causes.h), made by run_case on the
+  /// first case of the mesh that needs them and shared by the others (the runner is sequential).
+  mutable std::unique_ptr<VertexCauses> causes;
 };
 
 /// Generated meshes keyed by (family, level, noise order, seed); generated on first use.
@@ -67,6 +71,8 @@ struct RunOptions {
   std::function<void(const std::string&)> message;
   /// Called with an experiment's rows as soon as its last case is done (e.g. to write its CSV).
   std::function<void(const Experiment&, const std::vector<ErrorRow>&)> experiment_done;
+  /// Called with an experiment's errors by cause (error_causes.h) right after experiment_done.
+  std::function<void(const Experiment&, const std::vector<CauseRow>&)> causes_done;
   /// Folder of the case store (case_store.h); empty = no store, every case is computed.
   std::string store_dir;
   bool force = false;  ///< recompute every case even if stored (the store is rewritten)
@@ -80,6 +86,7 @@ struct RunOptions {
 
 struct RunSummary {
   std::vector<ErrorRow> rows;                  ///< rows of the finished cases, in case order
+  std::vector<CauseRow> cause_rows;            ///< their errors by cause, in case order
   int total = 0;                               ///< cases in the run
   int reused = 0;                              ///< finished cases taken from the store
   int computed = 0;                            ///< finished cases computed in this run
@@ -96,8 +103,11 @@ std::vector<std::pair<Quantity, Norm>> panel_measures(const Experiment& e);
 
 /// Runs one case and returns its rows: every panel's (quantity, norm) on the case's vertex set,
 /// each with the wall time of the estimation (ErrorRow::seconds). A `method external` runs its
-/// command (external_estimator.h) and throws ExternalEstimatorError if it fails.
-std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads);
+/// command (external_estimator.h) and throws ExternalEstimatorError if it fails. With `causes`,
+/// also the errors by cause (error_causes.h) at the mesh's finest level (none at other levels,
+/// or when the method does not give H).
+std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads,
+                               std::vector<CauseRow>* causes = nullptr);
 
 /// radius-scaling (experiment.h): sets the method's neighbourhood parameter in `opt` to the
 /// radius e.radius_c h^e.radius_alpha, i.e. n = c h^(alpha - 1) edge lengths: rings n rounded to

@@ -134,6 +134,7 @@ TEST_F(CliShard, ThreeShardProcessesThenTheReportEqualOneRun) {
   const auto want = outputs(single), got = outputs(sharded);
   ASSERT_TRUE(want.count("REPORT.md") && want.count("shard.csv") && want.count("CLAIMS.md"));
   ASSERT_TRUE(want.count("plots/shard-h_torus-structured.svg"));
+  ASSERT_TRUE(want.count("errors_by_cause/shard.csv"));  // from the store's finest-level cases
   EXPECT_EQ(got.size(), want.size());
   for (const auto& [name, bytes] : want) {
     const auto it = got.find(name);

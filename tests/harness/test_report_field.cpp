@@ -65,5 +65,46 @@ TEST(ReportField, TablesRatesTimesAndWordsFollowTheNumbers) {
   EXPECT_TRUE(none.str().empty());
 }
 
+TEST(ReportField, TheCheapestEstimatorToATargetErrorFollowsTheRows) {
+  // Errors e0 (h/0.4)^rate at h = 0.4, 0.2, 0.1; times 5 us per vertex (400, 1600, 6400
+  // vertices: 2, 8, 32 ms), Fourth ten times that.
+  std::vector<ErrorRow> rows;
+  const std::string methods[] = {"Second", "Fourth", "Stalls"};
+  const double e0[] = {2e-2, 2e-2, 5e-2}, rate[] = {2.0, 4.0, 0.2}, slow[] = {1.0, 10.0, 1.0};
+  for (size_t i = 0; i < std::size(methods); ++i)
+    for (int level = 1; level <= 3; ++level) {
+      ErrorRow r;
+      r.method = methods[i];
+      r.level = level;
+      r.vertices = 100 << (2 * level);
+      r.h = 0.4 / (1 << (level - 1));
+      r.error = e0[i] * std::pow(r.h / 0.4, rate[i]);
+      r.seconds = slow[i] * 1e-6 * 5.0 * r.vertices;
+      rows.push_back(r);
+    }
+  // 1e-2: Second at level 2 (5e-3, 8 ms); Fourth reaches it at level 2 (1.25e-3, 80 ms).
+  CheapestToReach c = cheapest_to_reach(rows, 1e-2);
+  ASSERT_NE(c.best, nullptr);
+  EXPECT_EQ(c.best->method, "Second");
+  EXPECT_EQ(c.best->level, 2);
+  EXPECT_DOUBLE_EQ(c.best->seconds, 1e-6 * 5.0 * 1600);
+  ASSERT_NE(c.runner_up, nullptr);
+  EXPECT_EQ(c.runner_up->method, "Fourth");
+  EXPECT_EQ(c.runner_up->level, 2);
+  // 1e-3: Second reaches only 1.25e-3; Fourth at level 3 (7.8e-5); no runner-up.
+  c = cheapest_to_reach(rows, 1e-3);
+  ASSERT_NE(c.best, nullptr);
+  EXPECT_EQ(c.best->method, "Fourth");
+  EXPECT_EQ(c.best->level, 3);
+  EXPECT_EQ(c.runner_up, nullptr);
+  EXPECT_EQ(cheapest_to_reach(rows, 1e-5).best, nullptr);
+  // 1e-1 is reached by every method at once; 1e-2, 1e-3 and 1e-4 by some; 1e-5 by none.
+  EXPECT_EQ(time_targets(rows), (std::vector<double>{1e-2, 1e-3, 1e-4, 1e-5}));
+  // Rows without a time count for nothing.
+  for (ErrorRow& r : rows) r.seconds = std::nan("");
+  EXPECT_EQ(cheapest_to_reach(rows, 1e-2).best, nullptr);
+  EXPECT_TRUE(time_targets(rows).empty());
+}
+
 }  // namespace
 }  // namespace curvbench
