@@ -42,6 +42,21 @@ fi
 [[ -x $exe ]] || die "no $exe (make build first)"
 bash "$src/tools/deps.sh" slurm
 
+# Daemons of an earlier run that was killed before its exit trap ran: found by their pid files,
+# and stopped only if their command line names this folder.
+dir=$build/slurm
+for f in "$dir/munge/munged.pid" "$dir/slurmctld.pid" "$dir/slurmd.pid"; do
+  pid=$(cat "$f" 2> /dev/null || true)
+  if [[ $pid =~ ^[0-9]+$ ]] && tr '\0' ' ' < "/proc/$pid/cmdline" 2> /dev/null | grep -qF "$dir/"; then
+    say "stopping $(basename "$f" .pid) (pid $pid) left by an earlier run"
+    kill -TERM "$pid"
+    for _ in $(seq 50); do
+      kill -0 "$pid" 2> /dev/null || break
+      sleep 0.2
+    done
+    kill -KILL "$pid" 2> /dev/null || true
+  fi
+done
 for p in "$port" "$((port + 1))"; do
   if (exec 3<> "/dev/tcp/127.0.0.1/$p") 2> /dev/null; then
     die "port $p is in use (another Slurm?); set SLURM_TEST_PORT to a free pair of ports"
@@ -49,7 +64,6 @@ for p in "$port" "$((port + 1))"; do
 done
 
 start=$(date +%s)
-dir=$build/slurm
 rm -rf "$dir"
 mkdir -p "$dir"/{munge,state,spool,log,jobs}
 chmod 711 "$dir/munge" # munged: the socket's folder open to all, the key's not writable
