@@ -75,10 +75,11 @@ stop() {
   set +e
   trap - EXIT INT TERM
   if [[ ${#pids[@]} -gt 0 ]]; then
-    # Jobs first (their steps are slurmd's children), then the daemons, newest first.
+    # Jobs first (slurmstepd outlives slurmd otherwise), then the daemons, newest first.
     if [[ -n $(squeue -h -o %i 2> /dev/null) ]]; then
       say "cancelling the jobs left"
-      scancel --full --quiet $(squeue -h -o %A 2> /dev/null) 2> /dev/null
+      mapfile -t jobs < <(squeue -h -o %A 2> /dev/null)
+      scancel --full --quiet "${jobs[@]}" 2> /dev/null
       for _ in $(seq 30); do
         [[ -z $(squeue -h -o %i 2> /dev/null) ]] && break
         sleep 1
@@ -107,7 +108,7 @@ trap 'exit 130' INT
 trap 'exit 143' TERM
 
 logs() {
-  for f in "$dir"/log/*.log; do
+  for f in "$dir"/log/*; do
     echo "---- last lines of $f" >&2
     tail -n 20 "$f" >&2
   done
@@ -118,8 +119,7 @@ mungekey --create --keyfile="$dir/munge/munge.key"
 chmod 400 "$dir/munge/munge.key"
 munged --foreground --force --socket="$dir/munge/munge.socket" \
   --key-file="$dir/munge/munge.key" --pid-file="$dir/munge/munged.pid" \
-  --seed-file="$dir/munge/munged.seed" --log-file="$dir/log/munged.log" \
-  > "$dir/log/munged.out" 2>&1 &
+  --seed-file="$dir/munge/munged.seed" > "$dir/log/munged.out" 2>&1 &
 pids+=($!)
 for _ in $(seq 50); do
   [[ -S $dir/munge/munge.socket ]] && break
