@@ -9,6 +9,9 @@
 # `make fuzz` builds a libFuzzer target per mesh reader (OFF, OBJ, PLY) with clang in build-fuzz/
 # and runs each for FUZZ_SECONDS (default 60), failing on any crash, sanitizer report, timeout or
 # out-of-memory (fuzz/run.sh; seeds in tests/corpus/).
+# `make test-slurm` (root) starts a single-node Slurm in $(BUILD)/slurm/ and runs
+# tools/cluster/slurm_array.sh on the experiments of SLURM_EXPERIMENTS (default
+# tests/cluster/experiments), checking the outputs against one run (tools/cluster/test_slurm.sh).
 MAKEFLAGS += --no-print-directory
 BUILD ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
@@ -24,8 +27,10 @@ PREFIX ?= /usr/local
 FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 60
 FUZZ_CXX ?= clang++
+SLURM_EXPERIMENTS ?= tests/cluster/experiments
 
-.PHONY: sweeps all deps configure build test experiments bench clean format test-sanitize fuzz install realmeshes
+.PHONY: sweeps all deps configure build test experiments bench clean format test-sanitize fuzz install realmeshes \
+	test-slurm
 
 all: build
 
@@ -76,6 +81,9 @@ fuzz:
 	  -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" > /dev/null
 	@cmake --build $(FUZZ_BUILD) -j $(JOBS)
 	@bash fuzz/run.sh $(FUZZ_BUILD) $(FUZZ_SECONDS)
+
+test-slurm: build
+	@bash tools/cluster/test_slurm.sh $(BUILD) $(SLURM_EXPERIMENTS)
 
 format:
 	@clang-format -i $$(git ls-files '*.h' '*.cpp')

@@ -4,6 +4,7 @@
 #
 #   bash tools/deps.sh          what make build/test/experiments/bench/test-sanitize need
 #   bash tools/deps.sh fuzz     the same plus clang and libFuzzer (make fuzz)
+#   bash tools/deps.sh slurm    the same plus Slurm and MUNGE (make test-slurm)
 set -euo pipefail
 mode="${1:-build}"
 packages=(
@@ -29,8 +30,13 @@ case "$mode" in
     # (libclang_rt.fuzzer) and the clang sanitizer runtimes are in libclang-rt-dev.
     packages+=(clang libclang-rt-dev)
     ;;
+  slurm)
+    # slurm-wlm: slurmctld, slurmd and the client commands (sbatch, sinfo, squeue, scontrol);
+    # it depends on munge, the authentication daemon.
+    packages+=(slurm-wlm munge)
+    ;;
   *)
-    echo "usage: bash tools/deps.sh [build|fuzz]" >&2
+    echo "usage: bash tools/deps.sh [build|fuzz|slurm]" >&2
     exit 2
     ;;
 esac

@@ -1,9 +1,11 @@
-// A study sharded over processes (the cluster recipe of docs/cluster.md): `curvbench run --shard
-// K/3` as three concurrent processes into one case store (--cache), then `--report-only`, gives the
-// same bytes (CSVs, rates, REPORT.md, CLAIMS.md, plots) as one single-process run. Also: the case
-// ids and the partition (--list-cases), and the report of an incomplete store naming what is
-// missing.
+// A study sharded over processes (the cluster recipe of docs/cluster.md): three concurrent
+// `curvbench run --shard K/3` processes into one case store (--cache), then `--report-only`, give
+// the same bytes (CSVs, rates, REPORT.md, CLAIMS.md, plots) as one single-process run, checked by
+// tools/cluster/same_outputs.sh (also the Slurm test's check). Also: the case ids and the
+// partition (--list-cases), and the report of an incomplete store naming what is missing.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+
 #include <algorithm>
 
 #include <cstdlib>
@@ -13,6 +15,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tests/cli/cli_runner.h"
@@ -135,19 +138,31 @@ TEST_F(CliShard, ThreeShardProcessesThenTheReportEqualOneRun) {
   ASSERT_TRUE(want.count("REPORT.md") && want.count("shard.csv") && want.count("CLAIMS.md"));
   ASSERT_TRUE(want.count("plots/shard-h_torus-structured.svg"));
   ASSERT_TRUE(want.count("errors_by_cause/shard.csv"));  // from the store's finest-level cases
+  ASSERT_TRUE(want.count("timings/shard.csv"));
+  // The comparison is tools/cluster/same_outputs.sh's, which the Slurm test uses too: same files
+  // and bytes, except timings/ (each case's measured seconds: same rows, not the same seconds).
+  const auto same = [&](const fs::path& a, const fs::path& b) {
+    const fs::path out = root_ / "same.log";
+    const std::string cmd = std::string("bash ") + CURVBENCH_SOURCE_DIR +
+                            "/tools/cluster/same_outputs.sh " + a.string() + " " + b.string() +
+                            " > " + out.string() + " 2>&1";
+    const int status = std::system(cmd.c_str());
+    return std::make_pair(WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out));
+  };
+  const auto [code, text] = same(single, sharded);
+  EXPECT_EQ(code, 0) << text;
+  EXPECT_NE(text.find("same outputs: " + std::to_string(want.size()) + " files"), std::string::npos)
+      << text;
+  // The comparison can fail: one changed byte, one timings row more.
+  const fs::path copy = root_ / "copy";
+  fs::copy(sharded, copy, fs::copy_options::recursive);
+  std::ofstream(copy / "REPORT.md", std::ios::app) << ' ';
+  std::ofstream(copy / "timings" / "shard.csv", std::ios::app) << "row\n";
+  const auto [bad_code, bad_text] = same(single, copy);
+  EXPECT_EQ(bad_code, 1) << bad_text;
+  EXPECT_NE(bad_text.find("differs: REPORT.md"), std::string::npos) << bad_text;
+  EXPECT_NE(bad_text.find("differs (row count): timings/shard.csv"), std::string::npos) << bad_text;
   EXPECT_EQ(got.size(), want.size());
-  for (const auto& [name, bytes] : want) {
-    const auto it = got.find(name);
-    ASSERT_NE(it, got.end()) << name << " missing";
-    // timings/ holds each case's measured estimation time: same rows, not the same seconds.
-    if (name.rfind("timings/", 0) == 0) {
-      EXPECT_EQ(std::count(it->second.begin(), it->second.end(), '\n'),
-                std::count(bytes.begin(), bytes.end(), '\n'))
-          << name;
-      continue;
-    }
-    EXPECT_TRUE(it->second == bytes) << name << " differs from the single-process run";
-  }
 
   // A store missing one case: the report fails and names it.
   const auto ids = lines(run_cli("run shard --list-cases --shard 2/3" + common_).output);
