@@ -59,7 +59,7 @@ TEST(CliMeshOptions, TwoAspectsAreTwoFamiliesInTheResults) {
                                       "mesh torus-anisotropic levels=1 aspect=4\n"
                                       "mesh torus-anisotropic levels=1 aspect=16\n"
                                       "method lhf-2\npanel p \"H.\" H L2\n";
-  const auto r = run_cli("run " + (dir / "aniso.exp").string() + " --output " +
+  const auto r = run_cli("run aniso --experiments-dir " + dir.string() + " --output " +
                          (dir / "out").string() + " --no-readings --no-plots");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const std::string csv = slurp(dir / "out" / "aniso.csv");
