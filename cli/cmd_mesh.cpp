@@ -28,6 +28,7 @@ struct MeshOptions {
   int noise_order = 0;
   std::uint64_t seed = 1;
   bool jitter = false;
+  MeshShape shape;  // --aspect, --density: the mesh option table (meshgen/generate.h)
   std::string output;
   bool table4 = false;
   int max_grid = 256;
@@ -74,6 +75,7 @@ int write_generated_mesh(const MeshOptions& o) {
   spec.noise_order = o.noise_order;
   spec.seed = o.seed;
   spec.jitter = o.jitter;
+  spec.shape = o.shape;
   const GeneratedMesh gm = generate_mesh(spec);
   write_mesh(o.output, gm.mesh,
              ext == "ply" ? exact_properties(gm) : std::vector<VertexProperty>{});
@@ -167,6 +169,11 @@ Command add_mesh_command(CLI::App& app) {
   auto* jitter = sub->add_flag("--jitter", o->jitter,
                                "torus-structured only: jitter the vertices by +-0.15 cells "
                                "along the torus");
+  std::vector<const CLI::Option*> shape_flags;
+  for (const MeshOptionInfo& info : mesh_option_table())
+    shape_flags.push_back(sub->add_option_function<double>(
+        "--" + info.name, [o, name = info.name](double v) { set_mesh_option(o->shape, name, v); },
+        info.help + " (default " + format_g(info.default_value) + ")"));
   auto* output = sub->add_option("--output", o->output,
                                  "Output file, .off or .ply (PLY carries the exact point ex ey "
                                  "ez, exact normal nx ny nz, k1 k2 H K, principal direction "
@@ -177,9 +184,9 @@ Command add_mesh_command(CLI::App& app) {
   auto* max_grid = sub->add_option("--max-grid", o->max_grid,
                                    "With --table4: largest grid n (16, 32, 64, 128 or 256; "
                                    "default 256)");
-  auto* list = sub->add_flag("--list", o->list,
-                             "Print the family table (docs/mesh_families.md) and exit");
-  return [o, family, level, noise, seed, jitter, output, table, max_grid, list]() {
+  auto* list =
+      sub->add_flag("--list", o->list, "Print the family table (docs/mesh_families.md) and exit");
+  return [o, family, level, noise, seed, jitter, shape_flags, output, table, max_grid, list]() {
     if (list->count() > 0) {
       std::fputs(mesh_family_markdown().c_str(), stdout);
       return 0;
@@ -187,7 +194,9 @@ Command add_mesh_command(CLI::App& app) {
     if ((output->count() > 0) == (table->count() > 0))
       throw UsageError("mesh: give exactly one of --output FILE, --table4 and --list");
     if (table->count() > 0) {
-      for (const CLI::Option* opt : {family, level, noise, seed, jitter})
+      std::vector<const CLI::Option*> given = {family, level, noise, seed, jitter};
+      given.insert(given.end(), shape_flags.begin(), shape_flags.end());
+      for (const CLI::Option* opt : given)
         if (opt->count() > 0)
           throw UsageError("mesh: " + opt->get_name() + " does not apply to --table4");
       const int n = o->max_grid;

@@ -226,14 +226,14 @@ Command add_run_command(CLI::App& app) {
       const char* method = (c.method->is_external() ? c.method->label : c.method->spec).c_str();
       if (p.reused)
         std::fprintf(stderr, "[%3d/%3d] %-9s %-20s L%d %-7s %7d verts  reused\n", p.done, p.total,
-                     c.experiment->name.c_str(), c.mesh->family.c_str(), c.level, method,
+                     c.experiment->name.c_str(), c.mesh->label().c_str(), c.level, method,
                      p.vertices);
       else if (p.skipped)
         std::fprintf(stderr, "[%3d/%3d] %-9s %-20s L%d %-7s  skipped (cannot run here)\n", p.done,
-                     p.total, c.experiment->name.c_str(), c.mesh->family.c_str(), c.level, method);
+                     p.total, c.experiment->name.c_str(), c.mesh->label().c_str(), c.level, method);
       else
         std::fprintf(stderr, "[%3d/%3d] %-9s %-20s L%d %-7s %7d verts %6.2fs  elapsed %s  ETA %s\n",
-                     p.done, p.total, c.experiment->name.c_str(), c.mesh->family.c_str(), c.level,
+                     p.done, p.total, c.experiment->name.c_str(), c.mesh->label().c_str(), c.level,
                      method, p.vertices, p.case_seconds, duration(p.elapsed_seconds).c_str(),
                      duration(p.eta_seconds).c_str());
     };

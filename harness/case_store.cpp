@@ -130,7 +130,7 @@ std::string case_inputs(const RunCase& c) {
   for (const auto& [q, norm] : panel_measures(e))
     measures += std::string(measures.empty() ? "" : ",") + to_string(q) + "/" + to_string(norm);
   return "experiment=" + escaped(e.name) + ";family=" + escaped(c.mesh->family) +
-         ";level=" + std::to_string(c.level) +
+         mesh_shape_key(c.mesh->family, c.mesh->shape) + ";level=" + std::to_string(c.level) +
          ";noise-order=" + std::to_string(e.noise_order_of(*c.mesh)) +
          ";noise-seed=" + std::to_string(e.noise_seed) +
          (e.noise_model.is_default()
@@ -159,7 +159,7 @@ std::string case_id(const RunCase& c) {
   const ExperimentMethod& m = *c.method;
   const std::string method = file_safe(m.label.empty() ? m.spec : m.label);
   const std::string options = hex64(fnv1a64(method_inputs(m))).substr(0, 8);
-  return file_safe(c.experiment->name) + "/" + file_safe(c.mesh->family) + "_L" +
+  return file_safe(c.experiment->name) + "/" + file_safe(c.mesh->label()) + "_L" +
          std::to_string(c.level) + "_" + method + "_" + options;
 }
 
@@ -220,10 +220,10 @@ std::optional<std::vector<ErrorRow>> CaseStore::load(const RunCase& c,
     for (auto& r : rows) r.seconds = seconds;
   }
   for (const auto& r : rows)
-    if (r.experiment != c.experiment->name || r.family != c.mesh->family || r.level != c.level)
+    if (r.experiment != c.experiment->name || r.family != c.mesh->label() || r.level != c.level)
       return std::nullopt;
   for (const auto& r : cause_rows)
-    if (r.experiment != c.experiment->name || r.family != c.mesh->family || r.level != c.level)
+    if (r.experiment != c.experiment->name || r.family != c.mesh->label() || r.level != c.level)
       return std::nullopt;
   if (causes) *causes = std::move(cause_rows);
   return rows;

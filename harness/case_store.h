@@ -3,7 +3,8 @@
 // of everything that determines them, so that a run that was interrupted, crashed or killed
 // redoes only the cases that are missing or stale.
 //
-//   <store>/<experiment>/<family>_L<level>_<method>_<8 hex>.csv
+//   <store>/<experiment>/<family>_L<level>_<method>_<8 hex>.csv   (<family>: the mesh line's
+//     label, with its mesh options: torus-anisotropic-A16)
 //     line 1   "# curvbench case: inputs <16 hex> content <16 hex>"
 //     line 2   "# " + case_inputs(c) + ";code=" + code version   (for people; not parsed)
 //     line 3   "# estimate-seconds <s>": the case's estimation time when it was computed; a
@@ -48,9 +49,10 @@ std::string hex64(std::uint64_t x);
 const std::string& code_version();
 
 /// One line naming every input that determines the rows of case c, except the code version:
-/// experiment name, mesh family, level, noise order and seed, noisy flag, vertex sets, method
-/// spec, label and every estimator option, the (quantity, norm) pairs of the panels, and at the
-/// mesh's finest level that the errors by cause are kept (error_causes.h). Titles,
+/// experiment name, mesh family and the mesh options it takes (given or default: ";aspect=4"),
+/// level, noise order and seed, noisy flag, vertex sets, method spec, label and every estimator
+/// option, the (quantity, norm) pairs of the panels, and at the mesh's finest level that the
+/// errors by cause are kept (error_causes.h). Titles,
 /// captions and the thread count do not change the rows and are not included.
 std::string case_inputs(const RunCase& c);
 

@@ -208,7 +208,7 @@ std::string cause_tables_markdown(const Experiment& e, const std::string& result
     std::vector<std::string> methods;
     std::map<std::string, std::map<std::string, const CauseRow*>> of;  // method -> "cause/bin"
     for (const CauseRow& r : rows) {
-      if (r.family != m.family) continue;
+      if (r.family != m.label()) continue;
       if (!of.count(r.method)) methods.push_back(r.method);
       of[r.method][std::string(r.cause) + "/" + r.bin] = &r;
     }
@@ -243,7 +243,7 @@ std::string cause_tables_markdown(const Experiment& e, const std::string& result
         counted_by = &method;
         break;
       }
-    md << "**`" << m.family << "`**, level " << first.level << " (" << first.vertices
+    md << "**`" << m.label() << "`**, level " << first.level << " (" << first.vertices
        << " vertices)\n\n| method |";
     for (const CauseBin& b : cause_bins())
       md << " " << (std::string(b.cause) == "valence" ? "val " : "") << b.bin

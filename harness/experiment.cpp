@@ -144,13 +144,24 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
               throw InputError(where + ": noise-order must be 0, 2 or 3");
             continue;
           }
-          if (k != "levels") throw InputError(where + ": expected levels=1,2,3,4 [noise-order=K]");
+          if (k != "levels" && std::any_of(mesh_option_table().begin(), mesh_option_table().end(),
+                                           [&](const MeshOptionInfo& o) { return o.name == k; })) {
+            set_mesh_option(m.shape, k, parse_double(v, where));
+            continue;
+          }
+          if (k != "levels") {
+            std::string options;
+            for (const MeshOptionInfo& o : mesh_option_table())
+              options += " [" + o.name + "=" + o.letter + "]";
+            throw InputError(where + ": expected levels=1,2,3,4 [noise-order=K]" + options);
+          }
           std::stringstream ss(v);
           std::string item;
           while (std::getline(ss, item, ','))
             m.levels.push_back(static_cast<int>(parse_integer(item, where)));
         }
         if (m.levels.empty()) throw InputError(where + ": no levels given");
+        check_mesh_shape(m.family, m.shape);
         e.meshes.push_back(m);
       } else if (key == "method") {
         need(2);

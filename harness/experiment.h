@@ -5,9 +5,12 @@
 //   name        fig03-05                        unique id (also the CSV name)
 //   title       "Noise-free torus, degree 2"    one line
 //   section     5.1                             paper section
-//   mesh        torus-structured levels=1,2,3,4 [noise-order=K]
+//   mesh        torus-structured levels=1,2,3,4 [noise-order=K] [aspect=A] [density=D]
 //               one line per mesh family (meshgen families); noise-order=K (0, 2 or 3) overrides
-//               the experiment's noise order for this family (e.g. noise on the bump only)
+//               the experiment's noise order for this family (e.g. noise on the bump only);
+//               the mesh options of the family (meshgen/generate.h, mesh_option_table()) as
+//               name=value. The results name the meshes by ExperimentMesh::label()
+//               (torus-anisotropic-A16), so lines of one family with other options stay apart
 //   noise       order=3 seed=11 [alpha=gaussian|uniform] [scale=0.1]
 //               optional controlled noise alpha h^k along the normal (meshgen/noise.h; paper
 //               §5.3, docs/algorithms.md §10.3): alpha = scale N(0,1) or scale U[0,1)
@@ -17,8 +20,8 @@
 //   radius-scaling alpha=0.5 c=0.44             optional: each method's neighbourhood radius is
 //               c h^alpha in the mesh's units (h its mean edge length) at every level: rings
 //               c h^(alpha-1) rounded to half rings (>= 1) for the fits, to whole rings for the
-//               quadric, ball-factor c h^(alpha-1) for the normal cycle and ICC; the 1-ring methods keep
-//               their 1-ring
+//               quadric, ball-factor c h^(alpha-1) for the normal cycle and ICC; the 1-ring methods
+//               keep their 1-ring
 //   method      lhf-2 [rings=2.5] [vertex-set=interior]  one line per method and degree
 //               any estimator option of role "result" as name=value (rings, centre=no,
 //               qr-tol=1e-8, vertex-normals=max, ball-factor=2, ...: the table of
@@ -41,6 +44,7 @@
 #include <vector>
 
 #include "harness/metrics.h"
+#include "meshgen/generate.h"
 #include "meshgen/noise.h"
 #include "methods/estimator.h"
 
@@ -54,6 +58,10 @@ struct ExperimentMesh {
   std::vector<int> levels;
   int noise_order = -1;  ///< `noise-order=K` on the mesh line: this family's controlled noise
                          ///< order instead of the experiment's (0: none); -1: the experiment's
+  MeshShape shape = {};  ///< the mesh options of the line (aspect=A, density=D)
+
+  /// The results' family column, report tables, plot names and case ids: mesh_label().
+  std::string label() const { return mesh_label(family, shape); }
 };
 
 struct ExperimentMethod {

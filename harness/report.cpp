@@ -349,7 +349,7 @@ std::string write_report(const std::vector<Experiment>& experiments, const Repor
         std::vector<const ErrorRow*> sel;
         std::vector<ErrorRow> sel_rows;
         for (const auto& r : rows)
-          if (r.family == m.family && r.quantity == to_string(panel.quantity) &&
+          if (r.family == m.label() && r.quantity == to_string(panel.quantity) &&
               r.norm == to_string(panel.norm)) {
             sel.push_back(&r);
             sel_rows.push_back(r);
@@ -362,7 +362,7 @@ std::string write_report(const std::vector<Experiment>& experiments, const Repor
           levels.insert(r->level);
           any_at[r->level] = r;
         }
-        md << "**" << family_caption(m.family) << "** (`" << m.family << "`, vertex set "
+        md << "**" << family_caption(m.family) << "** (`" << m.label() << "`, vertex set "
            << sel.front()->vertex_set << (sel.front()->noise != "none" ? ", noise " : "")
            << (sel.front()->noise != "none" ? sel.front()->noise : "") << ")\n\n| method |";
         for (int l : levels) md << " level " << l << " |";
@@ -380,7 +380,7 @@ std::string write_report(const std::vector<Experiment>& experiments, const Repor
           md << " **" << fixed(series_rate(s)) << "** | " << fixed(series_halving_rate(s))
              << " |\n";
         }
-        const std::string base = panel.id + "_" + m.family;
+        const std::string base = panel.id + "_" + m.label();
         md << "\n";
         if (options.plots) {
           if (options.stop && options.stop()) return "";
@@ -389,11 +389,11 @@ std::string write_report(const std::vector<Experiment>& experiments, const Repor
           const size_t after_fig = panel.caption.rfind("Fig. ", 0) == 0 ? 5 : 0;
           const auto cut = panel.caption.find(". ", after_fig);
           const std::string title = cut == std::string::npos
-                                        ? panel.caption + " [" + m.family + "]"
-                                        : panel.caption.substr(0, cut + 1) + " [" + m.family +
+                                        ? panel.caption + " [" + m.label() + "]"
+                                        : panel.caption.substr(0, cut + 1) + " [" + m.label() +
                                               "]\\n" + panel.caption.substr(cut + 2);
           if (render_plot(dir + "/plots/" + base, title, sel_rows))
-            md << "![" << panel.id << " " << m.family << "](plots/" << base << ".png) "
+            md << "![" << panel.id << " " << m.label() << "](plots/" << base << ".png) "
                << "([svg](plots/" << base << ".svg))\n\n";
           else
             ++missing_plots;

@@ -183,7 +183,7 @@ bool append_field_estimators_section(std::ostringstream& md,
       std::set<int> levels;
       const ErrorRow* any = nullptr;
       for (const ErrorRow& r : rows) {
-        if (r.family != mesh.family) continue;
+        if (r.family != mesh.label()) continue;
         any = &r;
         levels.insert(r.level);
         auto [it, inserted] = index.try_emplace(r.method, methods.size());
@@ -192,7 +192,7 @@ bool append_field_estimators_section(std::ostringstream& md,
       }
       if (any == nullptr) continue;
       const int finest = *levels.rbegin();
-      md << "### " << e.name << ": `" << mesh.family << "`"
+      md << "### " << e.name << ": `" << mesh.label() << "`"
          << (any->noise != "none" ? " (noise " + any->noise + ")" : std::string()) << "\n\n"
          << "Finest level " << finest << ": " << any->vertices
          << " vertices, h = " << error_text(any->h) << "; levels " << *levels.begin() << "-"
@@ -216,7 +216,7 @@ bool append_field_estimators_section(std::ostringstream& md,
             md << " " << error_text(s->rbegin()->second->error) << " ("
                << rate_text(rates(*s).first) << ") |";
           }
-        const auto t = us_per_vertex.find({mesh.family, finest, m.method});
+        const auto t = us_per_vertex.find({mesh.label(), finest, m.method});
         md << " " << (t == us_per_vertex.end() ? "n/a" : rate_text(t->second)) << " |\n";
       }
       md << "\n";
@@ -257,7 +257,7 @@ bool append_field_estimators_section(std::ostringstream& md,
           }
         }
       if (best != nullptr) {
-        const auto t = us_per_vertex.find({mesh.family, finest, best->method});
+        const auto t = us_per_vertex.find({mesh.label(), finest, best->method});
         md << "- Smallest L2 error in H at level " << finest << ": " << best->method << " ("
            << error_text(best_error)
            << (t == us_per_vertex.end() ? "" : ", " + rate_text(t->second) + " us/vertex")
@@ -270,7 +270,7 @@ bool append_field_estimators_section(std::ostringstream& md,
       for (const MethodRows& m : methods)
         if (const auto* s = m.find(Quantity::H, Norm::L2))
           for (const auto& [level, r] : *s) {
-            const auto t = us_per_vertex.find({mesh.family, level, m.method});
+            const auto t = us_per_vertex.find({mesh.label(), level, m.method});
             if (t == us_per_vertex.end()) continue;
             ErrorRow p = *r;
             p.h = t->second;  // the x axis of the plot
@@ -278,7 +278,7 @@ bool append_field_estimators_section(std::ostringstream& md,
           }
       if (options.plots && !frontier.empty()) {
         if (options.stop && options.stop()) return false;
-        const std::string base = "field-frontier_" + e.name + "_" + mesh.family;
+        const std::string base = "field-frontier_" + e.name + "_" + mesh.label();
         PlotAxis axis;
         axis.label = "time per vertex (microseconds)";
         axis.reversed = false;
@@ -286,7 +286,7 @@ bool append_field_estimators_section(std::ostringstream& md,
         axis.reference_slopes = false;
         if (render_plot(dir + "/plots/" + base,
                         "Accuracy versus cost: L2 error in H against time per vertex [" +
-                            mesh.family + (any->noise != "none" ? ", noise " + any->noise : "") +
+                            mesh.label() + (any->noise != "none" ? ", noise " + any->noise : "") +
                             "]",
                         frontier, axis))
           md << "![" << base << "](plots/" << base << ".png) ([svg](plots/" << base << ".svg))\n\n";

@@ -81,8 +81,9 @@ std::vector<std::pair<Quantity, Norm>> panel_measures(const Experiment& e) {
 }
 
 const ScoredMesh& MeshCache::get(const std::string& family, int level, int noise_order,
-                                 std::uint64_t seed, const NoiseModel& model) {
-  const auto key = std::make_tuple(family, level, noise_order, seed, model);
+                                 std::uint64_t seed, const NoiseModel& model,
+                                 const MeshShape& shape) {
+  const auto key = std::make_tuple(family, level, noise_order, seed, model, shape);
   auto it = meshes_.find(key);
   if (it != meshes_.end()) return *it->second;
   MeshSpec spec;
@@ -91,6 +92,7 @@ const ScoredMesh& MeshCache::get(const std::string& family, int level, int noise
   spec.noise_order = noise_order;
   spec.seed = seed;
   spec.noise_model = model;
+  spec.shape = shape;
   auto scored = std::make_unique<ScoredMesh>();
   scored->generated = generate_mesh(spec);
   const auto& g = scored->generated;
@@ -126,8 +128,8 @@ std::vector<RunCase> expand_cases(const std::vector<Experiment>& experiments) {
 std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads,
                                std::vector<CauseRow>* causes) {
   const Experiment& e = *c.experiment;
-  const ScoredMesh& sm =
-      cache.get(c.mesh->family, c.level, e.noise_order_of(*c.mesh), e.noise_seed, e.noise_model);
+  const ScoredMesh& sm = cache.get(c.mesh->family, c.level, e.noise_order_of(*c.mesh), e.noise_seed,
+                                   e.noise_model, c.mesh->shape);
   const Mesh& mesh = sm.generated.mesh;
 
   using clock = std::chrono::steady_clock;
@@ -141,7 +143,7 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads,
     ExternalRun run;
     run.command = c.method->command;
     run.timeout_seconds = c.method->timeout_seconds;
-    run.case_name = "experiment " + e.name + ", " + c.mesh->family + " level " +
+    run.case_name = "experiment " + e.name + ", " + c.mesh->label() + " level " +
                     std::to_string(c.level) + ", method " + c.method->label;
     ExternalResult ext = run_external_estimator(mesh, run);
     est = std::move(ext.estimates);
@@ -191,7 +193,7 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads,
   ErrorRow like;  // the columns every row of the case shares
   like.experiment = e.name;
   like.surface = sm.generated.surface->name();
-  like.family = c.mesh->family;
+  like.family = c.mesh->label();
   like.level = c.level;
   like.vertices = mesh.num_vertices();
   like.h = mesh.mean_edge_length();

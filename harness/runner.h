@@ -32,14 +32,15 @@ struct ScoredMesh {
   mutable std::unique_ptr<VertexCauses> causes;
 };
 
-/// Generated meshes keyed by (family, level, noise order, seed); generated on first use.
+/// Generated meshes keyed by (family, level, noise order, seed, noise model, mesh options);
+/// generated on first use.
 class MeshCache {
  public:
   const ScoredMesh& get(const std::string& family, int level, int noise_order, std::uint64_t seed,
-                        const NoiseModel& model = {});
+                        const NoiseModel& model = {}, const MeshShape& shape = {});
 
  private:
-  std::map<std::tuple<std::string, int, int, std::uint64_t, NoiseModel>,
+  std::map<std::tuple<std::string, int, int, std::uint64_t, NoiseModel, MeshShape>,
            std::unique_ptr<ScoredMesh>>
       meshes_;
 };

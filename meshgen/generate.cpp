@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
 
 #include "core/errors.h"
+#include "core/text.h"
 #include "meshgen/bump_grid.h"
 #include "meshgen/bump_irregular.h"
 #include "meshgen/noise.h"
@@ -17,9 +19,10 @@
 #include "meshgen/torus_unstructured_minval5.h"
 
 // clang-format off
-// X(name, max_level, generator, caption, paper_role, noise_label): generator is a function
-// `GeneratedMesh generator(const MeshSpec&)` (declared by the line; defined below or in the
-// family's own file), called with a valid level; the noise of MeshSpec is added afterwards.
+// X(name, max_level, generator, caption, paper_role, noise_label[, mesh options]): generator is
+// a function `GeneratedMesh generator(const MeshSpec&)` (declared by the line; defined below or
+// in the family's own file), called with a valid level and valid mesh options; the noise of
+// MeshSpec is added afterwards. The mesh options are names of mesh_option_table() ("aspect").
 #define CURVBENCH_MESH_FAMILIES(X)                                                                \
   X("torus-structured", 6, generate_torus_structured,                                             \
     "perfectly structured torus (identical stencils everywhere; not in the paper)",               \
@@ -45,7 +48,21 @@
     "well-shaped torus without valence 3 or 4 (torus-unstructured after edge flips and "          \
     "relaxation)",                                                                                \
     "the well-shaped torus of sections 5.1 and 5.3, read as a mesh without vertices of "          \
-    "valence 3 or 4 (an alternative to torus-unstructured)", "none")                         \
+    "valence 3 or 4 (an alternative to torus-unstructured)", "none")                             \
+  X("torus-anisotropic", 4, generate_torus_anisotropic,                                           \
+    "anisotropic torus (equilateral triangles stretched A times along the parallels; not in the " \
+    "paper)",                                                                                     \
+    "not in the paper (triangles of aspect ratio A, option aspect=A, default 4)", "none",         \
+    "aspect")                                                                                     \
+  X("bump-anisotropic", 4, generate_bump_anisotropic,                                             \
+    "anisotropic bump mesh (equilateral triangles stretched A times along x; not in the paper)",  \
+    "not in the paper (triangles of aspect ratio A, option aspect=A, default 4)", "none",         \
+    "aspect")                                                                                     \
+  X("bump-density", 4, generate_bump_density,                                                     \
+    "graded bump mesh (edge length growing D times from x = 0 to x = 1, Delaunay; not in the "    \
+    "paper)",                                                                                     \
+    "not in the paper (edge length varying by a factor D, option density=D, default 8)", "none",  \
+    "density")                                                                                     \
   X("lantern", 4, generate_lantern,                                                               \
     "Schwarz lantern of a cylinder (slices ~ sectors: normals and area converge)",                \
     "not in the paper (hard meshes, issue: meshes that break estimators)", "none")                \
@@ -114,14 +131,24 @@ struct FamilyEntry {
 
 // The family table: the lines of CURVBENCH_MESH_FAMILIES, then register_mesh_family() additions.
 std::vector<FamilyEntry>& family_entries() {
-#define CURVBENCH_FAMILY_ENTRY(name, max_level, generator, caption, role, noise) \
-  FamilyEntry{{name, max_level, caption, role, noise}, &generator},
+#define CURVBENCH_FAMILY_ENTRY(name, max_level, generator, caption, role, noise, ...) \
+  FamilyEntry{{name, max_level, caption, role, noise, {__VA_ARGS__}}, &generator},
   static std::vector<FamilyEntry> entries = {CURVBENCH_MESH_FAMILIES(CURVBENCH_FAMILY_ENTRY)};
 #undef CURVBENCH_FAMILY_ENTRY
   return entries;
 }
 
 constexpr int kMaxNoiseOrder = 4;
+
+const MeshOptionInfo* find_option(const std::string& name) {
+  for (const MeshOptionInfo& o : mesh_option_table())
+    if (o.name == name) return &o;
+  return nullptr;
+}
+
+bool takes(const MeshFamilyInfo& family, const std::string& option) {
+  return std::find(family.options.begin(), family.options.end(), option) != family.options.end();
+}
 
 const FamilyEntry* find_entry(const std::string& name) {
   for (const FamilyEntry& f : family_entries())
@@ -153,6 +180,9 @@ void register_mesh_family(const MeshFamilyInfo& info, MeshGenerator generator) {
     throw UsageError("register_mesh_family: a family needs a name, levels and a generator");
   if (find_entry(info.name) != nullptr)
     throw UsageError("register_mesh_family: family '" + info.name + "' exists already");
+  for (const std::string& o : info.options)
+    if (find_option(o) == nullptr)
+      throw UsageError("register_mesh_family: unknown mesh option '" + o + "'");
   family_entries().push_back({info, generator});
 }
 
@@ -174,6 +204,72 @@ std::string mesh_family_markdown() {
   return md;
 }
 
+const std::vector<MeshOptionInfo>& mesh_option_table() {
+  static const std::vector<MeshOptionInfo> table = {
+      {"aspect", "A", kDefaultAspect, 1.0, false,
+       "torus-anisotropic, bump-anisotropic: aspect ratio A > 1 of the triangles (equilateral "
+       "ones stretched A times along one parameter direction)",
+       &MeshShape::aspect},
+      {"density", "D", kDefaultDensity, 1.0, true,
+       "bump-density: factor D >= 1 by which the edge length grows from one side of the domain "
+       "to the other",
+       &MeshShape::density},
+  };
+  return table;
+}
+
+void set_mesh_option(MeshShape& shape, const std::string& name, double value) {
+  const MeshOptionInfo* o = find_option(name);
+  if (o == nullptr) {
+    std::string valid;
+    for (const MeshOptionInfo& m : mesh_option_table())
+      valid += (valid.empty() ? "" : ", ") + m.name;
+    throw UsageError("unknown mesh option '" + name + "' (valid: " + valid + ")");
+  }
+  shape.*(o->field) = value;
+}
+
+void check_mesh_shape(const std::string& family, const MeshShape& shape) {
+  for (const MeshOptionInfo& o : mesh_option_table()) {
+    const std::optional<double>& v = shape.*(o.field);
+    if (!v) continue;
+    const MeshFamilyInfo& f = mesh_family(family);
+    if (!takes(f, o.name)) {
+      std::string which;
+      for (const FamilyEntry& e : family_entries())
+        if (takes(e.info, o.name)) which += (which.empty() ? "" : ", ") + e.info.name;
+      throw UsageError(o.name + " " + format_g(*v) + " does not apply to " + family + " (only to " +
+                       which + ")");
+    }
+    if (!std::isfinite(*v) || *v < o.lowest || (*v == o.lowest && !o.lowest_valid))
+      throw UsageError(o.name + " " + format_g(*v) + " out of range: must be " +
+                       (o.lowest_valid ? ">= " : "> ") + format_g(o.lowest));
+  }
+}
+
+std::string mesh_label(const std::string& family, const MeshShape& shape) {
+  const FamilyEntry* f = find_entry(family);
+  std::string label = family;
+  if (f == nullptr) return label;
+  for (const MeshOptionInfo& o : mesh_option_table())
+    if (takes(f->info, o.name))
+      label += "-" + o.letter + format_g((shape.*(o.field)).value_or(o.default_value));
+  return label;
+}
+
+std::string mesh_shape_key(const std::string& family, const MeshShape& shape) {
+  const FamilyEntry* f = find_entry(family);
+  std::string key;
+  if (f == nullptr) return key;
+  for (const MeshOptionInfo& o : mesh_option_table())
+    if (takes(f->info, o.name)) {
+      char buf[40];
+      std::snprintf(buf, sizeof buf, "%.17g", (shape.*(o.field)).value_or(o.default_value));
+      key += ";" + o.name + "=" + buf;
+    }
+  return key;
+}
+
 GeneratedMesh generate_mesh(const MeshSpec& spec) {
   const FamilyEntry& family = find_family(spec.family);
   const int max_level = family.info.max_level;
@@ -185,6 +281,7 @@ GeneratedMesh generate_mesh(const MeshSpec& spec) {
                      " out of range (valid: 0 = none, 1.." + std::to_string(kMaxNoiseOrder) + ")");
   if (spec.jitter && spec.family != "torus-structured")
     throw UsageError("jitter applies only to the torus-structured family, not " + spec.family);
+  check_mesh_shape(spec.family, spec.shape);
   GeneratedMesh gm = family.generate(spec);
   if (spec.noise_order > 0)
     gm = add_normal_noise(gm, spec.noise_order, spec.seed, spec.noise_model);

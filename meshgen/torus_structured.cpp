@@ -24,6 +24,24 @@ int torus_structured_columns(int level) {
   return 64 << (level - 1);
 }
 
+FaceMatrix staggered_torus_faces(int nu, int nv) {
+  auto idx = [nu, nv](int i, int j) { return (j % nv) * nu + (i % nu); };
+  FaceMatrix F(2 * nu * nv, 3);
+  int f = 0;
+  for (int j = 0; j < nv; ++j) {
+    for (int i = 0; i < nu; ++i) {
+      if (j % 2 == 0) {
+        F.row(f++) << idx(i, j), idx(i + 1, j), idx(i, j + 1);
+        F.row(f++) << idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1);
+      } else {
+        F.row(f++) << idx(i, j), idx(i + 1, j + 1), idx(i, j + 1);
+        F.row(f++) << idx(i, j), idx(i + 1, j), idx(i + 1, j + 1);
+      }
+    }
+  }
+  return F;
+}
+
 GeneratedMesh torus_structured(int level, bool jitter, std::uint64_t seed) {
   if (level < 1 || level > kMaxLevel)
     throw UsageError("torus-structured: level " + std::to_string(level) + " out of range [1, " +
@@ -49,20 +67,7 @@ GeneratedMesh torus_structured(int level, bool jitter, std::uint64_t seed) {
     }
   }
 
-  auto idx = [nu, nv](int i, int j) { return (j % nv) * nu + (i % nu); };
-  FaceMatrix F(2 * nu * nv, 3);
-  int f = 0;
-  for (int j = 0; j < nv; ++j) {
-    for (int i = 0; i < nu; ++i) {
-      if (j % 2 == 0) {
-        F.row(f++) << idx(i, j), idx(i + 1, j), idx(i, j + 1);
-        F.row(f++) << idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1);
-      } else {
-        F.row(f++) << idx(i, j), idx(i + 1, j + 1), idx(i, j + 1);
-        F.row(f++) << idx(i, j), idx(i + 1, j), idx(i + 1, j + 1);
-      }
-    }
-  }
+  FaceMatrix F = staggered_torus_faces(nu, nv);
 
   GeneratedMesh out;
   out.exact_points = V;

@@ -27,6 +27,10 @@ namespace curvbench {
 int torus_structured_rows(int level);     // n_v = 22 * 2^(level-1)
 int torus_structured_columns(int level);  // n_u = 64 * 2^(level-1)
 
+/// The staggered triangles above for n_u points per row and n_v rows (n_v even, both >= 3):
+/// 2 n_u n_v faces, ccw in (u, v). Shared with torus-anisotropic (anisotropic.h).
+FaceMatrix staggered_torus_faces(int nu, int nv);
+
 /// Builds the level-`level` mesh (level >= 1; throws UsageError otherwise).
 GeneratedMesh torus_structured(int level, bool jitter = false, std::uint64_t seed = 1);
 

@@ -3,7 +3,8 @@
 //   estimate(V, F, method="lhf", **options) -> Estimate   (options: the estimator option table,
 //            include/curvbench/estimator_options.h: degree=4, rings=2.5, vertex_normals="max", ...)
 //   read_mesh(path) -> (V, F)
-//   mesh(family, level, noise_order=0, seed=1) -> (V, F, Exact)
+//   mesh(family, level, noise_order=0, seed=1, **options) -> (V, F, Exact)   (options: the mesh
+//            option table of meshgen/generate.h: aspect=16, density=4)
 //   score(exact_or_mesh, estimate, vertex_set="all") -> {quantity: {"L2", "Linf", ...}}
 //   methods(), __version__
 //
@@ -26,6 +27,7 @@
 
 #include "api/make_api_estimator.h"
 #include "core/errors.h"
+#include "core/text.h"
 #include "curvbench/curvbench.h"
 #include "harness/metrics.h"
 #include "mesh/io.h"
@@ -168,9 +170,9 @@ struct PyExact {
 
 py::array numpy_status_names(const py::array_t<std::uint8_t>& codes) {
   const py::module_ np = py::module_::import("numpy");
-  const py::object names = np.attr("array")(py::make_tuple(
-      "ok", "degree_reduced", "failed", "excluded", "disk_cut", "sign_undetermined", "partial",
-      "reprojected"));
+  const py::object names =
+      np.attr("array")(py::make_tuple("ok", "degree_reduced", "failed", "excluded", "disk_cut",
+                                      "sign_undetermined", "partial", "reprojected"));
   return names.attr("__getitem__")(codes);
 }
 
@@ -264,12 +266,23 @@ py::tuple py_read_mesh(const std::string& path) {
   return mesh_arrays(mesh);
 }
 
-py::tuple py_mesh(const std::string& family, int level, int noise_order, std::uint64_t seed) {
+py::tuple py_mesh(const std::string& family, int level, int noise_order, std::uint64_t seed,
+                  const py::kwargs& kwargs) {
   MeshSpec spec;
   spec.family = family;
   spec.level = level;
   spec.noise_order = noise_order;
   spec.seed = seed;
+  for (const auto& [key, value] : kwargs) {
+    if (value.is_none()) continue;  // None: the default
+    const std::string name = key.cast<std::string>();
+    const bool number = !py::isinstance<py::bool_>(value) &&
+                        (py::hasattr(value, "__index__") || py::hasattr(value, "__float__"));
+    if (!number)
+      throw UsageError("mesh option " + name + ": expected a number, got " +
+                       py::str(py::type::of(value)).cast<std::string>());
+    set_mesh_option(spec.shape, name, value.cast<double>());
+  }
   GeneratedMesh g = generate_mesh(spec);
   PyExact x;
   const int n = g.mesh.num_vertices();
@@ -371,14 +384,15 @@ PYBIND11_MODULE(curvbench, m) {
       .def_readonly("degree", &PyEstimate::degree, "(n,) int32 fitting degree actually used.")
       .def_readonly("points", &PyEstimate::points, "(n,) int32 points in each fit.")
       .def_readonly("ring", &PyEstimate::ring, "(n,) float64 ring actually used.")
-      .def_readonly("status", &PyEstimate::status,
-                    "(n,) str: 'ok', 'degree_reduced' (finite values at a lower degree), "
-                    "'failed' (no estimate: every value NaN), 'excluded' (NaN by design, e.g. Xu "
-                    "at a boundary vertex), 'disk_cut' (fitted on part of a ring that was not a "
-                    "disk), 'sign_undetermined' (finite, but the surface there cannot be "
-                    "oriented) or 'partial' (what can be determined there is finite, the rest "
-                    "NaN, e.g. Meyer's directions where its tensor fit is singular) or 'reprojected' "
-                    "(LSCM: the map folded the ring, fitted on its projection instead).")
+      .def_readonly(
+          "status", &PyEstimate::status,
+          "(n,) str: 'ok', 'degree_reduced' (finite values at a lower degree), "
+          "'failed' (no estimate: every value NaN), 'excluded' (NaN by design, e.g. Xu "
+          "at a boundary vertex), 'disk_cut' (fitted on part of a ring that was not a "
+          "disk), 'sign_undetermined' (finite, but the surface there cannot be "
+          "oriented) or 'partial' (what can be determined there is finite, the rest "
+          "NaN, e.g. Meyer's directions where its tensor fit is singular) or 'reprojected' "
+          "(LSCM: the map folded the ring, fitted on its projection instead).")
       .def_readonly(
           "status_code", &PyEstimate::status_code,
           "(n,) uint8 status as 0 ok, 1 degree_reduced, 2 failed, 3 excluded, 4 disk_cut, "
@@ -412,7 +426,8 @@ F: (m, 3) triangles as 0-based vertex indices, any integer dtype, any strides.
 method: a name of curvbench.methods(), case-insensitive; 'LHF-4' attaches the degree.
 **options: any estimator option below, by keyword (None: its default). An option set for a
 method that does not take it raises UsageError, as on the command line.
-)") + options_doc() + std::string(R"(
+)") + options_doc() +
+         std::string(R"(
 Returns a curvbench.Estimate: normal (n,3), k1, k2, H, K (n,), d1, d2 (n,3), degree, points,
 ring (n,), status (n,) str and status_code (n,) uint8, method (label). Identical, bit for bit,
 to `curvbench estimate` on the same mesh. The GIL is released while estimating.
@@ -430,14 +445,21 @@ Returns (V, F): V (n, 3) float64, F (m, 3) int32. Elements the reader drops (fac
 than 3 vertices or a repeated index) are reported as UserWarning with the command line's text.
 Raises MeshError naming the file for an unreadable or malformed file.)");
 
-  m.def("mesh", &py_mesh, py::arg("family"), py::arg("level"), py::arg("noise_order") = 0,
-        py::arg("seed") = 1,
-        R"(Generate a test mesh with its exact answer (as `curvbench mesh`).
+  std::string mesh_options_doc;
+  for (const MeshOptionInfo& o : mesh_option_table())
+    mesh_options_doc += o.name + " (default " + format_g(o.default_value) + "): " + o.help + ".\n";
+  static const std::string mesh_doc =
+      R"(Generate a test mesh with its exact answer (as `curvbench mesh`).
 
 family: one of the mesh families ('torus-structured', 'torus-iso', 'bump-48', ...; an
 unknown name raises UsageError listing them); level: 1 = coarsest; noise_order: k >= 1 adds
 alpha h^k normal noise (0 = none); seed: for the noise, jitter and irregular points.
-Returns (V, F, exact): V (n, 3) float64, F (m, 3) int32, exact a curvbench.Exact.)");
+Returns (V, F, exact): V (n, 3) float64, F (m, 3) int32, exact a curvbench.Exact.
+
+Mesh options (keyword arguments; only for the families that take them, else UsageError):
+)" + mesh_options_doc;
+  m.def("mesh", &py_mesh, py::arg("family"), py::arg("level"), py::arg("noise_order") = 0,
+        py::arg("seed") = 1, mesh_doc.c_str());
 
   m.def("score", &py_score, py::arg("exact_or_mesh"), py::arg("estimate"),
         py::arg("vertex_set") = "all",

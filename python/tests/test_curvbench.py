@@ -289,3 +289,25 @@ def test_methods_version_and_docstrings():
               curvbench.UsageError, curvbench.Error):
         assert f.__doc__ and len(f.__doc__) > 20, f
     assert "-1/r" in curvbench.estimate.__doc__  # the sign convention
+
+
+def test_mesh_options():
+    # aspect=A and density=D reach the generator; the default given equals the default.
+    V4, F4, _ = curvbench.mesh("torus-anisotropic", 1)
+    V4b, _, _ = curvbench.mesh("torus-anisotropic", 1, aspect=4)
+    V16, _, ex16 = curvbench.mesh("torus-anisotropic", 1, aspect=16)
+    assert np.array_equal(V4, V4b)
+    assert not (V4.shape == V16.shape and np.array_equal(V4, V16))
+    assert "aspect A=16" in ex16.description
+    _, _, exd = curvbench.mesh("bump-density", 1, density=2, seed=3)
+    assert "density D=2 " in exd.description
+    with pytest.raises(curvbench.UsageError, match=r"^aspect 1 out of range: must be > 1$"):
+        curvbench.mesh("torus-anisotropic", 1, aspect=1)
+    with pytest.raises(curvbench.UsageError, match=r"^density 0.5 out of range: must be >= 1$"):
+        curvbench.mesh("bump-density", 1, density=0.5)
+    with pytest.raises(curvbench.UsageError, match="aspect 4 does not apply to bump-48"):
+        curvbench.mesh("bump-48", 1, aspect=4)
+    with pytest.raises(curvbench.UsageError, match="unknown mesh option 'stretch'"):
+        curvbench.mesh("bump-anisotropic", 1, stretch=2)
+    with pytest.raises(curvbench.UsageError, match="mesh option aspect: expected a number"):
+        curvbench.mesh("bump-anisotropic", 1, aspect="wide")

@@ -29,9 +29,10 @@ std::string usage_error(const MeshSpec& spec) {
 
 TEST(Generate, Families) {
   const std::vector<std::string> expected = {
-      "torus-structured", "torus-jittered",   "torus-iso",          "torus-iso-projected",
-      "bump-48",          "bump-irregular",   "torus-unstructured", "torus-unstructured-minval5",
-      "lantern",          "lantern-squeezed", "ellipsoid"};
+      "torus-structured",  "torus-jittered",   "torus-iso",          "torus-iso-projected",
+      "bump-48",           "bump-irregular",   "torus-unstructured", "torus-unstructured-minval5",
+      "torus-anisotropic", "bump-anisotropic", "bump-density",       "lantern",
+      "lantern-squeezed",  "ellipsoid"};
   EXPECT_EQ(mesh_families(), expected);
   EXPECT_EQ(max_mesh_level("torus-structured"), 6);  // 5-6: beyond the paper, for scaling
   EXPECT_EQ(max_mesh_level("torus-jittered"), 6);
@@ -41,6 +42,9 @@ TEST(Generate, Families) {
   EXPECT_EQ(max_mesh_level("bump-irregular"), 5);
   EXPECT_EQ(max_mesh_level("torus-unstructured"), 4);  // the paper's four well-shaped meshes
   EXPECT_EQ(max_mesh_level("torus-unstructured-minval5"), 4);
+  EXPECT_EQ(max_mesh_level("torus-anisotropic"), 4);
+  EXPECT_EQ(max_mesh_level("bump-anisotropic"), 4);
+  EXPECT_EQ(max_mesh_level("bump-density"), 4);
   for (const std::string& family : expected) {
     MeshSpec spec;
     spec.family = family;
