@@ -19,8 +19,29 @@ namespace {
 
 constexpr Quantity kQuantities[] = {Quantity::normal, Quantity::H, Quantity::K, Quantity::d1};
 
-bool is_field_experiment(const Experiment& e) {
-  return e.name.rfind("field-estimators", 0) == 0;
+// The sections of REPORT.md written here, each over the experiments whose name starts with its
+// prefix: a heading and the words before the per-mesh tables.
+struct FieldSection {
+  const char* prefix;
+  const char* heading;
+  const char* intro;
+};
+const FieldSection kFieldSections[] = {
+    {"field-estimators", "The estimators in common use",
+     "Every built-in estimator on the same meshes with the same metrics (experiments "
+     "`field_estimators*.exp`)."},
+    {"hard-meshes", "Meshes that break estimators",
+     "Every built-in estimator, VTK's and ICC on meshes known to break estimators "
+     "(experiment `hard_meshes.exp`; docs/mesh_families.md): the Schwarz lantern of a cylinder "
+     "whose normals and area converge (`lantern`) and one whose positions converge but whose "
+     "face normals and area do not (`lantern-squeezed`), triangles stretched A = 4 and 16 times "
+     "(`-A4`, `-A16`), sampling density varying D = 8 times (`bump-density-D8`), and the "
+     "ellipsoid. Where a family runs at two settings, the ratio of the finest-level errors "
+     "follows its tables."},
+};
+
+bool in_section(const Experiment& e, const FieldSection& section) {
+  return e.name.rfind(section.prefix, 0) == 0;
 }
 
 // "1.23e-04", or "n/a" when not finite.
@@ -136,13 +157,73 @@ std::vector<double> time_targets(const std::vector<ErrorRow>& rows) {
   return out;
 }
 
+namespace {
+
+// The finest-level L2 error in H of each method on mesh `label`.
+std::map<std::string, double> finest_h_errors(const std::vector<ErrorRow>& rows,
+                                              const std::string& label) {
+  std::map<std::string, std::pair<int, double>> at;  // method -> (level, error)
+  for (const ErrorRow& r : rows)
+    if (r.family == label && r.quantity == "H" && r.norm == "L2" && r.vertex_set == "all") {
+      auto& [level, error] = at[r.method];
+      if (r.level >= level) {
+        level = r.level;
+        error = r.error;
+      }
+    }
+  std::map<std::string, double> out;
+  for (const auto& [m, le] : at) out[m] = le.second;
+  return out;
+}
+
+// One sentence per family that runs at two settings (e.g. aspect 4 and 16): the ratio of each
+// method's finest-level L2 error in H, the stronger setting over the weaker.
+void append_setting_ratios(std::ostringstream& md, const Experiment& e,
+                           const std::vector<ErrorRow>& rows) {
+  for (size_t i = 0; i < e.meshes.size(); ++i)
+    for (size_t j = i + 1; j < e.meshes.size(); ++j) {
+      const ExperimentMesh& a = e.meshes[i];
+      const ExperimentMesh& b = e.meshes[j];
+      if (a.family != b.family || a.label() == b.label()) continue;
+      const auto ea = finest_h_errors(rows, a.label()), eb = finest_h_errors(rows, b.label());
+      std::vector<std::pair<double, std::string>> ratios;
+      for (const auto& [m, x] : ea)
+        if (const auto it = eb.find(m);
+            it != eb.end() && std::isfinite(x) && x > 0 && std::isfinite(it->second))
+          ratios.push_back({it->second / x, m});
+      if (ratios.empty()) continue;
+      std::sort(ratios.begin(), ratios.end());
+      md << "- `" << b.label() << "` against `" << a.label()
+         << "`, finest-level L2 error in H, ratio per method (smallest first): ";
+      for (size_t k = 0; k < ratios.size(); ++k)
+        md << (k ? ", " : "") << ratios[k].second << " " << rate_text(ratios[k].first);
+      md << ".\n";
+    }
+}
+
+bool append_field_section(std::ostringstream& md, const FieldSection& section,
+                          const std::vector<Experiment>& experiments, const ReportOptions& options,
+                          int& missing_plots);
+
+}  // namespace
+
 bool append_field_estimators_section(std::ostringstream& md,
                                      const std::vector<Experiment>& experiments,
                                      const ReportOptions& options, int& missing_plots) {
+  for (const FieldSection& section : kFieldSections)
+    if (!append_field_section(md, section, experiments, options, missing_plots)) return false;
+  return true;
+}
+
+namespace {
+
+bool append_field_section(std::ostringstream& md, const FieldSection& section,
+                          const std::vector<Experiment>& experiments, const ReportOptions& options,
+                          int& missing_plots) {
   const std::string dir = options.results_dir;
   bool header_written = false;
   for (const Experiment& e : experiments) {
-    if (!is_field_experiment(e)) continue;
+    if (!in_section(e, section)) continue;
     const std::string csv = dir + "/" + e.name + ".csv";
     if (!fs::exists(csv)) continue;
     const std::vector<ErrorRow> rows = read_error_csv(csv);
@@ -158,9 +239,9 @@ bool append_field_estimators_section(std::ostringstream& md,
         }
 
     if (!header_written) {
-      md << "## The estimators in common use\n\n"
-         << "Every built-in estimator on the same meshes with the same metrics (experiments "
-            "`field_estimators*.exp`). Per mesh family: the errors at the finest level with, "
+      md << "## " << section.heading << "\n\n"
+         << section.intro
+         << " Per mesh family: the errors at the finest level with, "
             "in brackets, the average convergence rate log(e1/eN)/log(h1/hN) of the series; "
             "the time per vertex of the estimation at the finest level (wall time of the whole "
             "mesh over its vertices, with the run's threads, measured when the case was "
@@ -300,7 +381,7 @@ bool append_field_estimators_section(std::ostringstream& md,
       for (const MethodRows& m : methods)
         if (const auto* s = m.find(Quantity::H, Norm::L2))
           for (const auto& [level, r] : *s) {
-            const auto t = case_seconds.find({mesh.family, level, m.method});
+            const auto t = case_seconds.find({mesh.label(), level, m.method});
             if (t == case_seconds.end()) continue;
             ErrorRow p = *r;
             p.seconds = t->second;
@@ -311,7 +392,7 @@ bool append_field_estimators_section(std::ostringstream& md,
         if (options.stop && options.stop()) return false;
         std::vector<ErrorRow> points = timed;
         for (ErrorRow& p : points) p.h = p.seconds;  // the x axis of the plot
-        const std::string base = "field-time_" + e.name + "_" + mesh.family;
+        const std::string base = "field-time_" + e.name + "_" + mesh.label();
         PlotAxis axis;
         axis.label = "time of the whole mesh (seconds)";
         axis.reversed = false;
@@ -319,7 +400,7 @@ bool append_field_estimators_section(std::ostringstream& md,
         axis.reference_slopes = false;
         if (render_plot(dir + "/plots/" + base,
                         "Time to solution: L2 error in H against the time of the mesh [" +
-                            mesh.family + (any->noise != "none" ? ", noise " + any->noise : "") +
+                            mesh.label() + (any->noise != "none" ? ", noise " + any->noise : "") +
                             "]",
                         points, axis))
           md << "![" << base << "](plots/" << base << ".png) ([svg](plots/" << base << ".svg))\n\n";
@@ -328,7 +409,7 @@ bool append_field_estimators_section(std::ostringstream& md,
       }
       const std::vector<double> targets = time_targets(timed);
       if (targets.empty()) continue;
-      md << "Cheapest estimator reaching a target L2 error in H on `" << mesh.family
+      md << "Cheapest estimator reaching a target L2 error in H on `" << mesh.label()
          << "` (the least time of the whole mesh's estimation over the levels where the error "
             "is at most the target; levels "
          << *levels.begin() << "-" << finest << "):\n\n"
@@ -347,8 +428,11 @@ bool append_field_estimators_section(std::ostringstream& md,
       }
       md << "\n";
     }
+    append_setting_ratios(md, e, rows);
   }
+  if (header_written) md << "\n";
   return true;
 }
 
+}  // namespace
 }  // namespace curvbench
