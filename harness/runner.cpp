@@ -20,7 +20,8 @@ namespace curvbench {
 namespace {
 
 std::string noise_label(const Experiment& e, const ExperimentMesh& m) {
-  if (const int order = e.noise_order_of(m); order > 0) return "h^" + std::to_string(order);
+  if (const int order = e.noise_order_of(m); order > 0)
+    return curvbench::noise_label(order, e.noise_model_of(m));
   return mesh_family(m.family).noise_label;
 }
 
@@ -103,7 +104,8 @@ const ScoredMesh& MeshCache::get(const std::string& family, int level, int noise
 
 // radius-scaling (experiment.h): the neighbourhood of radius c h^alpha as the method's own
 // parameter, n = c h^(alpha - 1) edge lengths: half rings for the fits (Jet included), whole rings
-// for the quadric, the ball factor of the normal cycle; the others keep their 1-ring.
+// for the quadric, the ball factor (>= 1) of the normal cycle and ICC; the others keep their
+// 1-ring.
 void scale_radius(const Experiment& e, const Estimator& est, double h, EstimatorOptions& opt) {
   const double n = e.radius_c * std::pow(h, e.radius_alpha - 1.0);
   if (est.takes_degree() && est.name() != "xu")
@@ -111,7 +113,7 @@ void scale_radius(const Experiment& e, const Estimator& est, double h, Estimator
   else if (est.name() == "quadric")
     opt.rings = std::max(1.0, std::round(n));
   else if (est.name() == "normal-cycle" || est.name() == "icc")
-    opt.ball_factor = n;
+    opt.ball_factor = std::max(1.0, n);  // a ball of at least one edge (check_ball_factor)
 }
 
 std::vector<RunCase> expand_cases(const std::vector<Experiment>& experiments) {
@@ -125,8 +127,8 @@ std::vector<RunCase> expand_cases(const std::vector<Experiment>& experiments) {
 
 std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads) {
   const Experiment& e = *c.experiment;
-  const ScoredMesh& sm =
-      cache.get(c.mesh->family, c.level, e.noise_order_of(*c.mesh), e.noise_seed, e.noise_model);
+  const ScoredMesh& sm = cache.get(c.mesh->family, c.level, e.noise_order_of(*c.mesh), e.noise_seed,
+                                   e.noise_model_of(*c.mesh));
   const Mesh& mesh = sm.generated.mesh;
 
   using clock = std::chrono::steady_clock;

@@ -177,7 +177,7 @@ GeneratedMesh generate_mesh(const MeshSpec& spec) {
     throw UsageError("jitter applies only to the torus-structured family, not " + spec.family);
   GeneratedMesh gm = family.generate(spec);
   if (spec.noise_order > 0)
-    gm = add_normal_noise(gm, spec.noise_order, spec.seed, spec.noise_model);
+    gm = add_noise(gm, spec.noise_order, spec.seed, spec.noise_model);
   return gm;
 }
 
