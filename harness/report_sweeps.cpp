@@ -29,7 +29,10 @@ std::string sci(double x) {
 
 std::string radius_text(const BestRadius& b) {
   if (b.parameter.empty()) return "1-ring";
-  return (b.parameter == "rings" ? "rings " : "C = ") + format_g(b.radius);
+  std::string s = b.parameter == "rings" ? "rings " : "C = ";
+  s += format_g(b.radius);
+  if (b.radii > 1 && b.radius == b.highest) s += " (largest)";
+  return s;
 }
 
 // [A-Za-z0-9.-] kept, anything else '_' (plot file names).
@@ -328,11 +331,14 @@ std::vector<BestRadius> best_radii(const std::vector<ErrorRow>& rows) {
       b.norm = r.norm;
       b.error = r.error;
       b.radii = 1;
+      b.lowest = b.highest = l.radius;
       out.push_back(b);
       continue;
     }
     BestRadius& b = out[it->second];
     ++b.radii;
+    b.lowest = std::fmin(b.lowest, l.radius);
+    b.highest = std::fmax(b.highest, l.radius);
     const bool better = std::isfinite(r.error) && (!std::isfinite(b.error) || r.error < b.error ||
                                                    (r.error == b.error && l.radius < b.radius));
     if (better) {
@@ -349,13 +355,14 @@ void write_best_radius_csv(const std::string& path, const std::vector<BestRadius
   std::ostringstream out;
   out << provenance_comment() << "\n"
       << "experiment,family,level,vertices,h,noise,sigma_over_h,method,parameter,best_radius,label,"
-         "quantity,norm,error,radii\n";
+         "quantity,norm,error,radii,lowest_radius,highest_radius\n";
   for (const BestRadius& b : rows)
     out << b.experiment << ',' << b.family << ',' << b.level << ',' << b.vertices << ','
         << format_double(b.h) << ',' << b.noise << ',' << format_double(sigma_over_h(b.noise))
         << ',' << b.method << ',' << (b.parameter.empty() ? "fixed" : b.parameter) << ','
         << format_double(b.radius) << ',' << b.label << ',' << b.quantity << ',' << b.norm << ','
-        << format_double(b.error) << ',' << b.radii << "\n";
+        << format_double(b.error) << ',' << b.radii << ',' << format_double(b.lowest) << ','
+        << format_double(b.highest) << "\n";
   write_file_atomic(path, out.str());
 }
 

@@ -7,7 +7,8 @@
 //     (rings for the fits and the quadric, the ball factor C for the normal cycle and ICC), one
 //     curve per method, the fixed methods as horizontal lines, each curve's best radius circled:
 //     plots/<experiment>_<family>_<noise>_<quantity>.{png,svg};
-//   - a table per (family, noise) of each method's best radius and its error, per quantity;
+//   - a table per (family, noise) of each method's best radius and its error, per quantity
+//     ("rings 4 (largest)" when the best is the largest radius swept);
 //   - <results>/best_radius.csv (provenance header): one row per (experiment, family, level,
 //     noise, method, quantity, norm) with the best radius, the label of its case (to join the
 //     timings CSVs) and its error.
@@ -58,6 +59,10 @@ struct BestRadius {
   std::string quantity, norm;
   double error = 0.0;
   int radii = 0;  ///< radii tried
+  /// The smallest and largest radius swept (NaN when fixed): a best radius at the largest says
+  /// the error may fall further beyond the sweep.
+  double lowest = std::numeric_limits<double>::quiet_NaN();
+  double highest = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// The best radius (smallest finite error; a tie goes to the smaller radius) of each method per
@@ -67,7 +72,7 @@ std::vector<BestRadius> best_radii(const std::vector<ErrorRow>& rows);
 
 /// Writes the best-radius CSV (provenance comment, header, rows) atomically:
 /// experiment,family,level,vertices,h,noise,sigma_over_h,method,parameter,best_radius,label,
-/// quantity,norm,error,radii
+/// quantity,norm,error,radii,lowest_radius,highest_radius
 void write_best_radius_csv(const std::string& path, const std::vector<BestRadius>& rows);
 
 /// Appends the section to `md` (nothing when no sweep experiment has results) and writes

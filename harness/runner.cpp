@@ -104,8 +104,7 @@ const ScoredMesh& MeshCache::get(const std::string& family, int level, int noise
 
 // radius-scaling (experiment.h): the neighbourhood of radius c h^alpha as the method's own
 // parameter, n = c h^(alpha - 1) edge lengths: half rings for the fits (Jet included), whole rings
-// for the quadric, the ball factor (>= 1) of the normal cycle and ICC; the others keep their
-// 1-ring.
+// for the quadric, the ball factor of the normal cycle; the others keep their 1-ring.
 void scale_radius(const Experiment& e, const Estimator& est, double h, EstimatorOptions& opt) {
   const double n = e.radius_c * std::pow(h, e.radius_alpha - 1.0);
   if (est.takes_degree() && est.name() != "xu")
@@ -113,7 +112,7 @@ void scale_radius(const Experiment& e, const Estimator& est, double h, Estimator
   else if (est.name() == "quadric")
     opt.rings = std::max(1.0, std::round(n));
   else if (est.name() == "normal-cycle" || est.name() == "icc")
-    opt.ball_factor = std::max(1.0, n);  // a ball of at least one edge (check_ball_factor)
+    opt.ball_factor = n;
 }
 
 std::vector<RunCase> expand_cases(const std::vector<Experiment>& experiments) {

@@ -9,21 +9,10 @@
 #include <span>
 #include <vector>
 
-#include "core/errors.h"
-#include "core/text.h"
 #include "mesh/mesh.h"
 #include "methods/estimator.h"
 
 namespace curvbench {
-
-/// The ball factor C of the normal cycle and ICC: 0 (the 1-ring) or C >= 1: a ball of radius
-/// below one mean edge length would leave most vertices without their 1-ring. Throws UsageError
-/// naming the option and value otherwise.
-inline void check_ball_factor(double c, const std::string& method) {
-  if (c != 0.0 && !(c >= 1.0))
-    throw UsageError(method + ": ball-factor " + format_g(c) +
-                     " is smaller than one edge length (valid: 0 = the 1-ring, or >= 1)");
-}
 
 /// Per-thread scratch: a visit stamp per face (no clearing between vertices) and the queue.
 struct FaceBallWorkspace final : Workspace {

@@ -123,9 +123,8 @@ double fraction_in_ball(const Mesh& mesh, int f, const Vec3& c, double r) {
 
 class IccEstimator final : public OperatorEstimator {
  public:
-  explicit IccEstimator(EstimatorOptions options) : OperatorEstimator(options, VertexNormals::max) {
-    check_ball_factor(options.ball_factor, "icc");
-  }
+  explicit IccEstimator(EstimatorOptions options)
+      : OperatorEstimator(options, VertexNormals::max) {}
 
   std::string name() const override { return "icc"; }
   std::string display_name() const override { return "ICC"; }

@@ -92,9 +92,7 @@ double length_in_ball(const Vec3& a, const Vec3& b, const Vec3& c, double r) {
 class NormalCycleEstimator final : public OperatorEstimator {
  public:
   explicit NormalCycleEstimator(EstimatorOptions options)
-      : OperatorEstimator(options, VertexNormals::area) {
-    check_ball_factor(options.ball_factor, "normal-cycle");
-  }
+      : OperatorEstimator(options, VertexNormals::area) {}
 
   std::string name() const override { return "normal-cycle"; }
   std::string display_name() const override { return "Normal-cycle"; }

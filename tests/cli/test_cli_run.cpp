@@ -131,7 +131,7 @@ TEST(CliRun, FullSweepsReplaceTrimmedAndBadNoiseExits2) {
            {"mesh bump-48 levels=1 noise-sigma=-0.1", "noise-sigma=-0.1 must be"},
            {"mesh bump-48 levels=1 outliers=2", "outliers=2 is outside [0, 1]"},
            {"radius-scaling alpha=0 c=1", "radius-scaling alpha=0 c=1: needs"},
-           {"method icc ball-factor=0.5", "ball-factor 0.5 is smaller than one edge length"}}) {
+           {"method lhf-2 rings=0.5", "fit: ring 0.5 is not supported"}}) {
     std::ofstream(exp_dir / "bad.exp") << "name bad\nmethod meyer\npanel b \"B.\" H L2\n"
                                        << "mesh bump-48 levels=1\n"
                                        << bad << "\n";

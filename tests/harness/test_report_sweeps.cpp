@@ -80,6 +80,8 @@ TEST(ReportSweeps, BestRadiusIsTheSmallestError) {
   EXPECT_EQ(best[0].error, 0.1);
   EXPECT_EQ(best[0].label, "LHF-2 rings=2");
   EXPECT_EQ(best[0].radii, 4);
+  EXPECT_EQ(best[0].lowest, 1.0);
+  EXPECT_EQ(best[0].highest, 4.0);
   EXPECT_EQ(best[1].quantity, "K");
   EXPECT_EQ(best[1].radius, 1.0);  // the tie
   EXPECT_EQ(best[2].noise, "normal gauss 0.03h");
@@ -97,6 +99,8 @@ TEST(ReportSweeps, BestRadiusIsTheSmallestError) {
   EXPECT_EQ(t.number(2, t.col("best_radius")), 4.0);
   EXPECT_EQ(t.text(3, t.col("parameter")), "fixed");
   EXPECT_EQ(t.number(0, t.col("error")), 0.1);
+  EXPECT_EQ(t.number(2, t.col("lowest_radius")), 1.0);
+  EXPECT_TRUE(std::isnan(t.number(3, t.col("highest_radius"))));
 }
 
 // The section: a table per (family, noise) with each method's best radius and error, and
@@ -123,8 +127,8 @@ TEST(ReportSweeps, SectionAndCsvFromTheResults) {
   ASSERT_TRUE(append_sweeps_section(md, {e}, o, missing));
   const std::string text = md.str();
   EXPECT_NE(text.find("## Sweeps at a fixed mesh"), std::string::npos);
-  EXPECT_NE(text.find("| ICC | ball-factor (2 values) | C = 2 | 5.00e-02 | C = 2 | 5.00e-02 | C = "
-                      "2 | 5.00e-02 |"),
+  EXPECT_NE(text.find("| ICC | ball-factor (2 values) | C = 2 (largest) | 5.00e-02 | C = 2 "
+                      "(largest) | 5.00e-02 | C = 2 (largest) | 5.00e-02 |"),
             std::string::npos)
       << text;
   EXPECT_NE(text.find("| Meyer | - | 1-ring | 3.00e-01 |"), std::string::npos) << text;
