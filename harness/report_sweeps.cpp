@@ -372,8 +372,13 @@ bool append_sweeps_section(std::ostringstream& md, const std::vector<Experiment>
   bool header = false;
   std::vector<BestRadius> all_best;
   bool any_radius = false;
-  for (const Experiment& e : experiments) {
-    if (e.sweep.empty()) continue;
+  // The radius sweeps first (the noise sweeps use their best radii), then the noise sweeps.
+  std::vector<const Experiment*> sweeps;
+  for (const char* kind : {"radius", "noise"})
+    for (const Experiment& e : experiments)
+      if (e.sweep == kind) sweeps.push_back(&e);
+  for (const Experiment* ep : sweeps) {
+    const Experiment& e = *ep;
     const std::vector<ErrorRow> rows = rows_of(e, dir);
     if (rows.empty()) continue;
     if (!header) {
