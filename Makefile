@@ -55,9 +55,10 @@ experiments: build
 bench: build
 	@bash tools/bench.sh $(BUILD)
 
-# The sweeps at a fixed neighbourhood rule (experiments/sweeps/: the radius-scaling study,
-# docs/algorithms.md §15) -> results/sweeps/ (REPORT.md, CSVs, rates). Not part of `make
-# experiments`: larger, and meant for shards on a cluster (docs/cluster.md).
+# The full sweeps (experiments/sweeps/: the radius-scaling study, docs/algorithms.md §15; the
+# radius and noise sweeps at a fixed mesh, of which `make experiments` runs trimmed versions)
+# -> results/sweeps/ (REPORT.md, CSVs, best_radius.csv, rates). Larger, and meant for shards on
+# a cluster (docs/cluster.md; there: `curvbench run --all --full`).
 sweeps: build
 	@$(BUILD)/curvbench run --all --experiments-dir experiments/sweeps --output results/sweeps \
 	  --no-readings $(RUN_ARGS)

@@ -84,15 +84,26 @@ struct RunArgs {
   bool no_plots = false;
   bool no_readings = false;
   bool force = false;
+  bool full = false;
   std::string experiments_dir = "experiments";
   std::string output = "results";
   int threads = 0;
   int table4_max = 256;
 };
 
-std::vector<Experiment> load_all(const std::string& dir) {
+// With `full`, the full sweeps of <dir>/sweeps/ join; one named like an earlier experiment (the
+// trimmed sweep of the default run) replaces it.
+std::vector<Experiment> load_all(const std::string& dir, bool full) {
   std::vector<Experiment> out;
-  for (const auto& f : list_experiment_files(dir)) out.push_back(parse_experiment(f));
+  for (const auto& f : list_experiment_files(dir, full)) {
+    Experiment e = parse_experiment(f);
+    const auto same =
+        std::find_if(out.begin(), out.end(), [&](const Experiment& o) { return o.name == e.name; });
+    if (same != out.end())
+      *same = std::move(e);
+    else
+      out.push_back(std::move(e));
+  }
   return out;
 }
 
@@ -123,6 +134,9 @@ Command add_run_command(CLI::App& app) {
   sub->add_option("EXPERIMENT", args->experiments,
                   "Experiment names (e.g. fig03-05) or .exp files");
   sub->add_flag("--all", args->all, "Run every experiment in the experiments folder");
+  sub->add_flag("--full", args->full,
+                "Also the full sweeps of <experiments-dir>/sweeps/ (each replaces the trimmed "
+                "sweep of the same name): the study for a cluster (docs/cluster.md)");
   sub->add_flag("--list", args->list, "List the available experiments and exit");
   sub->add_flag("--list-cases", args->list_cases,
                 "Print the id of every case (experiment/family_Llevel_method_hash) of the named "
@@ -162,7 +176,7 @@ Command add_run_command(CLI::App& app) {
       "the outputs instead of the current time, so that two runs give byte-identical files.");
 
   return [args]() {
-    auto available = load_all(args->experiments_dir);
+    auto available = load_all(args->experiments_dir, args->full);
     if (args->list) {
       for (const auto& e : available)
         std::printf("%-10s  %s (paper §%s)  [%s]\n", e.name.c_str(), e.title.c_str(),

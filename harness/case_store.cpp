@@ -84,6 +84,18 @@ std::string method_inputs(const ExperimentMethod& m) {
   return s + (m.is_external() ? external_inputs(m) : std::string());
 }
 
+// The noise model's part of case_inputs: only what differs from the default model (so that the
+// keys of the stored cases of the paper's noise stay as they were).
+std::string noise_inputs(const NoiseModel& model) {
+  if (model.is_default()) return "";
+  std::string s = ";noise-alpha=" + std::string(to_string(model.distribution)) +
+                  ";noise-scale=" + format_double(model.scale);
+  if (model.direction != NoiseDirection::normal)
+    s += ";noise-model=" + std::string(to_string(model.direction));
+  if (model.is_outliers()) s += ";outliers=" + format_double(model.outlier_fraction);
+  return s;
+}
+
 std::string first_line(std::uint64_t inputs, std::uint64_t content) {
   return "# curvbench case: inputs " + hex64(inputs) + " content " + hex64(content);
 }
@@ -132,11 +144,7 @@ std::string case_inputs(const RunCase& c) {
   return "experiment=" + escaped(e.name) + ";family=" + escaped(c.mesh->family) +
          mesh_shape_key(c.mesh->family, c.mesh->shape) + ";level=" + std::to_string(c.level) +
          ";noise-order=" + std::to_string(e.noise_order_of(*c.mesh)) +
-         ";noise-seed=" + std::to_string(e.noise_seed) +
-         (e.noise_model.is_default()
-              ? std::string()
-              : ";noise-alpha=" + std::string(to_string(e.noise_model.distribution)) +
-                    ";noise-scale=" + format_double(e.noise_model.scale)) +
+         ";noise-seed=" + std::to_string(e.noise_seed) + noise_inputs(e.noise_model_of(*c.mesh)) +
          ";noisy=" + yes_no(e.noisy) + (e.noisy_quadratic_only ? ";noisy-rings=quadratic" : "") +
          (e.radius_c > 0.0 ? ";radius-alpha=" + format_double(e.radius_alpha) +
                                  ";radius-c=" + format_double(e.radius_c)
@@ -159,8 +167,14 @@ std::string case_id(const RunCase& c) {
   const ExperimentMethod& m = *c.method;
   const std::string method = file_safe(m.label.empty() ? m.spec : m.label);
   const std::string options = hex64(fnv1a64(method_inputs(m))).substr(0, 8);
-  return file_safe(c.experiment->name) + "/" + file_safe(c.mesh->label()) + "_L" +
-         std::to_string(c.level) + "_" + method + "_" + options;
+  // A mesh line's own noise (the sweeps) is named in the id: such meshes share their family.
+  const std::string mesh =
+      c.mesh->has_noise_model
+          ? c.mesh->label() + "~" +
+                noise_label(c.experiment->noise_order_of(*c.mesh), c.mesh->noise_model)
+          : c.mesh->label();
+  return file_safe(c.experiment->name) + "/" + file_safe(mesh) + "_L" + std::to_string(c.level) +
+         "_" + method + "_" + options;
 }
 
 namespace {

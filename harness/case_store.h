@@ -13,6 +13,8 @@
 //     then     at the finest level of the mesh, if the method gave H: the line "# errors by
 //              cause" and the errors-by-cause CSV of error_causes.h (header + rows)
 //
+//   <family> is followed by the mesh line's own noise label when it has one (the sweeps:
+//   "torus-unstructured_normal_gauss_0.03h"), since such meshes share their family;
 //   <method> is the method's label or spec with characters outside [A-Za-z0-9.+-] replaced by
 //   '_'; the 8 hex digits are a hash of the method's options, so that variants of one method
 //   (ablations) get separate files.

@@ -51,6 +51,22 @@ bool split_option(const std::string& word, std::string& key, std::string& value)
   return true;
 }
 
+// "1,1.5,2" -> {"1", "1.5", "2"}; an empty item is an error.
+std::vector<std::string> split_list(const std::string& v) {
+  std::vector<std::string> out;
+  std::stringstream ss(v);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    if (item.empty()) throw UsageError("empty value in the list '" + v + "'");
+    out.push_back(item);
+  }
+  if (out.empty() || v.back() == ',') throw UsageError("empty value in the list '" + v + "'");
+  return out;
+}
+
+void parse_method(Experiment& e, const std::vector<std::string>& w, const std::string& where,
+                  const std::string& label_suffix);
+
 bool to_bool(const std::string& s, const std::string& where) {
   if (s == "yes" || s == "true") return true;
   if (s == "no" || s == "false") return false;
@@ -106,128 +122,148 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
         }
         if (!(e.radius_c > 0.0) || !std::isfinite(e.radius_c) || !(e.radius_alpha > 0.0) ||
             !(e.radius_alpha <= 1.0))
-          throw InputError(where + ": radius-scaling needs c > 0 and 0 < alpha <= 1");
+          throw InputError(where + ": radius-scaling alpha=" + format_g(e.radius_alpha) +
+                           " c=" + format_g(e.radius_c) + ": needs c > 0 and 0 < alpha <= 1");
       } else if (key == "noise") {
         need(2);
+        bool order_given = false;
         for (size_t i = 1; i < w.size(); ++i) {
           std::string k, v;
           if (!split_option(w[i], k, v)) throw InputError(where + ": expected key=value");
-          if (k == "order")
+          if (k == "order") {
             e.noise_order = static_cast<int>(parse_integer(v, where));
-          else if (k == "seed")
+            order_given = true;
+          } else if (k == "seed") {
             e.noise_seed = static_cast<std::uint64_t>(parse_integer(v, where));
-          else if (k == "alpha")
-            try {
-              e.noise_model.distribution = parse_noise_distribution(v);
-            } catch (const UsageError& err) {
-              throw InputError(where + ": " + err.what());
-            }
-          else if (k == "scale")
+          } else if (k == "alpha") {
+            e.noise_model.distribution = parse_noise_distribution(v);
+          } else if (k == "scale") {
             e.noise_model.scale = parse_double(v, where);
-          else
+            if (!(e.noise_model.scale >= 0.0) || !std::isfinite(e.noise_model.scale))
+              throw InputError(where + ": noise scale=" + v + " must be finite and >= 0");
+          } else if (k == "model") {
+            e.noise_model.direction = parse_noise_direction(v);
+          } else if (k == "outliers") {
+            e.noise_model.outlier_fraction = parse_double(v, where);
+            if (!(e.noise_model.outlier_fraction > 0.0 && e.noise_model.outlier_fraction <= 1.0))
+              throw InputError(where + ": noise outliers=" + v + " is outside (0, 1]");
+            if (!order_given) e.noise_order = 1;
+            order_given = true;
+          } else {
             throw InputError(where + ": unknown noise option '" + k +
-                             "' (order, seed, alpha, scale)");
+                             "' (order, seed, alpha, scale, model, outliers)");
+          }
         }
-        if (!(e.noise_model.scale >= 0.0) || !std::isfinite(e.noise_model.scale))
-          throw InputError(where + ": noise scale must be finite and >= 0");
-        if (e.noise_order != 2 && e.noise_order != 3)
-          throw InputError(where + ": noise order must be 2 or 3");
+        if (order_given && (e.noise_order < 1 || e.noise_order > 3))
+          throw InputError(where + ": noise order must be 1, 2 or 3");
+      } else if (key == "sweep") {
+        need(2);
+        if (w[1] != "radius" && w[1] != "noise")
+          throw InputError(where + ": sweep '" + w[1] + "' is not one of radius, noise");
+        e.sweep = w[1];
       } else if (key == "mesh") {
         need(3);
         ExperimentMesh m;
         m.family = w[1];
+        std::vector<double> sigmas, fractions;
+        NoiseModel own;
+        bool model_given = false;
         for (size_t i = 2; i < w.size(); ++i) {
           std::string k, v;
-          if (split_option(w[i], k, v) && k == "noise-order") {
+          split_option(w[i], k, v);
+          if (k == "noise-order") {
             m.noise_order = static_cast<int>(parse_integer(v, where));
             if (m.noise_order != 0 && m.noise_order != 2 && m.noise_order != 3)
               throw InputError(where + ": noise-order must be 0, 2 or 3");
-            continue;
-          }
-          if (k != "levels" && std::any_of(mesh_option_table().begin(), mesh_option_table().end(),
-                                           [&](const MeshOptionInfo& o) { return o.name == k; })) {
+          } else if (k == "levels") {
+            for (const std::string& item : split_list(v))
+              m.levels.push_back(static_cast<int>(parse_integer(item, where)));
+          } else if (k == "noise-sigma" || k == "outliers") {
+            for (const std::string& item : split_list(v)) {
+              const double x = parse_double(item, where);
+              if (k == "noise-sigma" && !(x >= 0.0 && std::isfinite(x)))
+                throw InputError(where + ": noise-sigma=" + item + " must be finite and >= 0");
+              if (k == "outliers" && !(x >= 0.0 && x <= 1.0))
+                throw InputError(where + ": outliers=" + item + " is outside [0, 1]");
+              (k == "outliers" ? fractions : sigmas).push_back(x);
+            }
+          } else if (k == "noise-model") {
+            own.direction = parse_noise_direction(v);
+            model_given = true;
+          } else if (k == "noise-alpha") {
+            own.distribution = parse_noise_distribution(v);
+            model_given = true;
+          } else if (std::any_of(mesh_option_table().begin(), mesh_option_table().end(),
+                                 [&](const MeshOptionInfo& o) { return o.name == k; })) {
             set_mesh_option(m.shape, k, parse_double(v, where));
-            continue;
-          }
-          if (k != "levels") {
+          } else {
             std::string options;
             for (const MeshOptionInfo& o : mesh_option_table())
               options += " [" + o.name + "=" + o.letter + "]";
-            throw InputError(where + ": expected levels=1,2,3,4 [noise-order=K]" + options);
+            throw InputError(where +
+                             ": expected levels=1,2,3,4 [noise-order=K] [noise-sigma=S,...] "
+                             "[noise-model=M] [noise-alpha=A] [outliers=P,...]" +
+                             options);
           }
-          std::stringstream ss(v);
-          std::string item;
-          while (std::getline(ss, item, ','))
-            m.levels.push_back(static_cast<int>(parse_integer(item, where)));
         }
         if (m.levels.empty()) throw InputError(where + ": no levels given");
         check_mesh_shape(m.family, m.shape);
-        e.meshes.push_back(m);
+        if (model_given && sigmas.empty())
+          throw InputError(where + ": noise-model and noise-alpha need noise-sigma=S,...");
+        if ((!sigmas.empty() || !fractions.empty()) && m.noise_order >= 0)
+          throw InputError(where + ": noise-order excludes noise-sigma and outliers");
+        std::vector<ExperimentMesh> variants;
+        if (sigmas.empty() && fractions.empty()) variants.push_back(m);
+        for (double sigma : sigmas) {
+          ExperimentMesh v = m;
+          v.noise_order = 0;  // sigma = 0: no noise
+          if (sigma > 0.0) {
+            v.noise_order = 1;
+            v.has_noise_model = true;
+            v.noise_model = own;
+            v.noise_model.scale = sigma;
+          }
+          variants.push_back(v);
+        }
+        for (double p : fractions) {
+          ExperimentMesh v = m;
+          v.noise_order = 0;
+          if (p > 0.0) {
+            v.noise_order = 1;
+            v.has_noise_model = true;
+            v.noise_model.outlier_fraction = p;
+          }
+          variants.push_back(v);
+        }
+        for (const ExperimentMesh& v : variants)
+          if (std::find(e.meshes.begin(), e.meshes.end(), v) == e.meshes.end())
+            e.meshes.push_back(v);
       } else if (key == "method") {
         need(2);
-        ExperimentMethod m;
-        m.spec = w[1];
-        for (size_t i = 2; i < w.size(); ++i) {
-          std::string k, v;
-          if (!split_option(w[i], k, v)) throw InputError(where + ": expected key=value");
-          if (k == "label") {
-            if (v.empty() || v.find(',') != std::string::npos)
-              throw InputError(where + ": a label must be non-empty and contain no comma");
-            m.label = v;
-          } else if (k == "vertex-set") {
-            m.vertex_set = parse_vertex_set(v);
-            m.has_vertex_set = true;
-          } else if (m.is_external() && k == "name") {
-            if (v.empty() || v.find(',') != std::string::npos)
-              throw InputError(where + ": a name must be non-empty and contain no comma");
-            m.label = v;
-          } else if (m.is_external() && k == "command") {
-            m.command = v;
-          } else if (m.is_external() && k == "description") {
-            m.description = v;
-          } else if (m.is_external() && k == "timeout") {
-            m.timeout_seconds = parse_double(v, where);
-            if (!(m.timeout_seconds > 0))
-              throw InputError(where + ": timeout must be a positive number of seconds");
-          } else if (!m.is_external()) {
-            const auto& schema = estimator_option_schema();
-            if (std::none_of(schema.begin(), schema.end(),
-                             [&](const OptionInfo& o) { return o.name == k; })) {
-              std::string valid = "label, vertex-set";
-              for (const OptionInfo& o : schema)
-                if (o.role == OptionRole::result) valid += ", " + o.name;
-              throw InputError(where + ": unknown method option '" + k + "' (valid: " + valid +
-                               ")");
-            }
-            if (option_info(k).role != OptionRole::result)
-              throw InputError(where + ": '" + k +
-                               "' is not an experiment option (it does not change the results)");
-            set_option(m.options, k, v);
-          } else {
-            throw InputError(where + ": unknown option '" + k + "' of method external");
+        // One estimator option may list values: one method line per value.
+        size_t list_at = 0;
+        std::vector<std::string> values;
+        if (w[1] != "external")
+          for (size_t i = 2; i < w.size(); ++i) {
+            std::string k, v;
+            if (!split_option(w[i], k, v) || v.find(',') == std::string::npos || k == "label" ||
+                k == "vertex-set")
+              continue;
+            if (list_at != 0)
+              throw InputError(where + ": only one option of a method line may list values");
+            list_at = i;
+            values = split_list(v);
           }
+        if (list_at == 0) {
+          parse_method(e, w, where, "");
+          continue;
         }
-        if (m.is_external()) {
-          if (m.label.empty()) throw InputError(where + ": method external needs name=NAME");
-          if (m.command.find("{mesh}") == std::string::npos ||
-              m.command.find("{out}") == std::string::npos)
-            throw InputError(where +
-                             ": method external needs command=\"... {mesh} ... {out}\" (the "
-                             "input mesh and the estimate CSV it writes)");
-          e.methods.push_back(m);
-        } else if (m.spec == kAllOperators) {
-          if (!m.label.empty())
-            throw InputError(where + ": method " + kAllOperators + " takes no label");
-          for (const MethodInfo& info : method_table()) {
-            if (info.is_fit()) continue;
-            ExperimentMethod one = m;
-            one.spec = info.name;
-            make_estimator(one.spec, one.options);  // the options suit every operator
-            e.methods.push_back(one);
-          }
-        } else {
-          make_estimator(m.spec, m.options);  // a bad name, degree or option, with the line
-          e.methods.push_back(m);
+        std::string list_key, unused;
+        split_option(w[list_at], list_key, unused);
+        for (const std::string& v : values) {
+          std::vector<std::string> one = w;
+          one[list_at] = list_key + "=" + v;
+          parse_method(e, one, where, " " + list_key + "=" + v);
         }
       } else if (key == "panel") {
         need(5);
@@ -246,6 +282,86 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
   return e;
 }
 
+namespace {
+
+// One `method` line's words; `label_suffix` (" rings=1.5") is appended to the label of a line
+// expanded from a list of values.
+void parse_method(Experiment& e, const std::vector<std::string>& w, const std::string& where,
+                  const std::string& label_suffix) {
+  {
+    {
+      ExperimentMethod m;
+      m.spec = w[1];
+      for (size_t i = 2; i < w.size(); ++i) {
+        std::string k, v;
+        if (!split_option(w[i], k, v)) throw InputError(where + ": expected key=value");
+        if (k == "label") {
+          if (v.empty() || v.find(',') != std::string::npos)
+            throw InputError(where + ": a label must be non-empty and contain no comma");
+          m.label = v;
+        } else if (k == "vertex-set") {
+          m.vertex_set = parse_vertex_set(v);
+          m.has_vertex_set = true;
+        } else if (m.is_external() && k == "name") {
+          if (v.empty() || v.find(',') != std::string::npos)
+            throw InputError(where + ": a name must be non-empty and contain no comma");
+          m.label = v;
+        } else if (m.is_external() && k == "command") {
+          m.command = v;
+        } else if (m.is_external() && k == "description") {
+          m.description = v;
+        } else if (m.is_external() && k == "timeout") {
+          m.timeout_seconds = parse_double(v, where);
+          if (!(m.timeout_seconds > 0))
+            throw InputError(where + ": timeout must be a positive number of seconds");
+        } else if (!m.is_external()) {
+          const auto& schema = estimator_option_schema();
+          if (std::none_of(schema.begin(), schema.end(),
+                           [&](const OptionInfo& o) { return o.name == k; })) {
+            std::string valid = "label, vertex-set";
+            for (const OptionInfo& o : schema)
+              if (o.role == OptionRole::result) valid += ", " + o.name;
+            throw InputError(where + ": unknown method option '" + k + "' (valid: " + valid + ")");
+          }
+          if (option_info(k).role != OptionRole::result)
+            throw InputError(where + ": '" + k +
+                             "' is not an experiment option (it does not change the results)");
+          set_option(m.options, k, v);
+        } else {
+          throw InputError(where + ": unknown option '" + k + "' of method external");
+        }
+      }
+      if (m.is_external()) {
+        if (m.label.empty()) throw InputError(where + ": method external needs name=NAME");
+        if (m.command.find("{mesh}") == std::string::npos ||
+            m.command.find("{out}") == std::string::npos)
+          throw InputError(where +
+                           ": method external needs command=\"... {mesh} ... {out}\" (the "
+                           "input mesh and the estimate CSV it writes)");
+        e.methods.push_back(m);
+      } else if (m.spec == kAllOperators) {
+        if (!m.label.empty() || !label_suffix.empty())
+          throw InputError(where + ": method " + kAllOperators + " takes no label or list");
+        for (const MethodInfo& info : method_table()) {
+          if (info.is_fit()) continue;
+          ExperimentMethod one = m;
+          one.spec = info.name;
+          make_estimator(one.spec, one.options);  // the options suit every operator
+          e.methods.push_back(one);
+        }
+      } else {
+        // a bad name, degree or option, with the line
+        const auto est = make_estimator(m.spec, m.options);
+        if (!label_suffix.empty())
+          m.label = (m.label.empty() ? est->label() : m.label) + label_suffix;
+        e.methods.push_back(m);
+      }
+    }
+  }
+}
+
+}  // namespace
+
 Experiment parse_experiment(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open experiment file");
@@ -254,23 +370,25 @@ Experiment parse_experiment(const std::string& path) {
   return parse_experiment_text(ss.str(), path);
 }
 
-std::vector<std::string> list_experiment_files(const std::string& directory) {
+std::vector<std::string> list_experiment_files(const std::string& directory, bool full) {
   std::vector<std::string> out;
   std::error_code ec;
-  for (const auto& entry : std::filesystem::directory_iterator(directory, ec))
-    if (entry.is_regular_file() && entry.path().extension() == ".exp")
-      out.push_back(entry.path().string());
-  if (ec) throw InputError(directory + ": cannot list experiments (" + ec.message() + ")");
-  std::sort(out.begin(), out.end());
-  // The diagnostic experiments behind CLAIMS.md's Why lines (experiments/diagnostics/).
-  const std::filesystem::path diagnostics = std::filesystem::path(directory) / "diagnostics";
-  if (std::filesystem::is_directory(diagnostics, ec)) {
+  const auto add_folder = [&](const std::filesystem::path& folder) {
     std::vector<std::string> more;
-    for (const auto& entry : std::filesystem::directory_iterator(diagnostics, ec))
+    for (const auto& entry : std::filesystem::directory_iterator(folder, ec))
       if (entry.is_regular_file() && entry.path().extension() == ".exp")
         more.push_back(entry.path().string());
     std::sort(more.begin(), more.end());
     out.insert(out.end(), more.begin(), more.end());
+  };
+  add_folder(directory);
+  if (ec) throw InputError(directory + ": cannot list experiments (" + ec.message() + ")");
+  // The diagnostic experiments behind CLAIMS.md's Why lines (experiments/diagnostics/), and with
+  // `full` the full sweeps (experiments/sweeps/).
+  for (const char* sub : {"diagnostics", "sweeps"}) {
+    if (std::string(sub) == "sweeps" && !full) continue;
+    const std::filesystem::path folder = std::filesystem::path(directory) / sub;
+    if (std::filesystem::is_directory(folder, ec)) add_folder(folder);
   }
   return out;
 }

@@ -11,9 +11,21 @@
 //               the mesh options of the family (meshgen/generate.h, mesh_option_table()) as
 //               name=value. The results name the meshes by ExperimentMesh::label()
 //               (torus-anisotropic-A16), so lines of one family with other options stay apart
-//   noise       order=3 seed=11 [alpha=gaussian|uniform] [scale=0.1]
-//               optional controlled noise alpha h^k along the normal (meshgen/noise.h; paper
-//               §5.3, docs/algorithms.md §10.3): alpha = scale N(0,1) or scale U[0,1)
+//   mesh        torus-unstructured levels=3 noise-sigma=0,0.01,0.03 [noise-model=normal|isotropic|
+//               tangential] [noise-alpha=gaussian|uniform-centred|uniform] [outliers=0.001,0.01]
+//               the mesh line's own noise, one mesh per listed value (the sweeps at a fixed mesh):
+//               sigma = noise-sigma * h (order 1, scale sigma/h; 0: no noise), or outliers with
+//               fraction p; the noise column says the model ("normal gauss 0.03h", "outliers 1%");
+//               a mesh listed twice counts once
+//   noise       order=3 seed=11 [alpha=gaussian|uniform|uniform-centred] [scale=0.1]
+//               [model=normal|isotropic|tangential] [outliers=P]
+//               optional controlled noise alpha h^k (meshgen/noise.h; paper §5.3,
+//               docs/algorithms.md §10.3): alpha = scale N(0,1), scale U[0,1) or scale
+//               U[-sqrt3,sqrt3), along the normal (or isotropic, tangential; outliers: a fraction P
+//               of the vertices moved by 3h); order 1, 2 or 3; a line without order= sets the seed
+//               (and model) of the mesh lines' own noise
+//   sweep       radius | noise                  a study at a fixed mesh (harness/report_sweeps.h):
+//               reported in its own REPORT.md section, not as convergence tables; no readings
 //   noisy       yes [rings=all|quadratic]       input is noisy: default rings +0.5 (paper §5.3)
 //               for the fits of every degree (all) or of degree 2 only (quadratic)
 //   vertex-set  all                             all | interior | boundary-ring (default all)
@@ -26,7 +38,8 @@
 //               any estimator option of role "result" as name=value (rings, centre=no,
 //               qr-tol=1e-8, vertex-normals=max, ball-factor=2, ...: the table of
 //               include/curvbench/estimator_options.h), and label="LHF-2 interp" to tell
-//               variants apart
+//               variants apart. One option may list values (rings=1,1.5,2): one method per
+//               value, labelled "<label> <option>=<value>" (e.g. "LHF-2 rings=1.5")
 //   method      all-operators [options]   every registered degree-free operator, one line each
 //               external name=N command="prog {mesh} {out}" [timeout=SECONDS]
 //               [description="..."]: an outside estimator (external_estimator.h), labelled N,
@@ -62,6 +75,16 @@ struct ExperimentMesh {
 
   /// The results' family column, report tables, plot names and case ids: mesh_label().
   std::string label() const { return mesh_label(family, shape); }
+  /// The mesh line's own noise model (noise-sigma=, outliers=; order 1), instead of the
+  /// experiment's; the case ids of such a mesh name its noise (case_store.h).
+  bool has_noise_model = false;
+  NoiseModel noise_model = {};
+
+  bool operator==(const ExperimentMesh& o) const {
+    return family == o.family && levels == o.levels && noise_order == o.noise_order &&
+           !(shape < o.shape) && !(o.shape < shape) && has_noise_model == o.has_noise_model &&
+           !(noise_model < o.noise_model) && !(o.noise_model < noise_model);
+  }
 };
 
 struct ExperimentMethod {
@@ -104,10 +127,16 @@ struct Experiment {
   bool noisy_quadratic_only = false;  ///< `noisy yes rings=quadratic`: +0.5 ring for degree 2 only
   double radius_alpha = 0.0;          ///< radius-scaling: radius c h^alpha (c > 0 when set)
   double radius_c = 0.0;
+  std::string sweep;  ///< `sweep radius|noise`: a study at a fixed mesh; empty otherwise
 
   /// The controlled noise order of a mesh line (its own, else the experiment's).
   int noise_order_of(const ExperimentMesh& m) const {
     return m.noise_order >= 0 ? m.noise_order : noise_order;
+  }
+
+  /// The noise model of a mesh line (its own, else the experiment's).
+  const NoiseModel& noise_model_of(const ExperimentMesh& m) const {
+    return m.has_noise_model ? m.noise_model : noise_model;
   }
 
   /// Whether a fit of this degree gets the noisy-data half ring.
@@ -124,7 +153,8 @@ Experiment parse_experiment(const std::string& path);
 Experiment parse_experiment_text(const std::string& text, const std::string& source);
 
 /// The experiment files in a directory (*.exp), sorted by file name, then those of its
-/// `diagnostics` subfolder (the diagnostic experiments behind CLAIMS.md's Why lines).
-std::vector<std::string> list_experiment_files(const std::string& directory);
+/// `diagnostics` subfolder (the diagnostic experiments behind CLAIMS.md's Why lines); with
+/// `full`, then those of its `sweeps` subfolder (the full sweeps, `curvbench run --full`).
+std::vector<std::string> list_experiment_files(const std::string& directory, bool full = false);
 
 }  // namespace curvbench

@@ -109,7 +109,7 @@ std::vector<Experiment> apply_reading(const std::vector<Experiment>& experiments
                                       const ReadingChoice& choice) {
   std::vector<Experiment> out;
   for (Experiment e : experiments)
-    if (choice.apply(e)) out.push_back(std::move(e));
+    if (e.sweep.empty() && choice.apply(e)) out.push_back(std::move(e));  // not the sweeps
   return out;
 }
 

@@ -22,6 +22,7 @@
 #include "harness/paper_tables.h"
 #include "harness/plot_styles.h"
 #include "harness/report_field.h"
+#include "harness/report_sweeps.h"
 #include "harness/well_shaped_torus_table.h"
 #include "mesh/io.h"
 #include "mesh/rings.h"
@@ -199,6 +200,10 @@ bool render_plot(const std::string& base, const std::string& title,
       plot << ", " << format_double(0.5 * e0) << "*(x/" << format_double(h0) << ")**" << p
            << " with lines dt 2 lw 1 lc rgb '#808080' title 'O(h^" << p << ")'";
   plot << "\n";
+  return run_gnuplot(base, gp.str(), plot.str());
+}
+
+bool run_gnuplot(const std::string& base, const std::string& setup, const std::string& plot) {
   // The images are written by gnuplot to the temporary files of the project's atomic writer
   // (core/atomic_file.h) and renamed into place only if it succeeds; the script under a temporary
   // name too (swept by remove_stale_temp_files if killed).
@@ -212,11 +217,11 @@ bool render_plot(const std::string& base, const std::string& title,
   const std::string script_path = temp_path(base + ".gp");
   {
     std::ofstream out(script_path);
-    out << gp.str() << "set terminal pngcairo size 900,560 font 'sans,11'\nset output '"
+    out << setup << "set terminal pngcairo size 900,560 font 'sans,11'\nset output '"
         << png->temporary() << "'\n"
-        << plot.str() << "set terminal svg size 900,560 font 'sans,11'\nset output '"
-        << svg->temporary() << "'\n"
-        << plot.str() << "unset output\n";
+        << plot << "set terminal svg size 900,560 font 'sans,11'\nset output '" << svg->temporary()
+        << "'\n"
+        << plot << "unset output\n";
   }
   const std::string cmd = "gnuplot '" + script_path + "' > /dev/null 2>&1";
   const int rc = std::system(cmd.c_str());
@@ -334,6 +339,7 @@ std::string write_report(const std::vector<Experiment>& experiments, const Repor
                         [](const Experiment* e) { return e->name.rfind("fig", 0) == 0; });
   for (const Experiment* ep : ordered) {
     const Experiment& e = *ep;
+    if (!e.sweep.empty()) continue;  // the sweeps' own section (report_sweeps.h)
     const std::string csv = dir + "/" + e.name + ".csv";
     if (!fs::exists(csv)) {
       md << "## " << e.title << " (" << e.name << ")\n\nNot run yet: " << csv << " is missing.\n\n";
@@ -403,6 +409,7 @@ std::string write_report(const std::vector<Experiment>& experiments, const Repor
     md << cause_tables_markdown(e, dir);
   }
   if (!append_field_estimators_section(md, experiments, options, missing_plots)) return "";
+  if (!append_sweeps_section(md, experiments, options, missing_plots)) return "";
   if (missing_plots > 0)
     std::fprintf(stderr, "report: %d plots not rendered (is gnuplot installed?)\n", missing_plots);
   const std::string path = dir + "/REPORT.md";

@@ -55,4 +55,9 @@ struct PlotAxis {
 bool render_plot(const std::string& base, const std::string& title,
                  const std::vector<ErrorRow>& rows, const PlotAxis& x_axis = {});
 
+/// Runs gnuplot on `setup` (settings and data blocks) then `plot` (the plot command, drawn once
+/// per terminal) into <base>.png and <base>.svg, as render_plot does. Returns false if gnuplot is
+/// unavailable or fails; re-raises SIGINT or SIGTERM if gnuplot was killed by one.
+bool run_gnuplot(const std::string& base, const std::string& setup, const std::string& plot);
+
 }  // namespace curvbench

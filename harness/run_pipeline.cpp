@@ -253,9 +253,11 @@ PipelineResult run_pipeline(const PipelineOptions& o) {
     return result;
   }
 
-  // Rates over every experiment CSV present (all of them, not only the ones just run).
+  // Rates over every experiment CSV present (all of them, not only the ones just run); not the
+  // sweeps, which have one level.
   std::vector<ErrorRow> all_rows;
   for (const auto& e : o.available) {
+    if (!e.sweep.empty()) continue;
     const std::string csv = o.output + "/" + e.name + ".csv";
     if (fs::exists(csv)) {
       auto rows = read_error_csv(csv);

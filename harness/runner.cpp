@@ -20,7 +20,8 @@ namespace curvbench {
 namespace {
 
 std::string noise_label(const Experiment& e, const ExperimentMesh& m) {
-  if (const int order = e.noise_order_of(m); order > 0) return "h^" + std::to_string(order);
+  if (const int order = e.noise_order_of(m); order > 0)
+    return curvbench::noise_label(order, e.noise_model_of(m));
   return mesh_family(m.family).noise_label;
 }
 
@@ -129,7 +130,7 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads,
                                std::vector<CauseRow>* causes) {
   const Experiment& e = *c.experiment;
   const ScoredMesh& sm = cache.get(c.mesh->family, c.level, e.noise_order_of(*c.mesh), e.noise_seed,
-                                   e.noise_model, c.mesh->shape);
+                                   e.noise_model_of(*c.mesh), c.mesh->shape);
   const Mesh& mesh = sm.generated.mesh;
 
   using clock = std::chrono::steady_clock;

@@ -284,7 +284,7 @@ GeneratedMesh generate_mesh(const MeshSpec& spec) {
   check_mesh_shape(spec.family, spec.shape);
   GeneratedMesh gm = family.generate(spec);
   if (spec.noise_order > 0)
-    gm = add_normal_noise(gm, spec.noise_order, spec.seed, spec.noise_model);
+    gm = add_noise(gm, spec.noise_order, spec.seed, spec.noise_model);
   return gm;
 }
 

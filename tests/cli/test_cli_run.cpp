@@ -2,10 +2,15 @@
 // CSV converge, and bad usage exits with 2.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "harness/results_table.h"
 #include "tests/cli/cli_runner.h"
@@ -96,6 +101,46 @@ TEST(CliRun, ListAndBadUsage) {
   r = run_cli("run --list --experiments-dir " + exp_dir.string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("broken.exp:2: unknown key 'foo'"), std::string::npos) << r.output;
+}
+
+// --full adds the experiments of sweeps/; one named like a top-level experiment replaces it.
+// A bad noise or radius value exits 2 with one line naming the option and the value.
+TEST(CliRun, FullSweepsReplaceTrimmedAndBadNoiseExits2) {
+  const auto dir = fresh_dir("cli_run_full");
+  const auto exp_dir = write_tiny_experiment(dir);
+  fs::create_directories(exp_dir / "sweeps");
+  const std::string body =
+      "sweep radius\nmesh bump-48 levels=1 noise-sigma=0,0.01\nmethod icc ball-factor=1,2\n"
+      "panel sr-h \"H.\" H L2\n";
+  std::ofstream(exp_dir / "sw.exp") << "name sw\ntitle \"trimmed\"\n" << body;
+  std::ofstream(exp_dir / "sweeps" / "sw.exp") << "name sw\ntitle \"full\"\n" << body;
+  std::ofstream(exp_dir / "sweeps" / "extra.exp") << "name extra\ntitle \"full only\"\n" << body;
+  auto r = run_cli("run --list --experiments-dir " + exp_dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("trimmed"), std::string::npos);
+  EXPECT_EQ(r.output.find("extra"), std::string::npos);
+  r = run_cli("run --list --full --experiments-dir " + exp_dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("trimmed"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("full only"), std::string::npos);
+  r = run_cli("run --list-cases --full --experiments-dir " + exp_dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("sw/bump-48_normal_gauss_0.01h_L1_ICC_ball-factor_2_"), std::string::npos)
+      << r.output;
+  for (const auto& [bad, needle] : std::vector<std::pair<std::string, std::string>>{
+           {"mesh bump-48 levels=1 noise-sigma=-0.1", "noise-sigma=-0.1 must be"},
+           {"mesh bump-48 levels=1 outliers=2", "outliers=2 is outside [0, 1]"},
+           {"radius-scaling alpha=0 c=1", "radius-scaling alpha=0 c=1: needs"},
+           {"method lhf-2 rings=0.5", "fit: ring 0.5 is not supported"}}) {
+    std::ofstream(exp_dir / "bad.exp") << "name bad\nmethod meyer\npanel b \"B.\" H L2\n"
+                                       << "mesh bump-48 levels=1\n"
+                                       << bad << "\n";
+    r = run_cli("run --list --experiments-dir " + exp_dir.string());
+    EXPECT_EQ(r.exit_code, 2) << bad;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_NE(r.output.find("bad.exp:5: "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(needle), std::string::npos) << r.output;
+  }
 }
 
 }  // namespace

@@ -3,11 +3,13 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
 
 #include "core/errors.h"
+#include "harness/case_store.h"
 #include "harness/experiment.h"
 #include "harness/results_table.h"
 #include "harness/runner.h"
@@ -75,7 +77,7 @@ TEST(Experiment, ErrorsNameFileAndLine) {
   };
   expect_error(base + "colour red\n", "bad.exp:5: unknown key 'colour'");
   expect_error(base + "panel q c curvature L2\n", "bad.exp:5: unknown quantity");
-  expect_error(base + "noise order=5\n", "bad.exp:5: noise order must be 2 or 3");
+  expect_error(base + "noise order=5\n", "bad.exp:5: noise order must be 1, 2 or 3");
   expect_error(base + "mesh bump-48 levels=1,x\n", "bad.exp:5: 'x' is not an integer");
   expect_error(base + "title \"open\n", "bad.exp:5: unterminated quote");
   expect_error(base + "method lhf-2 label=\"a,b\"\n", "bad.exp:5: a label must be");
@@ -122,6 +124,117 @@ TEST(Experiment, SingleMethodOptions) {
   expect_error("method taubin ball-factor=1\n",
                "bad.exp:4: ball-factor applies to methods 'normal-cycle' and 'icc' only");
   expect_error("method normal-cycle ball-factor=-1\n", "bad.exp:4: ball-factor -1: out of range");
+  expect_error("method lhf-2 rings=0.5\n", "bad.exp:4: fit: ring 0.5 is not supported");
+}
+
+// `method M key=v1,v2,...`: one method per value, labelled "<label> key=value".
+TEST(Experiment, MethodOptionListExpands) {
+  const std::string head = "name x\nmesh bump-48 levels=1\npanel p c H L2\n";
+  const Experiment e = parse_experiment_text(head +
+                                                 "method lhf-2 rings=1,1.5,2\n"
+                                                 "method icc ball-factor=1,4 label=B\n"
+                                                 "method meyer\n",
+                                             "list.exp");
+  ASSERT_EQ(e.methods.size(), 6u);
+  EXPECT_EQ(e.methods[0].label, "LHF-2 rings=1");
+  EXPECT_EQ(e.methods[1].label, "LHF-2 rings=1.5");
+  EXPECT_DOUBLE_EQ(e.methods[1].options.rings, 1.5);
+  EXPECT_EQ(e.methods[2].label, "LHF-2 rings=2");
+  EXPECT_EQ(e.methods[3].label, "B ball-factor=1");
+  EXPECT_DOUBLE_EQ(e.methods[4].options.ball_factor, 4.0);
+  EXPECT_EQ(e.methods[4].label, "B ball-factor=4");
+  EXPECT_EQ(e.methods[5].label, "");
+  const auto expect_error = [&](const std::string& line, const std::string& needle) {
+    try {
+      parse_experiment_text(head + line, "bad.exp");
+      ADD_FAILURE() << "expected InputError for: " << line;
+    } catch (const InputError& err) {
+      EXPECT_NE(std::string(err.what()).find(needle), std::string::npos) << err.what();
+    }
+  };
+  expect_error("method lhf-2 rings=1,2 qr-tol=1e-3,1e-8\n",
+               "bad.exp:4: only one option of a method line may list values");
+  expect_error("method lhf-2 rings=1,,2\n", "bad.exp:4: empty value in the list '1,,2'");
+  expect_error("method lhf-2 rings=1,0.5\n", "bad.exp:4: fit: ring 0.5 is not supported");
+}
+
+// Mesh lines with their own noise: one mesh per listed sigma/h or outlier fraction (sigma 0: the
+// noise-free mesh, listed once), the model on each; bad values name the option and value.
+TEST(Experiment, MeshNoiseVariants) {
+  const std::string head = "name x\nmethod meyer\npanel p c H L2\n";
+  const Experiment e = parse_experiment_text(
+      head +
+          "noise seed=5\n"
+          "mesh torus-structured levels=1 noise-sigma=0,0.03 noise-model=tangential "
+          "noise-alpha=uniform-centred\n"
+          "mesh torus-structured levels=1 noise-sigma=0,0.1\n"
+          "mesh torus-structured levels=1 outliers=0.01\n",
+      "noise.exp");
+  EXPECT_EQ(e.noise_order, 0);
+  EXPECT_EQ(e.noise_seed, 5u);
+  ASSERT_EQ(e.meshes.size(), 4u);
+  EXPECT_FALSE(e.meshes[0].has_noise_model);
+  EXPECT_EQ(e.noise_order_of(e.meshes[0]), 0);
+  EXPECT_EQ(e.noise_order_of(e.meshes[1]), 1);
+  EXPECT_EQ(e.noise_model_of(e.meshes[1]).direction, NoiseDirection::tangential);
+  EXPECT_EQ(e.noise_model_of(e.meshes[1]).distribution, NoiseDistribution::uniform_centred);
+  EXPECT_DOUBLE_EQ(e.noise_model_of(e.meshes[1]).scale, 0.03);
+  EXPECT_EQ(e.noise_model_of(e.meshes[2]).direction, NoiseDirection::normal);
+  EXPECT_DOUBLE_EQ(e.noise_model_of(e.meshes[2]).scale, 0.1);
+  EXPECT_DOUBLE_EQ(e.noise_model_of(e.meshes[3]).outlier_fraction, 0.01);
+  const std::string base = "name x\nmesh bump-48 levels=1\nmethod lhf-2\npanel p c H L2\n";
+  const auto expect_error = [&](const std::string& line, const std::string& needle) {
+    try {
+      parse_experiment_text(base + line, "bad.exp");
+      ADD_FAILURE() << "expected InputError for: " << line;
+    } catch (const InputError& err) {
+      EXPECT_NE(std::string(err.what()).find(needle), std::string::npos) << err.what();
+    }
+  };
+  expect_error("mesh bump-48 levels=1 noise-sigma=0.1,-0.01\n",
+               "bad.exp:5: noise-sigma=-0.01 must be finite and >= 0");
+  expect_error("mesh bump-48 levels=1 outliers=1.5\n", "bad.exp:5: outliers=1.5 is outside [0, 1]");
+  expect_error("mesh bump-48 levels=1 outliers=-0.1\n",
+               "bad.exp:5: outliers=-0.1 is outside [0, 1]");
+  expect_error("mesh bump-48 levels=1 noise-sigma=0.1 noise-model=radial\n",
+               "bad.exp:5: noise model 'radial' is not one of normal, isotropic, tangential");
+  expect_error("mesh bump-48 levels=1 noise-model=isotropic\n",
+               "bad.exp:5: noise-model and noise-alpha need noise-sigma=S,...");
+  expect_error("noise outliers=2\n", "bad.exp:5: noise outliers=2 is outside (0, 1]");
+  expect_error("noise order=2 scale=-1\n", "bad.exp:5: noise scale=-1 must be finite and >= 0");
+  expect_error("radius-scaling alpha=0 c=1\n",
+               "bad.exp:5: radius-scaling alpha=0 c=1: needs c > 0 and 0 < alpha <= 1");
+  expect_error("radius-scaling alpha=-0.5 c=1\n", "bad.exp:5: radius-scaling alpha=-0.5 c=1");
+  expect_error("sweep size\n", "bad.exp:5: sweep 'size' is not one of radius, noise");
+}
+
+// The noise of each mesh line reaches the rows' noise column and the case ids (no collision
+// between meshes of one family with different noise).
+TEST(Experiment, MeshNoiseReachesRowsAndCaseIds) {
+  const Experiment e = parse_experiment_text(
+      "name nz\nmethod meyer\npanel p c H L2\nnoise seed=3\n"
+      "mesh torus-structured levels=1 noise-sigma=0,0.03\n"
+      "mesh torus-structured levels=1 noise-sigma=0.03 noise-model=tangential "
+      "noise-alpha=uniform-centred\n"
+      "mesh torus-structured levels=1 noise-sigma=0.03 noise-model=isotropic\n"
+      "mesh torus-structured levels=1 outliers=0.01\n",
+      "nz.exp");
+  RunOptions o;
+  o.threads = 1;
+  const RunSummary run = run_experiments({e}, o);
+  ASSERT_EQ(run.rows.size(), 5u);
+  const std::vector<std::string> labels{"none", "normal gauss 0.03h", "tangential uniform 0.03h",
+                                        "isotropic gauss 0.03h", "outliers 1%"};
+  std::set<double> errors;
+  for (size_t i = 0; i < labels.size(); ++i) {
+    EXPECT_EQ(run.rows[i].noise, labels[i]);
+    errors.insert(run.rows[i].error);
+  }
+  EXPECT_EQ(errors.size(), labels.size());  // five different meshes
+  std::set<std::string> ids;
+  const std::vector<Experiment> experiments{e};
+  for (const RunCase& c : expand_cases(experiments))
+    EXPECT_TRUE(ids.insert(case_id(c)).second) << case_id(c);
 }
 
 // The runner hands the options of single methods to the estimator: each variant's errors differ
@@ -179,6 +292,30 @@ TEST(Experiment, ShippedDefinitionsAreValid) {
     }
     for (const auto& p : e.panels) EXPECT_TRUE(panels.insert(p.id).second) << p.id;
   }
+}
+
+// The full sweeps (experiments/sweeps/, run --full) parse; one named like a top-level experiment
+// (its trimmed version) is a sweep of the same kind with the same panels.
+TEST(Experiment, ShippedFullSweepsMatchTheirTrimmedVersions) {
+  const std::string dir = std::string(CURVBENCH_SOURCE_DIR) + "/experiments";
+  std::map<std::string, Experiment> top;
+  for (const auto& f : list_experiment_files(dir)) {
+    Experiment e = parse_experiment(f);
+    top.emplace(e.name, std::move(e));
+  }
+  int replaced = 0;
+  for (const auto& f : list_experiment_files(dir, true)) {
+    if (f.find("/sweeps/") == std::string::npos) continue;
+    const Experiment e = parse_experiment(f);
+    const auto it = top.find(e.name);
+    if (it == top.end()) continue;
+    ++replaced;
+    EXPECT_FALSE(e.sweep.empty()) << f;
+    EXPECT_EQ(e.sweep, it->second.sweep) << f;
+    ASSERT_EQ(e.panels.size(), it->second.panels.size()) << f;
+    for (size_t i = 0; i < e.panels.size(); ++i) EXPECT_EQ(e.panels[i].id, it->second.panels[i].id);
+  }
+  EXPECT_EQ(replaced, 2);  // sweep-radius, sweep-noise
 }
 
 TEST(ResultsTable, CsvRoundTripAndRates) {

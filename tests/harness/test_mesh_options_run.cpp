@@ -49,8 +49,10 @@ TEST(MeshOptionsRun, ParsedAndCheckedOnTheMeshLine) {
             "bump-anisotropic)");
   EXPECT_EQ(parse_error("mesh bump-anisotropic levels=1 aspect=wide"),
             "bad.exp:6: 'wide' is not a number");
-  EXPECT_EQ(parse_error("mesh bump-anisotropic levels=1 stretch=2"),
-            "bad.exp:6: expected levels=1,2,3,4 [noise-order=K] [aspect=A] [density=D]");
+  EXPECT_EQ(
+      parse_error("mesh bump-anisotropic levels=1 stretch=2"),
+      "bad.exp:6: expected levels=1,2,3,4 [noise-order=K] [noise-sigma=S,...] [noise-model=M] "
+      "[noise-alpha=A] [outliers=P,...] [aspect=A] [density=D]");
 }
 
 TEST(MeshOptionsRun, TwoAspectsStayApartInKeysIdsAndRows) {

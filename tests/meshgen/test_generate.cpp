@@ -80,7 +80,7 @@ TEST(Generate, DispatchesToTheGenerators) {
   // Noise with the spec's seed, on top of the clean mesh.
   spec = MeshSpec{"bump-irregular", 2, 3, 23};
   EXPECT_EQ(generate_mesh(spec).mesh.vertices(),
-            add_normal_noise(bump_irregular(2, 23), 3, 23).mesh.vertices());
+            add_noise(bump_irregular(2, 23), 3, 23).mesh.vertices());
   // The isosurface levels are n = 16 * 2^(L-1); level 1 has the paper's 320 vertices.
   spec = MeshSpec{"torus-iso", 1};
   const GeneratedMesh iso = generate_mesh(spec);

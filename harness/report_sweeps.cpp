@@ -1,0 +1,417 @@
+#include "harness/report_sweeps.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <tuple>
+
+#include "core/atomic_file.h"
+#include "core/build_info.h"
+#include "core/text.h"
+#include "harness/metrics.h"
+
+namespace curvbench {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr Quantity kQuantities[] = {Quantity::normal, Quantity::H, Quantity::K};
+
+std::string sci(double x) {
+  if (!std::isfinite(x)) return "n/a";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2e", x);
+  return buf;
+}
+
+std::string radius_text(const BestRadius& b) {
+  if (b.parameter.empty()) return "1-ring";
+  std::string s = b.parameter == "rings" ? "rings " : "C = ";
+  s += format_g(b.radius);
+  if (b.radii > 1 && b.radius == b.highest) s += " (largest)";
+  return s;
+}
+
+// [A-Za-z0-9.-] kept, anything else '_' (plot file names).
+std::string file_safe(const std::string& s) {
+  std::string out;
+  for (char c : s)
+    out += (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-') ? c : '_';
+  return out;
+}
+
+std::string quantity_words(Quantity q) {
+  switch (q) {
+    case Quantity::normal:
+      return "normals";
+    case Quantity::H:
+      return "mean curvature H";
+    default:
+      return "Gaussian curvature K";
+  }
+}
+
+// Settings shared by the sweep plots: axes, key, grid and the provenance footer.
+std::string plot_setup(const std::string& title, const std::string& xlabel, bool logx) {
+  std::ostringstream gp;
+  gp << (logx ? "set logscale xy\n" : "set logscale y\n") << "set format y '10^{%L}'\n"
+     << "set xlabel '" << xlabel << "'\nset ylabel 'L2 error'\n"
+     << "set key outside right top font ',9'\nset grid\nset bmargin 5\n"
+     << "set label 1 \"" << build_info() << ", " << utc_timestamp()
+     << "\" at screen 0.01, screen 0.015 font ',8' noenhanced\n"
+     << "set title \"" << title << "\" noenhanced\n";
+  return gp.str();
+}
+
+// The rows of one experiment's CSV, or none when it has not been run.
+std::vector<ErrorRow> rows_of(const Experiment& e, const std::string& dir) {
+  const std::string csv = dir + "/" + e.name + ".csv";
+  return fs::exists(csv) ? read_error_csv(csv) : std::vector<ErrorRow>{};
+}
+
+// Values in first-seen order.
+template <class F>
+std::vector<std::string> distinct(const std::vector<ErrorRow>& rows, F&& key) {
+  std::vector<std::string> out;
+  std::set<std::string> seen;
+  for (const ErrorRow& r : rows)
+    if (seen.insert(key(r)).second) out.push_back(key(r));
+  return out;
+}
+
+// The radius sweep of one experiment: plots and tables per (family, noise).
+bool radius_sweep(std::ostringstream& md, const Experiment& e, const std::vector<ErrorRow>& rows,
+                  const std::vector<BestRadius>& best, const ReportOptions& options,
+                  int& missing_plots) {
+  const std::string dir = options.results_dir;
+  for (const std::string& family : distinct(rows, [](const ErrorRow& r) { return r.family; }))
+    for (const std::string& noise : distinct(rows, [](const ErrorRow& r) { return r.noise; })) {
+      std::vector<const ErrorRow*> sel;
+      for (const ErrorRow& r : rows)
+        if (r.family == family && r.noise == noise && r.norm == "L2") sel.push_back(&r);
+      if (sel.empty()) continue;
+      md << "#### `" << family << "` level " << sel.front()->level << " (" << sel.front()->vertices
+         << " vertices, h = " << sci(sel.front()->h) << "), noise " << noise
+         << "\n\n| method | radius swept |";
+      for (Quantity q : kQuantities) md << " best for " << to_string(q) << " | L2 error |";
+      md << "\n|---|---|";
+      for (size_t i = 0; i < 2 * std::size(kQuantities); ++i) md << "---|";
+      md << "\n";
+      std::vector<std::string> methods;
+      for (const BestRadius& b : best)
+        if (b.experiment == e.name && b.family == family && b.noise == noise &&
+            std::find(methods.begin(), methods.end(), b.method) == methods.end())
+          methods.push_back(b.method);
+      for (const std::string& method : methods) {
+        std::string swept = "-";
+        std::string cells;
+        for (Quantity q : kQuantities) {
+          const BestRadius* found = nullptr;
+          for (const BestRadius& b : best)
+            if (b.experiment == e.name && b.family == family && b.noise == noise &&
+                b.method == method && b.quantity == to_string(q) && b.norm == "L2")
+              found = &b;
+          if (found && !found->parameter.empty())
+            swept = found->parameter + " (" + std::to_string(found->radii) + " values)";
+          if (!found) {
+            cells += " - | - |";
+            continue;
+          }
+          cells += ' ';
+          cells += radius_text(*found);
+          cells += " | ";
+          cells += sci(found->error);
+          cells += " |";
+        }
+        md << "| " << method << " | " << swept << " |" << cells << "\n";
+      }
+      md << "\n";
+      if (!options.plots) continue;
+      for (Quantity q : kQuantities) {
+        if (options.stop && options.stop()) return false;
+        // Swept methods: (radius, error) in radius order; fixed ones: their error.
+        std::map<std::string, std::map<double, double>> curves;
+        std::vector<std::string> order;
+        std::vector<std::pair<std::string, double>> fixed;
+        for (const ErrorRow* r : sel) {
+          if (r->quantity != to_string(q) || !std::isfinite(r->error) || r->error <= 0) continue;
+          const SweepLabel l = parse_sweep_label(r->method);
+          if (l.parameter.empty()) {
+            fixed.push_back({l.method, r->error});
+            continue;
+          }
+          if (!curves.count(l.method)) order.push_back(l.method);
+          curves[l.method][l.radius] = r->error;
+        }
+        std::ostringstream data, plot;
+        plot << "plot ";
+        bool first = true;
+        for (size_t i = 0; i < order.size(); ++i) {
+          data << "$S" << i << " << EOD\n";
+          for (const auto& [x, y] : curves[order[i]])
+            data << format_double(x) << ' ' << format_double(y) << "\n";
+          data << "EOD\n";
+          plot << (first ? "" : ", ") << "$S" << i << " using 1:2 with linespoints lw 2 pt "
+               << (i % 7) + 4 << " lc " << i + 1 << " title \"" << order[i] << "\" noenhanced";
+          first = false;
+        }
+        for (size_t i = 0; i < fixed.size(); ++i) {
+          plot << (first ? "" : ", ") << format_double(fixed[i].second)
+               << " with lines dt 3 lw 2 lc " << order.size() + i + 1 << " title \""
+               << fixed[i].first << " (1-ring)\" noenhanced";
+          first = false;
+        }
+        data << "$B << EOD\n";
+        for (const BestRadius& b : best)
+          if (b.experiment == e.name && b.family == family && b.noise == noise &&
+              b.quantity == to_string(q) && b.norm == "L2" && !b.parameter.empty() && b.error > 0)
+            data << format_double(b.radius) << ' ' << format_double(b.error) << "\n";
+        data << "EOD\n";
+        plot << (first ? "" : ", ")
+             << "$B using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb 'black' title 'best radius'\n";
+        const std::string base = e.name + "_" + family + "_" + noise + "_" + to_string(q);
+        const std::string title = "L2 error in " + quantity_words(q) + " against the radius [" +
+                                  family + ", noise " + noise + "]";
+        const std::string file = dir + "/plots/" + file_safe(base);
+        if (run_gnuplot(file,
+                        plot_setup(title,
+                                   "radius / h (fits, quadric: rings; normal cycle, ICC: "
+                                   "ball factor C)",
+                                   false) +
+                            data.str(),
+                        plot.str()))
+          md << "![" << base << "](plots/" << file_safe(base) << ".png) ([svg](plots/"
+             << file_safe(base) << ".svg))\n\n";
+        else
+          ++missing_plots;
+      }
+    }
+  return true;
+}
+
+// The noise sweep of one experiment: per family, one plot per (quantity, model) against sigma/h,
+// and the outlier table.
+bool noise_sweep(std::ostringstream& md, const Experiment& e, const std::vector<ErrorRow>& rows,
+                 const ReportOptions& options, int& missing_plots) {
+  const std::string dir = options.results_dir;
+  for (const std::string& family : distinct(rows, [](const ErrorRow& r) { return r.family; })) {
+    std::vector<ErrorRow> fam;
+    for (const ErrorRow& r : rows)
+      if (r.family == family && r.norm == "L2") fam.push_back(r);
+    if (fam.empty()) continue;
+    md << "#### `" << family << "` level " << fam.front().level << " (" << fam.front().vertices
+       << " vertices, h = " << sci(fam.front().h) << ")\n\n";
+    const auto methods = distinct(fam, [](const ErrorRow& r) { return r.method; });
+    // Outliers: methods x (none, each outlier label), per quantity.
+    std::vector<std::string> columns{"none"};
+    for (const std::string& n : distinct(fam, [](const ErrorRow& r) { return r.noise; }))
+      if (n.rfind("outliers", 0) == 0) columns.push_back(n);
+    std::map<std::tuple<std::string, std::string, std::string>, double> err;
+    for (const ErrorRow& r : fam) err[{r.method, r.noise, r.quantity}] = r.error;
+    if (columns.size() > 1) {
+      md << "L2 errors without noise and with outliers (a fraction of the vertices moved by 3h "
+            "along the normal):\n\n| method |";
+      for (Quantity q : kQuantities)
+        for (const std::string& c : columns) md << " " << to_string(q) << ", " << c << " |";
+      md << "\n|---|";
+      for (size_t i = 0; i < std::size(kQuantities) * columns.size(); ++i) md << "---|";
+      md << "\n";
+      for (const std::string& m : methods) {
+        md << "| " << m << " |";
+        for (Quantity q : kQuantities)
+          for (const std::string& c : columns) {
+            const auto it = err.find({m, c, to_string(q)});
+            md << " " << (it == err.end() ? "-" : sci(it->second)) << " |";
+          }
+        md << "\n";
+      }
+      md << "\n";
+    }
+    if (!options.plots) continue;
+    std::vector<std::string> models;
+    for (const ErrorRow& r : fam)
+      if (const std::string m = noise_model_of_label(r.noise);
+          !m.empty() && std::find(models.begin(), models.end(), m) == models.end())
+        models.push_back(m);
+    for (Quantity q : kQuantities)
+      for (const std::string& model : models) {
+        if (options.stop && options.stop()) return false;
+        std::ostringstream data, plot;
+        plot << "plot ";
+        for (size_t i = 0; i < methods.size(); ++i) {
+          std::map<double, double> curve;
+          for (const ErrorRow& r : fam)
+            if (r.method == methods[i] && r.quantity == to_string(q) &&
+                noise_model_of_label(r.noise) == model && std::isfinite(r.error) && r.error > 0)
+              curve[sigma_over_h(r.noise)] = r.error;
+          data << "$S" << i << " << EOD\n";
+          for (const auto& [x, y] : curve)
+            data << format_double(x) << ' ' << format_double(y) << "\n";
+          data << "EOD\n";
+          plot << (i ? ", " : "") << "$S" << i << " using 1:2 with linespoints lw 2 pt "
+               << (i % 7) + 4 << " lc " << i + 1 << " dt " << (i / 8) % 3 + 1 << " title \""
+               << methods[i] << "\" noenhanced";
+        }
+        plot << "\n";
+        const std::string base = e.name + "_" + family + "_" + model + "_" + to_string(q);
+        const std::string title =
+            "L2 error in " + quantity_words(q) + ", " + model + " noise [" + family + "]";
+        const std::string file = dir + "/plots/" + file_safe(base);
+        if (run_gnuplot(file, plot_setup(title, "noise amplitude sigma / h", true) + data.str(),
+                        plot.str()))
+          md << "![" << base << "](plots/" << file_safe(base) << ".png) ([svg](plots/"
+             << file_safe(base) << ".svg))\n\n";
+        else
+          ++missing_plots;
+      }
+  }
+  return true;
+}
+
+}  // namespace
+
+SweepLabel parse_sweep_label(const std::string& label) {
+  for (const char* key : {" rings=", " ball-factor="}) {
+    const auto at = label.rfind(key);
+    if (at == std::string::npos) continue;
+    const std::string value = label.substr(at + std::string(key).size());
+    char* end = nullptr;
+    const double x = std::strtod(value.c_str(), &end);
+    if (value.empty() || *end != '\0' || !std::isfinite(x)) continue;
+    return {label.substr(0, at), std::string(key).substr(1, std::string(key).size() - 2), x};
+  }
+  return {label, "", std::nan("")};
+}
+
+double sigma_over_h(const std::string& noise) {
+  if (noise == "none") return 0.0;
+  const auto space = noise.rfind(' ');
+  if (space == std::string::npos || noise.back() != 'h' || noise_model_of_label(noise).empty())
+    return std::nan("");
+  const std::string value = noise.substr(space + 1, noise.size() - space - 2);
+  char* end = nullptr;
+  const double x = std::strtod(value.c_str(), &end);
+  return !value.empty() && *end == '\0' ? x : std::nan("");
+}
+
+std::string noise_model_of_label(const std::string& noise) {
+  const auto space = noise.rfind(' ');
+  if (space == std::string::npos || noise.back() != 'h') return "";
+  const std::string model = noise.substr(0, space);
+  for (const char* dir : {"normal ", "isotropic ", "tangential "})
+    if (model.rfind(dir, 0) == 0) return model;
+  return "";
+}
+
+std::vector<BestRadius> best_radii(const std::vector<ErrorRow>& rows) {
+  using Key =
+      std::tuple<std::string, std::string, int, std::string, std::string, std::string, std::string>;
+  std::map<Key, size_t> index;
+  std::vector<BestRadius> out;
+  for (const ErrorRow& r : rows) {
+    const SweepLabel l = parse_sweep_label(r.method);
+    const Key key{r.experiment, r.family, r.level, r.noise, l.method, r.quantity, r.norm};
+    auto [it, inserted] = index.try_emplace(key, out.size());
+    if (inserted) {
+      BestRadius b;
+      b.experiment = r.experiment;
+      b.family = r.family;
+      b.level = r.level;
+      b.vertices = r.vertices;
+      b.h = r.h;
+      b.noise = r.noise;
+      b.method = l.method;
+      b.parameter = l.parameter;
+      b.radius = l.radius;
+      b.label = r.method;
+      b.quantity = r.quantity;
+      b.norm = r.norm;
+      b.error = r.error;
+      b.radii = 1;
+      b.lowest = b.highest = l.radius;
+      out.push_back(b);
+      continue;
+    }
+    BestRadius& b = out[it->second];
+    ++b.radii;
+    b.lowest = std::fmin(b.lowest, l.radius);
+    b.highest = std::fmax(b.highest, l.radius);
+    const bool better = std::isfinite(r.error) && (!std::isfinite(b.error) || r.error < b.error ||
+                                                   (r.error == b.error && l.radius < b.radius));
+    if (better) {
+      b.parameter = l.parameter;
+      b.radius = l.radius;
+      b.label = r.method;
+      b.error = r.error;
+    }
+  }
+  return out;
+}
+
+void write_best_radius_csv(const std::string& path, const std::vector<BestRadius>& rows) {
+  std::ostringstream out;
+  out << provenance_comment() << "\n"
+      << "experiment,family,level,vertices,h,noise,sigma_over_h,method,parameter,best_radius,label,"
+         "quantity,norm,error,radii,lowest_radius,highest_radius\n";
+  for (const BestRadius& b : rows)
+    out << b.experiment << ',' << b.family << ',' << b.level << ',' << b.vertices << ','
+        << format_double(b.h) << ',' << b.noise << ',' << format_double(sigma_over_h(b.noise))
+        << ',' << b.method << ',' << (b.parameter.empty() ? "fixed" : b.parameter) << ','
+        << format_double(b.radius) << ',' << b.label << ',' << b.quantity << ',' << b.norm << ','
+        << format_double(b.error) << ',' << b.radii << ',' << format_double(b.lowest) << ','
+        << format_double(b.highest) << "\n";
+  write_file_atomic(path, out.str());
+}
+
+bool append_sweeps_section(std::ostringstream& md, const std::vector<Experiment>& experiments,
+                           const ReportOptions& options, int& missing_plots) {
+  const std::string dir = options.results_dir;
+  bool header = false;
+  std::vector<BestRadius> all_best;
+  bool any_radius = false;
+  // The radius sweeps first (the noise sweeps use their best radii), then the noise sweeps.
+  std::vector<const Experiment*> sweeps;
+  for (const char* kind : {"radius", "noise"})
+    for (const Experiment& e : experiments)
+      if (e.sweep == kind) sweeps.push_back(&e);
+  for (const Experiment* ep : sweeps) {
+    const Experiment& e = *ep;
+    const std::vector<ErrorRow> rows = rows_of(e, dir);
+    if (rows.empty()) continue;
+    if (!header) {
+      md << "## Sweeps at a fixed mesh\n\n"
+         << "One mesh level per family; the neighbourhood radius or the noise varies "
+            "(experiments with `sweep radius` or `sweep noise`; `curvbench run --all --full` runs "
+            "the full sweeps of `experiments/sweeps/` in place of the trimmed ones). Errors are "
+            "L2: normals absolute, curvatures relative (as above). Radii are in units of the mean "
+            "edge length h: rings for the fits and the quadric, the ball factor C (ball of radius "
+            "C h) for the normal cycle and ICC; a fit asked for fewer rings than its degree needs "
+            "grows by half rings until it has enough points (paper §4.1), so its smallest radii "
+            "are lower bounds. Noise: sigma = (sigma/h) h, Gaussian or centred uniform (same "
+            "standard deviation), along the exact normal, isotropic, or tangential (vertices "
+            "stay on the surface); outliers: a fraction of the vertices moved by 3h along the "
+            "normal (meshgen/noise.h).\n\n";
+      header = true;
+    }
+    md << "### " << e.name << ": " << e.title << "\n\nSource: `"
+       << fs::path(e.source).parent_path().filename().string() << "/"
+       << fs::path(e.source).filename().string() << "`.\n\n";
+    if (e.sweep == "radius") {
+      const std::vector<BestRadius> best = best_radii(rows);
+      all_best.insert(all_best.end(), best.begin(), best.end());
+      any_radius = true;
+      md << "Best radius: the radius of the smallest L2 error of each method (circled in the "
+            "plots; every method's rows in `best_radius.csv`).\n\n";
+      if (!radius_sweep(md, e, rows, best, options, missing_plots)) return false;
+    } else {
+      if (!noise_sweep(md, e, rows, options, missing_plots)) return false;
+    }
+  }
+  if (any_radius) write_best_radius_csv(dir + "/best_radius.csv", all_best);
+  return true;
+}
+
+}  // namespace curvbench

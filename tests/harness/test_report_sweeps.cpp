@@ -1,0 +1,141 @@
+// The REPORT.md section "Sweeps at a fixed mesh" (harness/report_sweeps.h): labels read back into
+// method and radius, the best radius per (family, noise, quantity) and best_radius.csv follow the
+// rows.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "harness/report_sweeps.h"
+#include "harness/results_table.h"
+#include "tests/cli/cli_runner.h"
+
+namespace curvbench {
+namespace {
+
+namespace fs = std::filesystem;
+
+ErrorRow row(const std::string& method, const std::string& noise, const std::string& quantity,
+             double error) {
+  ErrorRow r;
+  r.experiment = "sweep-test";
+  r.surface = "torus";
+  r.family = "torus-unstructured";
+  r.level = 2;
+  r.vertices = 5000;
+  r.h = 0.05;
+  r.method = method;
+  r.noise = noise;
+  r.vertex_set = "all";
+  r.quantity = quantity;
+  r.norm = "L2";
+  r.error = error;
+  return r;
+}
+
+TEST(ReportSweeps, LabelsAndNoiseLabelsReadBack) {
+  const SweepLabel a = parse_sweep_label("LHF-2 rings=1.5");
+  EXPECT_EQ(a.method, "LHF-2");
+  EXPECT_EQ(a.parameter, "rings");
+  EXPECT_EQ(a.radius, 1.5);
+  const SweepLabel b = parse_sweep_label("My ICC ball-factor=4");
+  EXPECT_EQ(b.method, "My ICC");
+  EXPECT_EQ(b.parameter, "ball-factor");
+  EXPECT_EQ(b.radius, 4.0);
+  const SweepLabel c = parse_sweep_label("Meyer");
+  EXPECT_EQ(c.method, "Meyer");
+  EXPECT_EQ(c.parameter, "");
+  EXPECT_TRUE(std::isnan(c.radius));
+  EXPECT_EQ(parse_sweep_label("X rings=wide").parameter, "");
+  EXPECT_EQ(sigma_over_h("none"), 0.0);
+  EXPECT_EQ(sigma_over_h("normal gauss 0.03h"), 0.03);
+  EXPECT_EQ(sigma_over_h("tangential uniform 0.1h"), 0.1);
+  EXPECT_TRUE(std::isnan(sigma_over_h("h^2")));
+  EXPECT_TRUE(std::isnan(sigma_over_h("outliers 1%")));
+  EXPECT_TRUE(std::isnan(sigma_over_h("isotropic gauss 0.1h^2")));
+  EXPECT_EQ(noise_model_of_label("isotropic uniform 0.003h"), "isotropic uniform");
+  EXPECT_EQ(noise_model_of_label("none"), "");
+}
+
+// The smallest error wins, per (noise, quantity); a tie goes to the smaller radius; a NaN error
+// never wins; a fixed method keeps its one row.
+TEST(ReportSweeps, BestRadiusIsTheSmallestError) {
+  std::vector<ErrorRow> rows = {row("LHF-2 rings=1", "none", "H", 0.3),
+                                row("LHF-2 rings=2", "none", "H", 0.1),
+                                row("LHF-2 rings=3", "none", "H", 0.2),
+                                row("LHF-2 rings=4", "none", "H", std::nan("")),
+                                row("LHF-2 rings=1", "none", "K", 0.5),
+                                row("LHF-2 rings=2", "none", "K", 0.5),
+                                row("LHF-2 rings=1", "normal gauss 0.03h", "H", 0.9),
+                                row("LHF-2 rings=4", "normal gauss 0.03h", "H", 0.4),
+                                row("Meyer", "none", "H", 0.7)};
+  const std::vector<BestRadius> best = best_radii(rows);
+  ASSERT_EQ(best.size(), 4u);
+  EXPECT_EQ(best[0].method, "LHF-2");
+  EXPECT_EQ(best[0].quantity, "H");
+  EXPECT_EQ(best[0].radius, 2.0);
+  EXPECT_EQ(best[0].error, 0.1);
+  EXPECT_EQ(best[0].label, "LHF-2 rings=2");
+  EXPECT_EQ(best[0].radii, 4);
+  EXPECT_EQ(best[0].lowest, 1.0);
+  EXPECT_EQ(best[0].highest, 4.0);
+  EXPECT_EQ(best[1].quantity, "K");
+  EXPECT_EQ(best[1].radius, 1.0);  // the tie
+  EXPECT_EQ(best[2].noise, "normal gauss 0.03h");
+  EXPECT_EQ(best[2].radius, 4.0);
+  EXPECT_EQ(best[3].method, "Meyer");
+  EXPECT_EQ(best[3].parameter, "");
+  EXPECT_EQ(best[3].error, 0.7);
+
+  const fs::path dir = testing::fresh_dir("report_sweeps");
+  write_best_radius_csv((dir / "best.csv").string(), best);
+  const CsvTable t = read_csv_table((dir / "best.csv").string());
+  ASSERT_EQ(t.rows.size(), 4u);
+  EXPECT_EQ(t.text(2, t.col("noise")), "normal gauss 0.03h");
+  EXPECT_EQ(t.number(2, t.col("sigma_over_h")), 0.03);
+  EXPECT_EQ(t.number(2, t.col("best_radius")), 4.0);
+  EXPECT_EQ(t.text(3, t.col("parameter")), "fixed");
+  EXPECT_EQ(t.number(0, t.col("error")), 0.1);
+  EXPECT_EQ(t.number(2, t.col("lowest_radius")), 1.0);
+  EXPECT_TRUE(std::isnan(t.number(3, t.col("highest_radius"))));
+}
+
+// The section: a table per (family, noise) with each method's best radius and error, and
+// best_radius.csv in the results folder; the sweeps are not in the generic per-experiment part.
+TEST(ReportSweeps, SectionAndCsvFromTheResults) {
+  const fs::path dir = testing::fresh_dir("report_sweeps_section");
+  Experiment e;
+  e.name = "sweep-test";
+  e.title = "A sweep";
+  e.sweep = "radius";
+  e.source = "experiments/sweep_test.exp";
+  std::vector<ErrorRow> rows;
+  for (const char* q : {"normal", "H", "K"}) {
+    rows.push_back(row("ICC ball-factor=1", "none", q, 0.2));
+    rows.push_back(row("ICC ball-factor=2", "none", q, 0.05));
+    rows.push_back(row("Meyer", "none", q, 0.3));
+  }
+  write_error_csv((dir / "sweep-test.csv").string(), rows);
+  std::ostringstream md;
+  ReportOptions o;
+  o.results_dir = dir.string();
+  o.plots = false;
+  int missing = 0;
+  ASSERT_TRUE(append_sweeps_section(md, {e}, o, missing));
+  const std::string text = md.str();
+  EXPECT_NE(text.find("## Sweeps at a fixed mesh"), std::string::npos);
+  EXPECT_NE(text.find("| ICC | ball-factor (2 values) | C = 2 (largest) | 5.00e-02 | C = 2 "
+                      "(largest) | 5.00e-02 | C = 2 (largest) | 5.00e-02 |"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("| Meyer | - | 1-ring | 3.00e-01 |"), std::string::npos) << text;
+  const CsvTable t = read_csv_table((dir / "best_radius.csv").string());
+  EXPECT_EQ(t.rows.size(), 6u);
+  EXPECT_EQ(missing, 0);
+}
+
+}  // namespace
+}  // namespace curvbench
