@@ -178,6 +178,24 @@ std::string case_id(const RunCase& c) {
 }
 
 namespace {
+// The text after the first line of a store file, if that line is the stamp of `hash` and of
+// the text (first_line); nothing for a missing, unreadable, stale or corrupt file.
+std::optional<std::string> read_stamped(const std::string& path, std::uint64_t hash) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) return std::nullopt;
+  std::string text;
+  try {
+    text = read_file(path);
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+  const auto nl = text.find('\n');
+  if (nl == std::string::npos) return std::nullopt;
+  std::string rest = text.substr(nl + 1);
+  if (text.compare(0, nl, first_line(hash, fnv1a64(rest))) != 0) return std::nullopt;
+  return rest;
+}
+
 std::string skipped_path(const std::string& case_path) {
   return case_path.substr(0, case_path.size() - 4) + ".skipped";
 }
@@ -190,19 +208,9 @@ std::string CaseStore::path(const RunCase& c) const {
 std::optional<std::vector<ErrorRow>> CaseStore::load(const RunCase& c,
                                                      std::vector<CauseRow>* causes) const {
   const std::string p = path(c);
-  std::error_code ec;
-  if (!fs::is_regular_file(p, ec)) return std::nullopt;
-  std::string text;
-  try {
-    text = read_file(p);
-  } catch (const InputError&) {
-    return std::nullopt;
-  }
-  const auto nl = text.find('\n');
-  if (nl == std::string::npos) return std::nullopt;
-  std::string_view rest = std::string_view(text).substr(nl + 1);
-  if (text.compare(0, nl, first_line(case_hash(c, version_), fnv1a64(rest))) != 0)
-    return std::nullopt;  // stale (other inputs or code) or corrupt
+  const std::optional<std::string> body = read_stamped(p, case_hash(c, version_));
+  if (!body) return std::nullopt;  // missing, stale (other inputs or code) or corrupt
+  std::string_view rest = *body;
   // The errors by cause, if any, follow the errors.
   std::string_view cause_text;
   if (const auto at = rest.find("\n" + std::string(kCausesComment)); at != std::string_view::npos) {
@@ -261,21 +269,10 @@ void CaseStore::save_skipped(const RunCase& c, const std::string& reason) const 
 }
 
 std::optional<std::string> CaseStore::load_skipped(const RunCase& c) const {
-  const std::string p = skipped_path(path(c));
-  std::error_code ec;
-  if (!fs::is_regular_file(p, ec)) return std::nullopt;
-  std::string text;
-  try {
-    text = read_file(p);
-  } catch (const InputError&) {
-    return std::nullopt;
-  }
-  const auto nl = text.find('\n');
-  if (nl == std::string::npos || text.empty() || text.back() != '\n') return std::nullopt;
-  const std::string rest = text.substr(nl + 1);
-  if (text.compare(0, nl, first_line(case_hash(c, version_), fnv1a64(rest))) != 0)
-    return std::nullopt;
-  return rest.substr(0, rest.size() - 1);
+  const std::optional<std::string> body =
+      read_stamped(skipped_path(path(c)), case_hash(c, version_));
+  if (!body || body->empty() || body->back() != '\n') return std::nullopt;
+  return body->substr(0, body->size() - 1);
 }
 
 int CaseStore::prune(const std::vector<RunCase>& cases) const {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/errors.h"
+#include "meshgen/torus_structured.h"
 #include "surfaces/cylinder.h"
 
 namespace curvbench {
@@ -39,20 +40,7 @@ GeneratedMesh lantern_mesh(LanternSize size) {
               .transpose();
   // Band j joins ring j to ring j + 1; the offset ring's vertex i lies between the other's i
   // and i + 1. Corners in the order (u, then z) make x_u x x_z, the outward normal.
-  auto idx = [n](int i, int j) { return j * n + i % n; };
-  FaceMatrix F(2 * n * m, 3);
-  int f = 0;
-  for (int j = 0; j < m; ++j) {
-    for (int i = 0; i < n; ++i) {
-      if (j % 2 == 0) {
-        F.row(f++) << idx(i, j), idx(i + 1, j), idx(i, j + 1);
-        F.row(f++) << idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1);
-      } else {
-        F.row(f++) << idx(i, j), idx(i + 1, j + 1), idx(i, j + 1);
-        F.row(f++) << idx(i, j), idx(i + 1, j), idx(i + 1, j + 1);
-      }
-    }
-  }
+  FaceMatrix F = staggered_tube_faces(n, m);
   GeneratedMesh out;
   out.exact_points = V;
   out.mesh = Mesh(std::move(V), std::move(F), "lantern");

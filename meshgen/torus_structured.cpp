@@ -24,11 +24,13 @@ int torus_structured_columns(int level) {
   return 64 << (level - 1);
 }
 
-FaceMatrix staggered_torus_faces(int nu, int nv) {
-  auto idx = [nu, nv](int i, int j) { return (j % nv) * nu + (i % nu); };
-  FaceMatrix F(2 * nu * nv, 3);
+namespace {
+// Band j joins row j to row j + 1 (row `rows`, if any, is row 0 again: a closed tube).
+FaceMatrix staggered_faces(int nu, int bands, int rows) {
+  auto idx = [nu, rows](int i, int j) { return (j % rows) * nu + (i % nu); };
+  FaceMatrix F(2 * nu * bands, 3);
   int f = 0;
-  for (int j = 0; j < nv; ++j) {
+  for (int j = 0; j < bands; ++j) {
     for (int i = 0; i < nu; ++i) {
       if (j % 2 == 0) {
         F.row(f++) << idx(i, j), idx(i + 1, j), idx(i, j + 1);
@@ -40,6 +42,15 @@ FaceMatrix staggered_torus_faces(int nu, int nv) {
     }
   }
   return F;
+}
+}  // namespace
+
+FaceMatrix staggered_torus_faces(int nu, int nv) {
+  return staggered_faces(nu, nv, nv);
+}
+
+FaceMatrix staggered_tube_faces(int nu, int bands) {
+  return staggered_faces(nu, bands, bands + 1);
 }
 
 GeneratedMesh torus_structured(int level, bool jitter, std::uint64_t seed) {

@@ -31,6 +31,10 @@ int torus_structured_columns(int level);  // n_u = 64 * 2^(level-1)
 /// 2 n_u n_v faces, ccw in (u, v). Shared with torus-anisotropic (anisotropic.h).
 FaceMatrix staggered_torus_faces(int nu, int nv);
 
+/// The same triangles between `bands` + 1 rows that do not close up (an open tube: the
+/// lantern, lantern.h): 2 n_u bands faces, row j + 1 of every odd band shifted by half a point.
+FaceMatrix staggered_tube_faces(int nu, int bands);
+
 /// Builds the level-`level` mesh (level >= 1; throws UsageError otherwise).
 GeneratedMesh torus_structured(int level, bool jitter = false, std::uint64_t seed = 1);
 
