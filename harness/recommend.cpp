@@ -168,8 +168,7 @@ void write_recommendations_csv(const std::string& path, const std::vector<Recomm
         << format_double(s);
   };
   for (const Recommendation& r : recs) {
-    out << r.quality << ',' << format_g(r.sigma_over_h) << ','
-        << (r.swept ? "swept" : "not swept");
+    out << r.quality << ',' << format_g(r.sigma_over_h) << ',' << (r.swept ? "swept" : "not swept");
     if (!r.swept) {
       out << std::string(21, ',') << "\n";
       continue;

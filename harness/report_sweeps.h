@@ -81,8 +81,9 @@ void write_best_radius_csv(const std::string& path, const std::vector<BestRadius
 
 /// Appends the section to `md` (nothing when no sweep experiment has results) and writes
 /// <results>/best_radius.csv from the radius sweeps; after it, the section "Choosing an estimator
-/// and a radius" and <results>/recommendations.csv (harness/recommend.h). Returns false if options.stop asked to stop
-/// while plotting; `missing_plots` counts plots gnuplot could not render.
+/// and a radius" and <results>/recommendations.csv (harness/recommend.h). Returns false if
+/// options.stop asked to stop while plotting; `missing_plots` counts plots gnuplot could not
+/// render.
 bool append_sweeps_section(std::ostringstream& md, const std::vector<Experiment>& experiments,
                            const ReportOptions& options, int& missing_plots);
 
