@@ -45,6 +45,14 @@ std::string seconds_text(double s) {
   return buf;
 }
 
+// The case's label as in the errors CSV, with "(1-ring)" for a fixed method and "(largest)" for
+// a best radius at the largest radius swept (radius_text()).
+std::string case_text(const BestRadius& b) {
+  const std::string radius = radius_text(b);
+  if (b.parameter.empty()) return "`" + b.label + "` (" + radius + ")";
+  return "`" + b.label + "`" + (radius.ends_with(" (largest)") ? " (largest)" : "");
+}
+
 bool same_level(double a, double b) {
   return std::fabs(a - b) <= 1e-9 * std::fmax(1.0, b);
 }
@@ -199,9 +207,13 @@ void append_recommendations_section(std::ostringstream& md,
         "label and mesh, the same at every noise level). A noise level no sweep ran says \"not "
         "swept\" (`curvbench run --all --full` runs them all). Every cell names its case label as "
         "in `<experiment>.csv`; the rows are in `recommendations.csv`. `curvbench recommend "
-        "MESH` prints the row that matches a mesh.\n\n"
-     << "| mesh quality | noise sigma/h | most accurate: method, radius | H L2 error | time | "
-        "cheapest within 2x: method, radius | H L2 error | time | source |\n"
+        "MESH` prints the row that matches a mesh. The times are wall times of single cases, a "
+        "few milliseconds each on these meshes, taken while other cases run: unlike the errors "
+        "they vary from run to run, and so may the cheapest pick (`make bench` measures "
+        "speed).\n\n"
+     << "| mesh quality | noise sigma/h | most accurate: case | H L2 error | time | cheapest "
+        "within "
+        "2x: case | H L2 error | time | source |\n"
      << "|---|---|---|---|---|---|---|---|---|\n";
   for (const Recommendation& r : recs) {
     md << "| " << r.quality << " | " << format_g(r.sigma_over_h) << " | ";
@@ -209,11 +221,11 @@ void append_recommendations_section(std::ostringstream& md,
       md << "not swept | | | not swept | | | |\n";
       continue;
     }
-    md << r.best.method << ", " << radius_text(r.best) << " | " << sci(r.best.error) << " | "
-       << seconds_text(r.best_seconds) << " | ";
+    md << case_text(r.best) << " | " << sci(r.best.error) << " | " << seconds_text(r.best_seconds)
+       << " | ";
     if (r.has_cheapest)
-      md << r.cheapest.method << ", " << radius_text(r.cheapest) << " | " << sci(r.cheapest.error)
-         << " | " << seconds_text(r.cheapest_seconds) << " | ";
+      md << case_text(r.cheapest) << " | " << sci(r.cheapest.error) << " | "
+         << seconds_text(r.cheapest_seconds) << " | ";
     else
       md << "no timed case | | | ";
     md << "`" << r.best.experiment << "`, `" << r.best.family << "` level " << r.best.level

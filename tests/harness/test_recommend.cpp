@@ -181,7 +181,7 @@ TEST(Recommend, CsvAndSectionCarryTheTable) {
   append_recommendations_section(md, recs);
   const std::string s = md.str();
   EXPECT_NE(s.find("## Choosing an estimator and a radius"), std::string::npos);
-  EXPECT_NE(s.find("| well-shaped | 0 | LHF-4, rings 2 | 1.00e-03 | 0.04 s | LHF-2, rings 1 | "
+  EXPECT_NE(s.find("| well-shaped | 0 | `LHF-4 rings=2` | 1.00e-03 | 0.04 s | `LHF-2 rings=1` | "
                    "1.50e-03 | 0.01 s | `sweep-test`, `torus-unstructured` level 2, noise none"),
             std::string::npos)
       << s;
