@@ -50,6 +50,8 @@ int run_recommend(const RecommendOptions& o) {
     std::printf("row of %s (line %d):\n", csv.c_str(), t.lines[i]);
     for (size_t c = 0; c < t.header.size(); ++c)
       std::printf("  %-19s %s\n", t.header[c].c_str(), t.text(i, c).c_str());
+    if (t.text(i, t.col("status")) == "not swept")
+      std::printf("no sweep ran at this noise level: `curvbench run --all --full` runs them all\n");
     return 0;
   }
   throw InputError(csv + ": no row for quality " + cls.quality + " at sigma/h " + format_g(level) +

@@ -14,13 +14,15 @@ namespace {
 using testing::fresh_dir;
 using testing::run_cli;
 
-// A recommendations.csv whose best label names its cell: "M-<quality>-<sigma>".
+// A recommendations.csv whose best label names its cell: "M-<quality>-<sigma>"; sigma/h = 0.01
+// not swept.
 void write_table(const std::filesystem::path& dir) {
   std::ofstream out(dir / "recommendations.csv");
   out << "# test\nquality,sigma_over_h,status,best_label\n";
   for (const char* q : {"well-shaped", "isosurface", "irregular"})
     for (const char* s : {"0", "0.01", "0.03", "0.1"})
-      out << q << ',' << s << ",swept,M-" << q << '-' << s << "\n";
+      out << q << ',' << s << (std::string(s) == "0.01" ? ",not swept," : ",swept,M-") << q << '-'
+          << s << "\n";
 }
 
 std::string off_of(const std::filesystem::path& dir, const std::string& family) {
@@ -51,11 +53,17 @@ TEST(CliRecommend, FamiliesClassifyAndNoiseGivenPicksTheNearestLevel) {
   }
   const std::string mesh = (dir / "torus-unstructured.off").string();
   for (const auto& [noise, level] :
-       {std::pair<std::string, std::string>{"0.004", "0"}, {"0.006", "0.01"}, {"0.5", "0.1"}}) {
+       {std::pair<std::string, std::string>{"0.004", "0"}, {"0.025", "0.03"}, {"0.5", "0.1"}}) {
     const auto r = run_cli("recommend " + mesh + " --noise " + noise + results);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("M-well-shaped-" + level + "\n"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("no sweep ran"), std::string::npos) << r.output;
   }
+  const auto r = run_cli("recommend " + mesh + " --noise 0.008" + results);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("not swept\n  best_label          well-shaped-0.01\n"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("no sweep ran at this noise level"), std::string::npos) << r.output;
   std::filesystem::remove_all(dir);
 }
 
