@@ -38,6 +38,7 @@ int main(int argc, char** argv) {
   add(&cli::add_run_command);
   add(&cli::add_score_command);
   add(&cli::add_methods_command);
+  add(&cli::add_recommend_command);
 
   try {
     app.parse(argc, argv);

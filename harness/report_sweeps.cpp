@@ -11,6 +11,7 @@
 #include "core/build_info.h"
 #include "core/text.h"
 #include "harness/metrics.h"
+#include "harness/recommend.h"
 
 namespace curvbench {
 
@@ -25,14 +26,6 @@ std::string sci(double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.2e", x);
   return buf;
-}
-
-std::string radius_text(const BestRadius& b) {
-  if (b.parameter.empty()) return "1-ring";
-  std::string s = b.parameter == "rings" ? "rings " : "C = ";
-  s += format_g(b.radius);
-  if (b.radii > 1 && b.radius == b.highest) s += " (largest)";
-  return s;
 }
 
 // [A-Za-z0-9.-] kept, anything else '_' (plot file names).
@@ -273,6 +266,14 @@ bool noise_sweep(std::ostringstream& md, const Experiment& e, const std::vector<
 
 }  // namespace
 
+std::string radius_text(const BestRadius& b) {
+  if (b.parameter.empty()) return "1-ring";
+  std::string s = b.parameter == "rings" ? "rings " : "C = ";
+  s += format_g(b.radius);
+  if (b.radii > 1 && b.radius == b.highest) s += " (largest)";
+  return s;
+}
+
 SweepLabel parse_sweep_label(const std::string& label) {
   for (const char* key : {" rings=", " ball-factor="}) {
     const auto at = label.rfind(key);
@@ -371,6 +372,8 @@ bool append_sweeps_section(std::ostringstream& md, const std::vector<Experiment>
   const std::string dir = options.results_dir;
   bool header = false;
   std::vector<BestRadius> all_best;
+  std::vector<ErrorRow> radius_rows;  // the recommendations' input
+  std::vector<TimingRow> timings;
   bool any_radius = false;
   // The radius sweeps first (the noise sweeps use their best radii), then the noise sweeps.
   std::vector<const Experiment*> sweeps;
@@ -402,6 +405,10 @@ bool append_sweeps_section(std::ostringstream& md, const std::vector<Experiment>
     if (e.sweep == "radius") {
       const std::vector<BestRadius> best = best_radii(rows);
       all_best.insert(all_best.end(), best.begin(), best.end());
+      radius_rows.insert(radius_rows.end(), rows.begin(), rows.end());
+      const std::string timing_csv = dir + "/timings/" + e.name + ".csv";
+      if (fs::exists(timing_csv))
+        for (const TimingRow& t : read_timing_csv(timing_csv)) timings.push_back(t);
       any_radius = true;
       md << "Best radius: the radius of the smallest L2 error of each method (circled in the "
             "plots; every method's rows in `best_radius.csv`).\n\n";
@@ -410,7 +417,12 @@ bool append_sweeps_section(std::ostringstream& md, const std::vector<Experiment>
       if (!noise_sweep(md, e, rows, options, missing_plots)) return false;
     }
   }
-  if (any_radius) write_best_radius_csv(dir + "/best_radius.csv", all_best);
+  if (any_radius) {
+    write_best_radius_csv(dir + "/best_radius.csv", all_best);
+    const std::vector<Recommendation> recs = recommendations(radius_rows, timings);
+    append_recommendations_section(md, recs);
+    write_recommendations_csv(dir + "/recommendations.csv", recs);
+  }
   return true;
 }
 

@@ -70,14 +70,20 @@ struct BestRadius {
 /// with a single row (a fixed 1-ring method) is reported with its error and radius NaN.
 std::vector<BestRadius> best_radii(const std::vector<ErrorRow>& rows);
 
+/// The radius of b in words: "1-ring" (fixed), "rings 2", "C = 4", with " (largest)" when it is
+/// the largest of more than one radius swept.
+std::string radius_text(const BestRadius& b);
+
 /// Writes the best-radius CSV (provenance comment, header, rows) atomically:
 /// experiment,family,level,vertices,h,noise,sigma_over_h,method,parameter,best_radius,label,
 /// quantity,norm,error,radii,lowest_radius,highest_radius
 void write_best_radius_csv(const std::string& path, const std::vector<BestRadius>& rows);
 
 /// Appends the section to `md` (nothing when no sweep experiment has results) and writes
-/// <results>/best_radius.csv from the radius sweeps. Returns false if options.stop asked to stop
-/// while plotting; `missing_plots` counts plots gnuplot could not render.
+/// <results>/best_radius.csv from the radius sweeps; after it, the section "Choosing an estimator
+/// and a radius" and <results>/recommendations.csv (harness/recommend.h). Returns false if
+/// options.stop asked to stop while plotting; `missing_plots` counts plots gnuplot could not
+/// render.
 bool append_sweeps_section(std::ostringstream& md, const std::vector<Experiment>& experiments,
                            const ReportOptions& options, int& missing_plots);
 

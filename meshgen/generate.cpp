@@ -283,14 +283,14 @@ GeneratedMesh generate_mesh(const MeshSpec& spec) {
     throw UsageError("jitter applies only to the torus-structured family, not " + spec.family);
   check_mesh_shape(spec.family, spec.shape);
   GeneratedMesh gm = family.generate(spec);
-  if (spec.noise_order > 0)
-    gm = add_noise(gm, spec.noise_order, spec.seed, spec.noise_model);
+  if (spec.noise_order > 0) gm = add_noise(gm, spec.noise_order, spec.seed, spec.noise_model);
   return gm;
 }
 
 MeshQuality mesh_quality(const Mesh& mesh) {
   MeshQuality q;
   double min_angle = std::numeric_limits<double>::infinity(), max_angle = 0.0;
+  int small = 0;
   std::vector<std::vector<int>> nbrs(mesh.num_vertices());
   for (int f = 0; f < mesh.num_faces(); ++f) {
     for (int k = 0; k < 3; ++k) {
@@ -303,11 +303,13 @@ MeshQuality mesh_quality(const Mesh& mesh) {
       const double angle = std::atan2(e1.cross(e2).norm(), e1.dot(e2));
       min_angle = std::min(min_angle, angle);
       max_angle = std::max(max_angle, angle);
+      small += angle < 10.0 * std::numbers::pi / 180.0 ? 1 : 0;
     }
   }
   const double deg = 180.0 / std::numbers::pi;
   q.min_angle_deg = mesh.num_faces() > 0 ? min_angle * deg : 0.0;
   q.max_angle_deg = max_angle * deg;
+  q.small_angle_fraction = mesh.num_faces() > 0 ? small / (3.0 * mesh.num_faces()) : 0.0;
   int vmin[2] = {std::numeric_limits<int>::max(), std::numeric_limits<int>::max()};
   int vmax[2] = {0, 0};
   for (int v = 0; v < mesh.num_vertices(); ++v) {

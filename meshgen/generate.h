@@ -116,9 +116,10 @@ int max_mesh_level(const std::string& family);
 
 /// Triangle-shape and valence statistics. Valence = number of distinct edge neighbours.
 struct MeshQuality {
-  double min_angle_deg = 0.0;  ///< smallest triangle angle, degrees
-  double max_angle_deg = 0.0;  ///< largest triangle angle, degrees
-  int min_valence = 0;         ///< over interior (non-boundary) vertices
+  double min_angle_deg = 0.0;         ///< smallest triangle angle, degrees
+  double max_angle_deg = 0.0;         ///< largest triangle angle, degrees
+  double small_angle_fraction = 0.0;  ///< fraction of the triangle angles below 10 degrees
+  int min_valence = 0;                ///< over interior (non-boundary) vertices
   int max_valence = 0;
   int min_boundary_valence = 0;  ///< over boundary vertices (0 if there are none)
   int max_boundary_valence = 0;

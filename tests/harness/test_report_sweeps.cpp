@@ -105,6 +105,7 @@ TEST(ReportSweeps, BestRadiusIsTheSmallestError) {
 
 // The section: a table per (family, noise) with each method's best radius and error, and
 // best_radius.csv in the results folder; the sweeps are not in the generic per-experiment part.
+// After them, the recommendations and recommendations.csv.
 TEST(ReportSweeps, SectionAndCsvFromTheResults) {
   const fs::path dir = testing::fresh_dir("report_sweeps_section");
   Experiment e;
@@ -117,8 +118,13 @@ TEST(ReportSweeps, SectionAndCsvFromTheResults) {
     rows.push_back(row("ICC ball-factor=1", "none", q, 0.2));
     rows.push_back(row("ICC ball-factor=2", "none", q, 0.05));
     rows.push_back(row("Meyer", "none", q, 0.3));
+    rows[rows.size() - 3].seconds = 0.01;
+    rows[rows.size() - 2].seconds = 0.02;
+    rows[rows.size() - 1].seconds = 0.005;
   }
   write_error_csv((dir / "sweep-test.csv").string(), rows);
+  fs::create_directories(dir / "timings");
+  write_timing_csv((dir / "timings" / "sweep-test.csv").string(), rows);
   std::ostringstream md;
   ReportOptions o;
   o.results_dir = dir.string();
@@ -135,6 +141,16 @@ TEST(ReportSweeps, SectionAndCsvFromTheResults) {
   const CsvTable t = read_csv_table((dir / "best_radius.csv").string());
   EXPECT_EQ(t.rows.size(), 6u);
   EXPECT_EQ(missing, 0);
+  // Then the recommendations (harness/recommend.h) from the same rows and the timings CSV.
+  const auto choosing = text.find("## Choosing an estimator and a radius");
+  ASSERT_NE(choosing, std::string::npos) << text;
+  EXPECT_GT(choosing, text.find("## Sweeps at a fixed mesh"));
+  EXPECT_NE(text.find("| well-shaped | 0 | `ICC ball-factor=2` (largest) | 5.00e-02 | 0.02 s | "
+                      "`ICC ball-factor=2` | 5.00e-02 | 0.02 s |"),
+            std::string::npos)
+      << text;
+  const CsvTable rec = read_csv_table((dir / "recommendations.csv").string());
+  EXPECT_EQ(rec.rows.size(), 12u);
 }
 
 }  // namespace
