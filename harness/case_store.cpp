@@ -225,8 +225,16 @@ std::optional<std::vector<ErrorRow>> CaseStore::load(const RunCase& c,
   } catch (const InputError&) {
     return std::nullopt;
   }
-  // A consistent file of this case has one row per panel measure, all of this case.
-  if (rows.size() != panel_measures(*c.experiment).size()) return std::nullopt;
+  // A consistent file of this case has at most one row per panel measure (none for a quantity
+  // the method does not compute, e.g. an outside estimator's normals), all of this case.
+  {
+    const auto measures = panel_measures(*c.experiment);
+    std::set<std::pair<std::string, std::string>> wanted, seen;
+    for (const auto& [q, norm] : measures) wanted.insert({to_string(q), to_string(norm)});
+    for (const auto& r : rows)
+      if (!wanted.count({r.quantity, r.norm}) || !seen.insert({r.quantity, r.norm}).second)
+        return std::nullopt;
+  }
   // The estimation time measured when the case was computed (kept, so that a reused case
   // reports the same time).
   const std::string key = "\n" + std::string(kSecondsComment);

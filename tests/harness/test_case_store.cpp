@@ -15,10 +15,10 @@
 
 #include "core/build_info.h"
 #include "harness/case_store.h"
-#include "methods/option_schema.h"
 #include "harness/results_table.h"
 #include "harness/runner.h"
 #include "mesh/io.h"
+#include "methods/option_schema.h"
 #include "tests/cli/cli_runner.h"
 
 namespace curvbench {
@@ -182,6 +182,27 @@ TEST(CaseStore, RoundTripAndRejectsStaleCorruptOrTruncatedFiles) {
   EXPECT_FALSE(store.load(c).has_value());
   write_file_atomic(store.path(c), good);
   EXPECT_TRUE(store.load(c).has_value());
+}
+
+// A method that computes only some of the panel's quantities (an outside estimator without
+// normals, like VTK's) stores fewer rows than panel measures: the case is reused, not stale (it
+// was recomputed by every run, and --report-only failed on it). A duplicated measure is corrupt.
+TEST(CaseStore, FewerRowsThanPanelMeasuresAreACompleteCase) {
+  const auto dir = fresh_dir("case_store_fewer_rows");
+  const Experiment e = base_experiment();
+  const RunCase c = first_case(e);
+  MeshCache meshes;
+  std::vector<ErrorRow> rows = run_case(c, meshes, 1);
+  ASSERT_EQ(rows.size(), 2u);
+  rows.erase(rows.begin());  // H only, as from an estimator without normals
+  const CaseStore store(dir.string(), "version-1");
+  store.save(c, rows);
+  const auto back = store.load(c);
+  ASSERT_TRUE(back.has_value());
+  EXPECT_EQ(text_of(*back), text_of(rows));
+  rows.push_back(rows.front());  // the same measure twice
+  store.save(c, rows);
+  EXPECT_FALSE(store.load(c).has_value());
 }
 
 TEST(CaseStore, VariantsOfOneMethodGetTheirOwnFilesAndPruneRemovesOrphans) {
