@@ -65,7 +65,7 @@ struct MethodSpec {
   /// experiment runner sweeps methods and degrees on one mesh); rows labelled "... cached".
   bool cached = false;
   /// LHF only: the whole estimator with this solver instead of the safeguarded QR (claim F7's
-  /// whole-estimator comparison); rows labelled "LHF-2 whole, SVD (Jacobi)".
+  /// whole-estimator comparison); rows labelled "LHF-2 whole-estimator SVD (Jacobi)".
   std::optional<LsqSolver> solver = std::nullopt;
 };
 
@@ -73,7 +73,7 @@ struct MethodSpec {
 // for neighbourhoods from a prebuilt table.
 std::string row_label(const Estimator& est, bool cached,
                       std::optional<LsqSolver> solver = std::nullopt) {
-  if (solver) return est.label() + " whole, SVD (Jacobi)";
+  if (solver) return est.label() + " whole-estimator SVD (Jacobi)";
   return est.label() + (est.options().kernel == Kernel::scalar ? " scalar" : "") +
          (cached ? " cached" : "");
 }

@@ -66,7 +66,7 @@ void claim_f6(const Data& d, Check& c, const Band& spread) {
 // and by each truncated SVD.
 constexpr const char* kF7Qr = "LHF-2 QR";
 constexpr const char* kF7GenericQr = "LHF-2 generic QR (Eigen)";
-constexpr const char* kF7WholeSvd = "LHF-2 whole, SVD (Jacobi)";
+constexpr const char* kF7WholeSvd = "LHF-2 whole-estimator SVD (Jacobi)";
 
 void claim_f7(const Data& d, Check& c, const Band& speedup) {
   if (!d.timing(c, "LHF-2")) return;
