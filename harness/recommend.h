@@ -1,4 +1,4 @@
-// "Choosing an estimator and a radius": recommendations from the radius sweeps (issue 27 §4),
+// "Choosing an estimator and a radius": recommendations from the radius sweeps,
 // and the classification of a user's mesh that `curvbench recommend` matches against them.
 //
 // Table: per (mesh quality, noise sigma/h), from the radius sweeps' errors CSVs and their timings

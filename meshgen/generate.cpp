@@ -65,14 +65,14 @@
     "density")                                                                                     \
   X("lantern", 4, generate_lantern,                                                               \
     "Schwarz lantern of a cylinder (slices ~ sectors: normals and area converge)",                \
-    "not in the paper (hard meshes, issue: meshes that break estimators)", "none")                \
+    "not in the paper (meshes that break estimators)", "none")                \
   X("lantern-squeezed", 4, generate_lantern_squeezed,                                             \
     "squeezed Schwarz lantern of a cylinder (slices ~ sectors^2: positions converge, face "       \
     "normals and area do not)",                                                                   \
-    "not in the paper (hard meshes, issue: meshes that break estimators)", "none")                \
+    "not in the paper (meshes that break estimators)", "none")                \
   X("ellipsoid", 4, generate_ellipsoid,                                                           \
     "ellipsoid with semi-axes 1, 0.8, 0.6 (Delaunay-refined; four umbilics)",                     \
-    "not in the paper (hard meshes, issue: meshes that break estimators)", "none")
+    "not in the paper (meshes that break estimators)", "none")
 // clang-format on
 
 namespace curvbench {
