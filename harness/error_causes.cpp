@@ -36,10 +36,7 @@ constexpr int kValenceFirst = 1, kAngleFirst = 6, kSignFirst = 11;
 constexpr double kAngleEdges[] = {10.0, 20.0, 30.0, 45.0};
 
 std::string error_text(double e) {
-  if (!std::isfinite(e)) return "-";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2e", e);
-  return buf;
+  return scientific(e, "-");
 }
 
 }  // namespace

@@ -32,10 +32,7 @@ constexpr QualityFamily kQualityFamilies[] = {
 };
 
 std::string sci(double x) {
-  if (!std::isfinite(x)) return "n/a";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2e", x);
-  return buf;
+  return scientific(x);
 }
 
 std::string seconds_text(double s) {

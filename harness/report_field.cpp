@@ -46,10 +46,7 @@ bool in_section(const Experiment& e, const FieldSection& section) {
 
 // "1.23e-04", or "n/a" when not finite.
 std::string error_text(double e) {
-  if (!std::isfinite(e)) return "n/a";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2e", e);
-  return buf;
+  return scientific(e);
 }
 
 // "1.98", or "n/a".

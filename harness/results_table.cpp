@@ -48,6 +48,13 @@ std::vector<std::string> split_csv(const std::string& line) {
 
 }  // namespace
 
+std::string scientific(double x, const char* not_finite) {
+  if (!std::isfinite(x)) return not_finite;
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2e", x);
+  return buf;
+}
+
 std::string format_double(double x) {
   if (std::isnan(x)) return "nan";
   if (std::isinf(x)) return x > 0 ? "inf" : "-inf";

@@ -135,6 +135,9 @@ CsvTable parse_csv_table(const std::string& text, const std::string& name);
 /// processes are kept. Returns the number removed; a missing directory removes nothing.
 int remove_stale_temp_files(const std::string& directory);
 
+/// x as "1.23e-04" (two decimals, for error tables), or `not_finite` when x is not finite.
+std::string scientific(double x, const char* not_finite = "n/a");
+
 /// "%.17g" with "nan"/"inf" spelled out.
 std::string format_double(double x);
 
