@@ -9,6 +9,7 @@
 #include "bump_test_util.h"
 #include "meshgen/bump_density.h"
 #include "meshgen/generate.h"
+#include "tests/meshgen/identical_matrices.h"
 
 namespace curvbench {
 namespace {
@@ -104,13 +105,13 @@ TEST(BumpDensity, LevelsHalveHAndStayCheap) {
 
 TEST(BumpDensity, DeterministicPerSeed) {
   const GeneratedMesh a = make(2, 8.0, 5), b = make(2, 8.0, 5), c = make(2, 8.0, 6);
-  EXPECT_EQ(a.mesh.vertices(), b.mesh.vertices());
-  EXPECT_EQ(a.mesh.faces(), b.mesh.faces());
+  EXPECT_TRUE(test::identical(a.mesh.vertices(), b.mesh.vertices()));
+  EXPECT_TRUE(test::identical(a.mesh.faces(), b.mesh.faces()));
   ASSERT_EQ(a.mesh.num_vertices(), c.mesh.num_vertices());  // the seed moves points only
-  EXPECT_NE(a.mesh.vertices(), c.mesh.vertices());
+  EXPECT_FALSE(test::identical(a.mesh.vertices(), c.mesh.vertices()));
   // The default D is kDefaultDensity, given or not.
   MeshSpec spec{"bump-density", 2, 0, 5};
-  EXPECT_EQ(generate_mesh(spec).mesh.vertices(), a.mesh.vertices());
+  EXPECT_TRUE(test::identical(generate_mesh(spec).mesh.vertices(), a.mesh.vertices()));
   EXPECT_EQ(bump_density_points(2, 8.0, 5), a.mesh.vertices().leftCols(2));
 }
 

@@ -13,6 +13,7 @@
 #include "meshgen/generate.h"
 #include "meshgen/noise.h"
 #include "meshgen/torus_structured.h"
+#include "tests/meshgen/identical_matrices.h"
 
 namespace curvbench {
 namespace {
@@ -65,29 +66,31 @@ TEST(Generate, DispatchesToTheGenerators) {
   spec.level = 2;
   spec.jitter = true;
   spec.seed = 17;
-  EXPECT_EQ(generate_mesh(spec).mesh.vertices(), torus_structured(2, true, 17).mesh.vertices());
+  EXPECT_TRUE(test::identical(generate_mesh(spec).mesh.vertices(),
+                              torus_structured(2, true, 17).mesh.vertices()));
   // torus-jittered is the jittered structured mesh under its own family name.
   MeshSpec jittered{"torus-jittered", 2, 0, 17};
   const GeneratedMesh gj = generate_mesh(jittered);
   EXPECT_EQ(gj.family, "torus-jittered");
-  EXPECT_EQ(gj.mesh.vertices(), torus_structured(2, true, 17).mesh.vertices());
-  EXPECT_EQ(gj.mesh.faces(), torus_structured(2, false, 17).mesh.faces());
-  EXPECT_NE(gj.mesh.vertices(), torus_structured(2, false, 17).mesh.vertices());
+  EXPECT_TRUE(test::identical(gj.mesh.vertices(), torus_structured(2, true, 17).mesh.vertices()));
+  EXPECT_TRUE(test::identical(gj.mesh.faces(), torus_structured(2, false, 17).mesh.faces()));
+  EXPECT_FALSE(test::identical(gj.mesh.vertices(), torus_structured(2, false, 17).mesh.vertices()));
   spec = MeshSpec{"bump-48", 3};
-  EXPECT_EQ(generate_mesh(spec).mesh.faces(), bump_48(3).mesh.faces());
+  EXPECT_TRUE(test::identical(generate_mesh(spec).mesh.faces(), bump_48(3).mesh.faces()));
   spec = MeshSpec{"bump-irregular", 2, 0, 23};
-  EXPECT_EQ(generate_mesh(spec).mesh.vertices(), bump_irregular(2, 23).mesh.vertices());
+  EXPECT_TRUE(
+      test::identical(generate_mesh(spec).mesh.vertices(), bump_irregular(2, 23).mesh.vertices()));
   // Noise with the spec's seed, on top of the clean mesh.
   spec = MeshSpec{"bump-irregular", 2, 3, 23};
-  EXPECT_EQ(generate_mesh(spec).mesh.vertices(),
-            add_noise(bump_irregular(2, 23), 3, 23).mesh.vertices());
+  EXPECT_TRUE(test::identical(generate_mesh(spec).mesh.vertices(),
+                              add_noise(bump_irregular(2, 23), 3, 23).mesh.vertices()));
   // The isosurface levels are n = 16 * 2^(L-1); level 1 has the paper's 320 vertices.
   spec = MeshSpec{"torus-iso", 1};
   const GeneratedMesh iso = generate_mesh(spec);
   EXPECT_EQ(iso.mesh.num_vertices(), 320);
   spec.family = "torus-iso-projected";
   const GeneratedMesh proj = generate_mesh(spec);
-  EXPECT_EQ(proj.mesh.faces(), iso.mesh.faces());
+  EXPECT_TRUE(test::identical(proj.mesh.faces(), iso.mesh.faces()));
   for (int i = 0; i < proj.mesh.num_vertices(); ++i) {
     const Vec3 p = proj.mesh.position(i);
     ASSERT_NEAR(std::hypot(std::hypot(p.x(), p.y()) - 1.0, p.z()), 0.3, 1e-12);

@@ -11,6 +11,7 @@
 #include "core/errors.h"
 #include "meshgen/marching_cubes.h"
 #include "meshgen/torus_isosurface.h"
+#include "tests/meshgen/identical_matrices.h"
 #include "tests/meshgen/isosurface_test_util.h"
 
 namespace curvbench {
@@ -129,8 +130,8 @@ TEST(TorusIsosurface, OneVertexPerSignChangingEdgeAndNoAmbiguousFace) {
     EXPECT_EQ(iso.ambiguous_faces, 0);
     EXPECT_EQ(iso.center_vertices, 0);
     EXPECT_EQ(iso.vertices.rows(), count_sign_changing_edges(ax, torus_signed_distance));
-    EXPECT_EQ(cached(n, false).mesh.vertices(), iso.vertices);
-    EXPECT_EQ(cached(n, false).mesh.faces(), iso.faces);
+    EXPECT_TRUE(test::identical(cached(n, false).mesh.vertices(), iso.vertices));
+    EXPECT_TRUE(test::identical(cached(n, false).mesh.faces(), iso.faces));
   }
 }
 
@@ -169,7 +170,7 @@ TEST(TorusIsosurface, RawAndProjectedVariants) {
     EXPECT_EQ(raw.surface->name(), "torus");
     EXPECT_FALSE(raw.description.empty());
     // Same connectivity; projected vertices on the torus and equal to their exact points.
-    EXPECT_EQ(proj.mesh.faces(), raw.mesh.faces());
+    EXPECT_TRUE(test::identical(proj.mesh.faces(), raw.mesh.faces()));
     EXPECT_EQ(proj.exact_points, proj.mesh.vertices());
     expect_closed_oriented_manifold(proj.mesh);
     EXPECT_EQ(proj.mesh.euler_characteristic(), 0);
@@ -188,10 +189,10 @@ TEST(TorusIsosurface, RawAndProjectedVariants) {
 
 TEST(TorusIsosurface, Deterministic) {
   const GeneratedMesh a = torus_isosurface(64, false), b = torus_isosurface(64, false);
-  EXPECT_EQ(a.mesh.vertices(), b.mesh.vertices());
-  EXPECT_EQ(a.mesh.faces(), b.mesh.faces());
+  EXPECT_TRUE(test::identical(a.mesh.vertices(), b.mesh.vertices()));
+  EXPECT_TRUE(test::identical(a.mesh.faces(), b.mesh.faces()));
   EXPECT_EQ(a.exact_points, b.exact_points);
-  EXPECT_EQ(a.mesh.vertices(), cached(64, false).mesh.vertices());
+  EXPECT_TRUE(test::identical(a.mesh.vertices(), cached(64, false).mesh.vertices()));
 }
 
 TEST(TorusIsosurface, OtherSizesAndErrors) {
