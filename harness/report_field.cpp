@@ -156,20 +156,24 @@ std::vector<double> time_targets(const std::vector<ErrorRow>& rows) {
 
 namespace {
 
-// The finest-level L2 error in H of each method on mesh `label`.
-std::map<std::string, double> finest_h_errors(const std::vector<ErrorRow>& rows,
-                                              const std::string& label) {
-  std::map<std::string, std::pair<int, double>> at;  // method -> (level, error)
+// The finest level of mesh `label` (its level and h) and each method's L2 error in H there.
+struct FinestHErrors {
+  int level = 0;
+  double h = 0.0;
+  std::map<std::string, double> error;  // method -> error
+};
+
+FinestHErrors finest_h_errors(const std::vector<ErrorRow>& rows, const std::string& label) {
+  FinestHErrors out;
   for (const ErrorRow& r : rows)
-    if (r.family == label && r.quantity == "H" && r.norm == "L2" && r.vertex_set == "all") {
-      auto& [level, error] = at[r.method];
-      if (r.level >= level) {
-        level = r.level;
-        error = r.error;
-      }
+    if (r.family == label && r.level > out.level) {
+      out.level = r.level;
+      out.h = r.h;
     }
-  std::map<std::string, double> out;
-  for (const auto& [m, le] : at) out[m] = le.second;
+  for (const ErrorRow& r : rows)
+    if (r.family == label && r.level == out.level && r.quantity == "H" && r.norm == "L2" &&
+        r.vertex_set == "all")
+      out.error[r.method] = r.error;
   return out;
 }
 
@@ -182,16 +186,18 @@ void append_setting_ratios(std::ostringstream& md, const Experiment& e,
       const ExperimentMesh& a = e.meshes[i];
       const ExperimentMesh& b = e.meshes[j];
       if (a.family != b.family || a.label() == b.label()) continue;
-      const auto ea = finest_h_errors(rows, a.label()), eb = finest_h_errors(rows, b.label());
+      const FinestHErrors ea = finest_h_errors(rows, a.label()),
+                          eb = finest_h_errors(rows, b.label());
       std::vector<std::pair<double, std::string>> ratios;
-      for (const auto& [m, x] : ea)
-        if (const auto it = eb.find(m);
-            it != eb.end() && std::isfinite(x) && x > 0 && std::isfinite(it->second))
+      for (const auto& [m, x] : ea.error)
+        if (const auto it = eb.error.find(m);
+            it != eb.error.end() && std::isfinite(x) && x > 0 && std::isfinite(it->second))
           ratios.push_back({it->second / x, m});
       if (ratios.empty()) continue;
       std::sort(ratios.begin(), ratios.end());
-      md << "- `" << b.label() << "` against `" << a.label()
-         << "`, finest-level L2 error in H, ratio per method (smallest first): ";
+      md << "- `" << b.label() << "` (level " << eb.level << ", h = " << scientific(eb.h)
+         << ") against `" << a.label() << "` (level " << ea.level << ", h = " << scientific(ea.h)
+         << "), finest-level L2 error in H, ratio per method (smallest first): ";
       for (size_t k = 0; k < ratios.size(); ++k)
         md << (k ? ", " : "") << ratios[k].second << " " << rate_text(ratios[k].first);
       md << ".\n";

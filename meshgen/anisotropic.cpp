@@ -18,8 +18,9 @@ namespace curvbench {
 
 namespace {
 
-constexpr int kTargetCells = 256;          // n_a n_c at level 1 (that of bump-48)
-constexpr double kAspectTolerance = 0.02;  // relative error of A' accepted at level 1
+constexpr int kTargetCells = 256;             // n_a n_c at level 1 (that of bump-48)
+constexpr double kAspectTolerance = 0.02;     // relative error of A' accepted at level 1
+constexpr double kMaxSagOverRowHeight = 0.5;  // torus: sideways sag of a base / row height
 
 struct StretchedGrid {
   int along = 0;        // n_a
@@ -28,15 +29,19 @@ struct StretchedGrid {
 };
 
 // Level-1 grid (anisotropic.h) for a domain with L_a / L_c = ratio: n_a >= min_along, n_c a
-// multiple of across_step, A' within kAspectTolerance of `aspect`, n_a n_c nearest kTargetCells.
-StretchedGrid level1_grid(double aspect, double ratio, int min_along, int across_step) {
+// multiple of across_step, A' within kAspectTolerance of `aspect`, n_a n_c nearest kTargetCells,
+// and (L_a / n_a) A' <= max_step_aspect (no limit by default).
+StretchedGrid level1_grid(double aspect, double ratio, int min_along, int across_step,
+                          double along_length = 0.0,
+                          double max_step_aspect = std::numeric_limits<double>::infinity()) {
   StretchedGrid best;
   double best_error = std::numeric_limits<double>::infinity(), best_size = best_error;
-  for (int na = min_along; na <= kTargetCells; ++na) {
+  for (int na = min_along; na <= 64 * kTargetCells; ++na) {
     const double ideal = aspect * na * 2.0 / (std::sqrt(3.0) * ratio) / across_step;
     for (const double k : {std::floor(ideal), std::ceil(ideal)}) {
       const int nc = across_step * std::max(1, static_cast<int>(k));
       const double actual = ratio * nc / na * std::sqrt(3.0) / 2.0;
+      if (along_length / na * actual > max_step_aspect) continue;
       const double error = std::max(std::abs(actual / aspect - 1.0), kAspectTolerance);
       const double size = std::abs(std::log(static_cast<double>(na) * nc / kTargetCells));
       if (error < best_error || (error == best_error && size < best_size)) {
@@ -69,8 +74,12 @@ GeneratedMesh generate_torus_anisotropic(const MeshSpec& spec) {
   const double R = torus->major_radius(), r = torus->minor_radius();
   const double c = std::sqrt(R * R - r * r);
   const double W = 2.0 * std::numbers::pi * r / c;
+  // The coarsest level keeps the sideways sag of a base, du^2/8, within half a row's height
+  // du sqrt(3) / (2 A'): du A' <= 2 sqrt(3) (anisotropic.h).
   const StretchedGrid g =
-      grid_at(level1_grid(aspect, 2.0 * std::numbers::pi / W, 3, 2), spec.level);
+      grid_at(level1_grid(aspect, 2.0 * std::numbers::pi / W, 3, 2, 2.0 * std::numbers::pi,
+                          kMaxSagOverRowHeight * 4.0 * std::sqrt(3.0)),
+              spec.level);
   const int nu = g.along, nw = g.across;
   const double du = 2.0 * std::numbers::pi / nu, dw = W / nw;
   const double k = std::sqrt((R + r) / (R - r));

@@ -9,7 +9,8 @@
 // A' = s sqrt(3) / (2 t). Level 1 takes the (n_a, n_c) whose A' is within 2% of A and whose
 // n_a n_c is nearest 256 (if no pair is within 2%, the pair with the nearest A'); level L
 // multiplies both by 2^(L-1), so A' is the same at every level and h halves per level (level 4
-// below 20000 vertices for A <= 16). The description line gives n_a, n_c and A'.
+// below 20000 vertices for the bump at A <= 16 and the torus at A <= 6). The description line
+// gives n_a, n_c and A'.
 //
 // torus-anisotropic: the torus R = 1, r = 0.3 (surfaces/torus.h) in conformal coordinates
 // (u, w): u the angle about the axis, w(v) = int_0^v r / (R + r cos t) dt
@@ -19,12 +20,13 @@
 // v would vary it by (R + r)/(R - r)). w spans W = 2 pi r / c. Stretched along u (the parallels,
 // the direction of k1), n_a = n_u >= 3 columns, n_c = n_w rows (even); the triangles are those
 // of torus-structured (staggered_torus_faces), vertex (i, j) at u = (i + (j mod 2)/2) 2pi/n_u,
-// w = j W/n_w. V = n_u n_w, F = 2V. On the torus a triangle is bent by O(h): a long base of
-// length s along a parallel sags sideways by about s^2/8 near the top and bottom of the tube
-// (the parallels' geodesic curvature), while a row is s sqrt(3)/(2A') high, so faces turn over
-// where s A' > 4 sqrt(3): at A = 16 on levels 1-2 (s = 0.90, 0.45; 7.5% of the faces at level
-// 2), never at A <= 8 (measured). A finer coarsest level would cost more than 20000 vertices at
-// level 4.
+// w = j W/n_w. V = n_u n_w, F = 2V. On the torus a triangle is bent by O(h): a base of length
+// du along a parallel sags sideways by about du^2/8 near the top and bottom of the tube (the
+// parallels' geodesic curvature), so that of two neighbouring triangles there one is lower by that
+// much and the other higher, against a row height du sqrt(3)/(2A'); where du A' > 4 sqrt(3) the
+// faces turn over. Level 1 of the torus therefore also keeps du A' <= 2 sqrt(3) (the sag at most
+// half a row's height, every triangle's stretch within about 2A'): A <= 6 keeps the grid
+// nearest 256 points (A = 4: 14 x 20); A = 16 starts at 29 x 168 (4872 points, level 4 311808).
 //
 // bump-anisotropic: the Gaussian bump on [0,1]^2 (surfaces/gaussian_bump.h), stretched along x:
 // n_a = n_x columns, n_c = n_y rows; even rows hold x = i/n_x (i = 0..n_x), odd rows x = 0,

@@ -106,5 +106,43 @@ TEST(ReportField, TheCheapestEstimatorToATargetErrorFollowsTheRows) {
   EXPECT_TRUE(time_targets(rows).empty());
 }
 
+TEST(ReportField, TwoSettingsOfAFamilyCompareAtTheirFinestLevels) {
+  // torus-anisotropic at A = 4 (levels 1-3, finest h = 0.1) and A = 16 (levels 1-2, finest
+  // h = 0.2): the sentence names each finest level and h, and the ratios A16 / A4 there.
+  const fs::path dir = testing::fresh_dir("report_field_settings");
+  Experiment e;
+  e.name = "hard-meshes-test";
+  MeshShape a4, a16;
+  a4.aspect = 4.0;
+  a16.aspect = 16.0;
+  e.meshes = {{"torus-anisotropic", {1, 2, 3}, -1, a4}, {"torus-anisotropic", {1, 2}, -1, a16}};
+  std::vector<ErrorRow> rows;
+  for (const auto& [label, method, e0] : std::vector<std::tuple<std::string, std::string, double>>{
+           {"torus-anisotropic-A4", "Second", 1e-2},
+           {"torus-anisotropic-A4", "Other", 1e-3},
+           {"torus-anisotropic-A16", "Second", 4e-2},
+           {"torus-anisotropic-A16", "Other", 1e-1}}) {
+    for (const ErrorRow& r : series(method, e0, 2.0))
+      if (label.ends_with("A4") || r.level <= 2) {
+        rows.push_back(r);
+        rows.back().experiment = e.name;
+        rows.back().family = label;
+      }
+  }
+  write_error_csv((dir / "hard-meshes-test.csv").string(), rows);
+  ReportOptions options;
+  options.results_dir = dir.string();
+  options.plots = false;
+  std::ostringstream md;
+  int missing = 0;
+  ASSERT_TRUE(append_field_estimators_section(md, {e}, options, missing));
+  // A4 level 3: 1e-2 / 16, 1e-3 / 16; A16 level 2: 4e-2 / 4, 1e-1 / 4: ratios 16 and 400.
+  EXPECT_NE(md.str().find("- `torus-anisotropic-A16` (level 2, h = 2.00e-01) against "
+                          "`torus-anisotropic-A4` (level 3, h = 1.00e-01), finest-level L2 error "
+                          "in H, ratio per method (smallest first): Second 16.00, Other 400.00."),
+            std::string::npos)
+      << md.str();
+}
+
 }  // namespace
 }  // namespace curvbench
