@@ -22,6 +22,7 @@
 #include "harness/paper_tables.h"
 #include "harness/plot_styles.h"
 #include "harness/report_field.h"
+#include "harness/report_radius_scaling.h"
 #include "harness/report_sweeps.h"
 #include "harness/well_shaped_torus_table.h"
 #include "mesh/io.h"
@@ -409,6 +410,7 @@ std::string write_report(const std::vector<Experiment>& experiments, const Repor
     md << cause_tables_markdown(e, dir);
   }
   if (!append_field_estimators_section(md, experiments, options, missing_plots)) return "";
+  append_radius_scaling_section(md, experiments, options);
   if (!append_sweeps_section(md, experiments, options, missing_plots)) return "";
   if (missing_plots > 0)
     std::fprintf(stderr, "report: %d plots not rendered (is gnuplot installed?)\n", missing_plots);

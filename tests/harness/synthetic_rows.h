@@ -13,20 +13,21 @@ namespace curvbench::testing {
 inline std::vector<ErrorRow> synthetic_series(const std::string& experiment,
                                               const std::string& family,
                                               const std::string& method, double e0, double rate) {
+  ErrorRow like;  // the columns the levels share
+  like.experiment = experiment;
+  like.surface = "bump";
+  like.family = family;
+  like.method = method;
+  like.noise = "none";
+  like.vertex_set = "all";
+  like.quantity = "H";
+  like.norm = "L2";
   std::vector<ErrorRow> rows;
   for (int level = 1; level <= 3; ++level) {
-    ErrorRow r;
-    r.experiment = experiment;
-    r.surface = "bump";
-    r.family = family;
+    ErrorRow r = like;
     r.level = level;
     r.vertices = 100 << (2 * level);
     r.h = 0.4 / (1 << (level - 1));
-    r.method = method;
-    r.noise = "none";
-    r.vertex_set = "all";
-    r.quantity = "H";
-    r.norm = "L2";
     r.error = e0 * std::pow(r.h / 0.4, rate);
     r.counted = r.vertices;
     r.seconds = 1e-6 * 5.0 * r.vertices;  // 5 us per vertex

@@ -310,12 +310,15 @@ TEST(Experiment, ShippedFullSweepsMatchTheirTrimmedVersions) {
     const auto it = top.find(e.name);
     if (it == top.end()) continue;
     ++replaced;
-    EXPECT_FALSE(e.sweep.empty()) << f;
+    // A sweep at a fixed mesh, or the radius-scaling study at the same radius c h^alpha.
+    EXPECT_TRUE(!e.sweep.empty() || e.radius_c > 0.0) << f;
     EXPECT_EQ(e.sweep, it->second.sweep) << f;
+    EXPECT_EQ(e.radius_alpha, it->second.radius_alpha) << f;
+    EXPECT_EQ(e.radius_c, it->second.radius_c) << f;
     ASSERT_EQ(e.panels.size(), it->second.panels.size()) << f;
     for (size_t i = 0; i < e.panels.size(); ++i) EXPECT_EQ(e.panels[i].id, it->second.panels[i].id);
   }
-  EXPECT_EQ(replaced, 2);  // sweep-radius, sweep-noise
+  EXPECT_EQ(replaced, 6);  // sweep-radius, sweep-noise, sweep-radius-a{1_3,1_2,2_3,1}
 }
 
 TEST(ResultsTable, CsvRoundTripAndRates) {

@@ -1,0 +1,143 @@
+#include "harness/report_radius_scaling.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <tuple>
+
+#include "core/text.h"
+#include "harness/metrics.h"
+
+namespace curvbench {
+
+namespace fs = std::filesystem;
+
+RadiusScalingBounds radius_scaling_bounds(double alpha) {
+  return {std::min(2.0 * alpha, 2.0 - alpha), std::min(alpha, 2.0 - 2.0 * alpha),
+          std::min(2.0 * alpha, 2.0 - 2.0 * alpha)};
+}
+
+std::vector<RadiusScalingRate> radius_scaling_rates(const std::vector<ErrorRow>& rows,
+                                                    double alpha) {
+  // (family, method, quantity) -> level -> row, in the order first seen.
+  std::map<std::tuple<std::string, std::string, std::string>, std::map<int, const ErrorRow*>>
+      series;
+  std::vector<std::tuple<std::string, std::string, std::string>> order;
+  for (const ErrorRow& r : rows) {
+    if (r.norm != "L2") continue;
+    if (r.quantity != "normal" && r.quantity != "H" && r.quantity != "K") continue;
+    // A method scored on another vertex set than all (Meyer and the normal cycle on the open
+    // bump: interior vertices only) says so.
+    const std::string method =
+        r.vertex_set == "all" ? r.method : r.method + " (" + r.vertex_set + ")";
+    const auto key = std::make_tuple(r.family, method, r.quantity);
+    if (!series.count(key)) order.push_back(key);
+    series[key][r.level] = &r;
+  }
+  std::vector<RadiusScalingRate> out;
+  for (const auto& key : order) {
+    const auto& by_level = series[key];
+    if (by_level.size() < 2) continue;
+    const ErrorRow& a = *by_level.begin()->second;
+    const ErrorRow& b = *by_level.rbegin()->second;
+    out.push_back({std::get<0>(key), std::get<1>(key), std::get<2>(key), alpha, a.level, b.level,
+                   convergence_rate(a.error, b.error, a.h, b.h)});
+  }
+  return out;
+}
+
+namespace {
+
+// "1.23" between `mark`s ("*1.23*" for emphasis), or "n/a".
+std::string two_decimals(double x, const char* mark = "") {
+  if (!std::isfinite(x)) return "n/a";
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%s%.2f%s", mark, x, mark);
+  return buf;
+}
+
+const char* quantity_heading(const std::string& q) {
+  return q == "normal" ? "normals" : q == "H" ? "mean curvature H" : "Gaussian curvature K";
+}
+
+}  // namespace
+
+void append_radius_scaling_section(std::ostringstream& md,
+                                   const std::vector<Experiment>& experiments,
+                                   const ReportOptions& options) {
+  std::vector<RadiusScalingRate> rates;
+  std::set<double> alphas;
+  std::vector<std::string> sources;
+  for (const Experiment& e : experiments) {
+    if (!(e.radius_c > 0.0)) continue;
+    const std::string csv = options.results_dir + "/" + e.name + ".csv";
+    if (!fs::exists(csv)) continue;
+    const auto r = radius_scaling_rates(read_error_csv(csv), e.radius_alpha);
+    rates.insert(rates.end(), r.begin(), r.end());
+    alphas.insert(e.radius_alpha);
+    sources.push_back("`" + e.name + "` (alpha " + format_g(e.radius_alpha) + ", c " +
+                      format_g(e.radius_c) + ")");
+  }
+  if (rates.empty()) return;
+
+  md << "## Neighbourhoods that shrink more slowly than h\n\n"
+     << "Under O(h^2) input errors a fixed number of rings gives curvatures that do not converge; "
+        "a radius c h^alpha with alpha < 1 trades the fit's truncation error against the input "
+        "error (docs/algorithms.md §15). Experiments: ";
+  for (size_t i = 0; i < sources.size(); ++i) md << (i ? ", " : "") << sources[i];
+  md << "; their errors per level are in their sections above. Each cell is the L2 convergence "
+        "rate log(e_first/e_last)/log(h_first/h_last) of a method over the levels it ran; the "
+        "first rows are the rates the error bound predicts for a degree-2 fit, for curvatures "
+        "with a general stencil and with the truncation's odd terms cancelling (symmetric "
+        "stencils), for normals the one bound. The fixed 1-ring methods (Meyer) keep their "
+        "1-ring at every alpha.\n\n";
+
+  std::vector<std::string> families;
+  for (const auto& r : rates)
+    if (std::find(families.begin(), families.end(), r.family) == families.end())
+      families.push_back(r.family);
+  for (const std::string& family : families)
+    for (const char* quantity : {"normal", "H", "K"}) {
+      std::vector<std::string> methods;
+      std::map<std::pair<std::string, double>, double> cell;
+      std::string levels;
+      for (const auto& r : rates) {
+        if (r.family != family || r.quantity != quantity) continue;
+        if (std::find(methods.begin(), methods.end(), r.method) == methods.end())
+          methods.push_back(r.method);
+        cell[{r.method, r.alpha}] = r.rate;
+        levels = std::to_string(r.first_level) + "-" + std::to_string(r.last_level);
+      }
+      if (methods.empty()) continue;
+      // One table row: "| first | cell(alpha) | ... |".
+      const auto row = [&](const std::string& first, auto&& cell_text) {
+        md << "| " << first << " |";
+        for (double a : alphas) md << " " << cell_text(a) << " |";
+        md << "\n";
+      };
+      md << "### `" << family << "`, " << quantity_heading(quantity) << " (levels " << levels
+         << ")\n\n";
+      row("rate", [](double a) { return std::string("alpha = ").append(format_g(a)); });
+      row("---", [](double) { return std::string("---"); });
+      const bool normals = std::string(quantity) == "normal";
+      row(normals ? "*bound*" : "*bound, general stencil*", [&](double a) {
+        const RadiusScalingBounds b = radius_scaling_bounds(a);
+        return two_decimals(normals ? b.normals : b.curvature, "*");
+      });
+      if (!normals)
+        row("*bound, odd terms cancel*", [](double a) {
+          return two_decimals(radius_scaling_bounds(a).curvature_symmetric, "*");
+        });
+      for (const std::string& m : methods)
+        row(m, [&](double a) {
+          const auto it = cell.find({m, a});
+          return it == cell.end() ? std::string("-") : two_decimals(it->second);
+        });
+      md << "\n";
+    }
+}
+
+}  // namespace curvbench

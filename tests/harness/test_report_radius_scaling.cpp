@@ -1,0 +1,98 @@
+// The REPORT.md section "Neighbourhoods that shrink more slowly than h"
+// (harness/report_radius_scaling.h): the bounds of docs/algorithms.md §15, the rates per alpha
+// from the errors CSVs, and the table that sets them side by side.
+#include "harness/report_radius_scaling.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tests/cli/cli_runner.h"
+#include "tests/harness/synthetic_rows.h"
+
+namespace curvbench {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(ReportRadiusScaling, BoundsAreTheWorseOfTruncationAndInputTerms) {
+  // Degree 2, O(h^2) input errors, radius c h^alpha (docs/algorithms.md §15's table).
+  const RadiusScalingBounds third = radius_scaling_bounds(1.0 / 3.0);
+  EXPECT_NEAR(third.curvature, 1.0 / 3.0, 1e-15);
+  EXPECT_NEAR(third.curvature_symmetric, 2.0 / 3.0, 1e-15);
+  EXPECT_NEAR(third.normals, 2.0 / 3.0, 1e-15);
+  const RadiusScalingBounds half = radius_scaling_bounds(0.5);
+  EXPECT_DOUBLE_EQ(half.curvature, 0.5);
+  EXPECT_DOUBLE_EQ(half.curvature_symmetric, 1.0);
+  EXPECT_DOUBLE_EQ(half.normals, 1.0);
+  const RadiusScalingBounds two_thirds = radius_scaling_bounds(2.0 / 3.0);
+  EXPECT_NEAR(two_thirds.curvature, 2.0 / 3.0, 1e-15);
+  EXPECT_NEAR(two_thirds.curvature_symmetric, 2.0 / 3.0, 1e-15);
+  EXPECT_NEAR(two_thirds.normals, 4.0 / 3.0, 1e-15);
+  const RadiusScalingBounds fixed_rings = radius_scaling_bounds(1.0);
+  EXPECT_DOUBLE_EQ(fixed_rings.curvature, 0.0);  // a fixed number of rings: no convergence
+  EXPECT_DOUBLE_EQ(fixed_rings.curvature_symmetric, 0.0);
+  EXPECT_DOUBLE_EQ(fixed_rings.normals, 1.0);
+}
+
+TEST(ReportRadiusScaling, RatesPerAlphaSideBySide) {
+  // Two experiments (alpha 1/2 and 1): LHF-2's H converges at rate 1.1 and 0.3, Meyer's (scored
+  // on the interior) at -0.5 in both; levels 1-3, h = 0.4, 0.2, 0.1.
+  const fs::path dir = testing::fresh_dir("report_radius_scaling");
+  std::vector<Experiment> experiments(2);
+  const double alphas[2] = {0.5, 1.0}, lhf_rates[2] = {1.1, 0.3};
+  for (int i = 0; i < 2; ++i) {
+    Experiment& e = experiments[static_cast<size_t>(i)];
+    e.name = i == 0 ? "rs-half" : "rs-one";
+    e.radius_alpha = alphas[i];
+    e.radius_c = i == 0 ? 0.447 : 2.0;
+    std::vector<ErrorRow> rows =
+        testing::synthetic_series(e.name, "torus-iso", "LHF-2", 0.1, lhf_rates[i]);
+    for (ErrorRow r : testing::synthetic_series(e.name, "torus-iso", "Meyer", 0.2, -0.5)) {
+      r.vertex_set = "interior";
+      rows.push_back(r);
+    }
+    write_error_csv((dir / std::string(e.name).append(".csv")).string(), rows);
+    const std::vector<RadiusScalingRate> rates = radius_scaling_rates(rows, alphas[i]);
+    ASSERT_EQ(rates.size(), 2u);
+    EXPECT_EQ(rates[0].method, "LHF-2");
+    EXPECT_NEAR(rates[0].rate, lhf_rates[i], 1e-12);
+    EXPECT_EQ(rates[0].first_level, 1);
+    EXPECT_EQ(rates[0].last_level, 3);
+    EXPECT_EQ(rates[1].method, "Meyer (interior)");
+    EXPECT_NEAR(rates[1].rate, -0.5, 1e-12);
+  }
+  Experiment plain;  // no radius-scaling: not in the section
+  plain.name = "fig03-05";
+  experiments.push_back(plain);
+
+  ReportOptions options;
+  options.results_dir = dir.string();
+  std::ostringstream md;
+  append_radius_scaling_section(md, experiments, options);
+  const std::string text = md.str();
+  EXPECT_NE(text.find("## Neighbourhoods that shrink more slowly than h"), std::string::npos);
+  EXPECT_NE(text.find("`rs-half` (alpha 0.5, c 0.447), `rs-one` (alpha 1, c 2)"), std::string::npos)
+      << text;
+  EXPECT_NE(text.find("### `torus-iso`, mean curvature H (levels 1-3)\n\n"
+                      "| rate | alpha = 0.5 | alpha = 1 |\n"
+                      "| --- | --- | --- |\n"
+                      "| *bound, general stencil* | *0.50* | *0.00* |\n"
+                      "| *bound, odd terms cancel* | *1.00* | *0.00* |\n"
+                      "| LHF-2 | 1.10 | 0.30 |\n"
+                      "| Meyer (interior) | -0.50 | -0.50 |\n"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("### `torus-iso`, normals"), std::string::npos);  // only H rows given
+
+  // No radius-scaling experiment with a CSV: nothing.
+  std::ostringstream none;
+  append_radius_scaling_section(none, {plain}, options);
+  EXPECT_TRUE(none.str().empty());
+}
+
+}  // namespace
+}  // namespace curvbench
