@@ -11,6 +11,7 @@
 #include "core/build_info.h"
 #include "core/text.h"
 #include "harness/metrics.h"
+#include "harness/plot_styles.h"
 #include "harness/recommend.h"
 
 namespace curvbench {
@@ -139,6 +140,11 @@ bool radius_sweep(std::ostringstream& md, const Experiment& e, const std::vector
           if (!curves.count(l.method)) order.push_back(l.method);
           curves[l.method][l.radius] = r->error;
         }
+        if (order.empty() && fixed.empty()) continue;  // a quantity no panel asked for
+        // One look per method (plot_styles.h), the swept curves first, then the fixed lines.
+        std::vector<std::string> labels = order;
+        for (const auto& f : fixed) labels.push_back(f.first);
+        const std::vector<PlotStyle> styles = plot_styles(labels);
         std::ostringstream data, plot;
         plot << "plot ";
         bool first = true;
@@ -147,14 +153,15 @@ bool radius_sweep(std::ostringstream& md, const Experiment& e, const std::vector
           for (const auto& [x, y] : curves[order[i]])
             data << format_double(x) << ' ' << format_double(y) << "\n";
           data << "EOD\n";
-          plot << (first ? "" : ", ") << "$S" << i << " using 1:2 with linespoints lw 2 pt "
-               << (i % 7) + 4 << " lc " << i + 1 << " title \"" << order[i] << "\" noenhanced";
+          plot << (first ? "" : ", ") << "$S" << i << " using 1:2 with linespoints lw 2 "
+               << gnuplot_style(styles[i]) << " title \"" << order[i] << "\" noenhanced";
           first = false;
         }
         for (size_t i = 0; i < fixed.size(); ++i) {
-          plot << (first ? "" : ", ") << format_double(fixed[i].second)
-               << " with lines dt 3 lw 2 lc " << order.size() + i + 1 << " title \""
-               << fixed[i].first << " (1-ring)\" noenhanced";
+          PlotStyle line = styles[order.size() + i];
+          line.dash = 3;  // a horizontal line: the method's colour, dotted
+          plot << (first ? "" : ", ") << format_double(fixed[i].second) << " with lines lw 2 "
+               << gnuplot_style(line) << " title \"" << fixed[i].first << " (1-ring)\" noenhanced";
           first = false;
         }
         data << "$B << EOD\n";
@@ -234,20 +241,23 @@ bool noise_sweep(std::ostringstream& md, const Experiment& e, const std::vector<
         if (options.stop && options.stop()) return false;
         std::ostringstream data, plot;
         plot << "plot ";
+        const std::vector<PlotStyle> styles = plot_styles(methods);  // one look per method
+        size_t plotted = 0;
         for (size_t i = 0; i < methods.size(); ++i) {
           std::map<double, double> curve;
           for (const ErrorRow& r : fam)
             if (r.method == methods[i] && r.quantity == to_string(q) &&
                 noise_model_of_label(r.noise) == model && std::isfinite(r.error) && r.error > 0)
               curve[sigma_over_h(r.noise)] = r.error;
+          if (curve.empty()) continue;
           data << "$S" << i << " << EOD\n";
           for (const auto& [x, y] : curve)
             data << format_double(x) << ' ' << format_double(y) << "\n";
           data << "EOD\n";
-          plot << (i ? ", " : "") << "$S" << i << " using 1:2 with linespoints lw 2 pt "
-               << (i % 7) + 4 << " lc " << i + 1 << " dt " << (i / 8) % 3 + 1 << " title \""
-               << methods[i] << "\" noenhanced";
+          plot << (plotted++ ? ", " : "") << "$S" << i << " using 1:2 with linespoints lw 2 "
+               << gnuplot_style(styles[i]) << " title \"" << methods[i] << "\" noenhanced";
         }
+        if (plotted == 0) continue;  // a quantity no panel asked for
         plot << "\n";
         const std::string base = e.name + "_" + family + "_" + model + "_" + to_string(q);
         const std::string title =

@@ -160,9 +160,35 @@ TEST_F(CliShard, ThreeShardProcessesThenTheReportEqualOneRun) {
   std::ofstream(copy / "timings" / "shard.csv", std::ios::app) << "row\n";
   const auto [bad_code, bad_text] = same(single, copy);
   EXPECT_EQ(bad_code, 1) << bad_text;
-  EXPECT_NE(bad_text.find("differs: REPORT.md"), std::string::npos) << bad_text;
+  EXPECT_NE(bad_text.find("differs (before its section Choosing an estimator, or in line count): "
+                          "REPORT.md"),
+            std::string::npos)
+      << bad_text;
   EXPECT_NE(bad_text.find("differs (row count): timings/shard.csv"), std::string::npos) << bad_text;
   EXPECT_EQ(got.size(), want.size());
+
+  // The parts chosen by measured times: recommendations.csv from its column best_seconds (18)
+  // on, and REPORT.md's section "Choosing an estimator and a radius" (same line count) may
+  // differ; an error may not.
+  const fs::path timed_a = root_ / "timed_a", timed_b = root_ / "timed_b";
+  const std::string head = "# provenance\nquality,s,status,e,f,1,9,0.1,none,H,L2,3,";
+  const auto write_timed = [&](const fs::path& d, const std::string& error,
+                               const std::string& seconds) {
+    fs::create_directories(d);
+    std::ofstream(d / "recommendations.csv")
+        << head << "LHF-2,rings,2,LHF-2 rings=2," << error << "," << seconds << ",ICC\n";
+    std::ofstream(d / "REPORT.md")
+        << "# r\n\n## Choosing an estimator and a radius\n\n| " << seconds << " |\n";
+  };
+  write_timed(timed_a, "0.001", "0.0046");
+  write_timed(timed_b, "0.001", "0.0099");
+  EXPECT_EQ(same(timed_a, timed_b).first, 0) << same(timed_a, timed_b).second;
+  write_timed(timed_b, "0.002", "0.0046");
+  const auto [timed_code, timed_text] = same(timed_a, timed_b);
+  EXPECT_EQ(timed_code, 1) << timed_text;
+  EXPECT_NE(timed_text.find("differs (before best_seconds): recommendations.csv"),
+            std::string::npos)
+      << timed_text;
 
   // A store missing one case: the report fails and names it.
   const auto ids = lines(run_cli("run shard --list-cases --shard 2/3" + common_).output);
