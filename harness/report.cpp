@@ -347,7 +347,10 @@ std::string write_report(const std::vector<Experiment>& experiments, const Repor
       continue;
     }
     const auto rows = read_error_csv(csv);
-    md << "## " << e.name << ": " << e.title << " (paper §" << e.section << ")\n\n"
+    md << "## " << e.name << ": " << e.title
+       << (e.section == "beyond" ? std::string(" (beyond the paper)")
+                                 : std::string(" (paper §").append(e.section).append(")"))
+       << "\n\n"
        << "Source: `experiments/" << fs::path(e.source).filename().string() << "`.\n\n"
        << outside_method_notes(e, dir);
     for (const auto& panel : e.panels) {

@@ -28,11 +28,12 @@ std::vector<ErrorRow> rows_of(const std::string& method, double e0, double rate)
   return testing::synthetic_series("report-test", "torus-unstructured", method, e0, rate);
 }
 
-Experiment experiment() {
+Experiment experiment(const std::string& section = "5.2") {
   return parse_experiment_text(
-      "name report-test\ntitle \"A report test\"\nsection 5.2\n"
-      "mesh torus-unstructured levels=1,2,3\nmethod lhf-2\nmethod lhf-4\n"
-      "panel rt-h \"Report test. L2 errors in H.\" H L2\n",
+      "name report-test\ntitle \"A report test\"\nsection " + section +
+          "\n"
+          "mesh torus-unstructured levels=1,2,3\nmethod lhf-2\nmethod lhf-4\n"
+          "panel rt-h \"Report test. L2 errors in H.\" H L2\n",
       "report-test.exp");
 }
 
@@ -62,6 +63,12 @@ TEST(WriteReport, FigureSectionHasCaptionsErrorsAndRates) {
   EXPECT_NE(row("LHF-4").find("**4.00**"), std::string::npos) << row("LHF-4");
   EXPECT_NE(row("LHF-4").find("1.00e-04"), std::string::npos) << row("LHF-4");
   EXPECT_NE(row("LHF-4").find("6.25e-06"), std::string::npos) << row("LHF-4");  // 1e-4 / 16
+
+  // A study beyond the paper says so, not "paper §beyond".
+  const std::string md_beyond = testing::slurp(write_report({experiment("beyond")}, o));
+  EXPECT_NE(md_beyond.find("## report-test: A report test (beyond the paper)\n"),
+            std::string::npos);
+  EXPECT_EQ(md_beyond.find("§beyond"), std::string::npos);
 }
 
 TEST(WriteReport, MissingCsvIsSaidAndStopLeavesNoReport) {
