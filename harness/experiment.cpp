@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "core/errors.h"
@@ -279,6 +280,20 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
   if (e.meshes.empty()) throw InputError(source + ": no 'mesh' line");
   if (e.methods.empty()) throw InputError(source + ": no 'method' line");
   if (e.panels.empty()) throw InputError(source + ": no 'panel' line");
+  // Two methods that would report under one label (and vertex set) would mix their rows in
+  // every table and rate: e.g. `method lhf-2` and `method lhf-2 centre=no` without label=.
+  std::map<std::pair<std::string, int>, size_t> seen;
+  for (size_t i = 0; i < e.methods.size(); ++i) {
+    const ExperimentMethod& m = e.methods[i];
+    const std::string label =
+        !m.label.empty() ? m.label : make_estimator(m.spec, m.options)->label();
+    const int set = m.has_vertex_set ? static_cast<int>(m.vertex_set) : -1;
+    if (const auto [it, fresh] = seen.try_emplace({label, set}, i); !fresh)
+      throw InputError(source + ": methods " + std::to_string(it->second + 1) + " (" +
+                       e.methods[it->second].spec + ") and " + std::to_string(i + 1) + " (" +
+                       m.spec + ") both report as '" + label +
+                       "': give one a label=\"...\" of its own");
+  }
   return e;
 }
 

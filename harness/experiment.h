@@ -38,7 +38,8 @@
 //               any estimator option of role "result" as name=value (rings, centre=no,
 //               qr-tol=1e-8, vertex-normals=max, ball-factor=2, ...: the table of
 //               include/curvbench/estimator_options.h), and label="LHF-2 interp" to tell
-//               variants apart. One option may list values (rings=1,1.5,2): one method per
+//               variants apart (two methods under one label and vertex set are an error).
+//               One option may list values (rings=1,1.5,2): one method per
 //               value, labelled "<label> <option>=<value>" (e.g. "LHF-2 rings=1.5")
 //   method      all-operators [options]   every registered degree-free operator, one line each
 //               external name=N command="prog {mesh} {out}" [timeout=SECONDS]

@@ -84,6 +84,14 @@ TEST(Experiment, ErrorsNameFileAndLine) {
   expect_error(base + "method lhf-2 centre=maybe\n", "bad.exp:5: centre: expected yes or no");
   expect_error("mesh bump-48 levels=1\nmethod lhf-2\npanel p c H L2\n", "missing 'name'");
   expect_error("name x\nmethod lhf-2\npanel p c H L2\n", "no 'mesh' line");
+  // Two methods under one label would share every table row: a label= of its own is asked for.
+  expect_error(base + "method lhf-2 centre=no\n",
+               "bad.exp: methods 1 (lhf-2) and 2 (lhf-2) both report as 'LHF-2'");
+  expect_error(base + "method lhf-4\nmethod lhf-2 label=LHF-4\n", "both report as 'LHF-4'");
+  EXPECT_NO_THROW(
+      parse_experiment_text(base + "method lhf-2 centre=no label=\"LHF-2 interp\"\n", "good.exp"));
+  EXPECT_NO_THROW(  // another vertex set: rows apart
+      parse_experiment_text(base + "method lhf-2 vertex-set=interior\n", "good.exp"));
   EXPECT_THROW(parse_experiment("/nonexistent/x.exp"), InputError);
 }
 
