@@ -25,6 +25,17 @@ std::vector<ErrorRow> series(const std::string& method, double e0, double rate) 
   return testing::synthetic_series("field-estimators-test", "bump-irregular", method, e0, rate);
 }
 
+// The field sections (harness/report_field.h) of `experiments` from the CSVs in `dir`, no plots.
+std::string field_sections(const fs::path& dir, const std::vector<Experiment>& experiments) {
+  ReportOptions options;
+  options.results_dir = dir.string();
+  options.plots = false;
+  std::ostringstream md;
+  int missing = 0;
+  EXPECT_TRUE(append_field_estimators_section(md, experiments, options, missing));
+  return md.str();
+}
+
 TEST(ReportField, TablesRatesTimesAndWordsFollowTheNumbers) {
   const fs::path dir = testing::fresh_dir("report_field");
   Experiment e;
@@ -39,13 +50,7 @@ TEST(ReportField, TablesRatesTimesAndWordsFollowTheNumbers) {
   write_error_csv((dir / "field-estimators-test.csv").string(), rows);
   write_timing_csv((dir / "timings" / "field-estimators-test.csv").string(), rows);
 
-  ReportOptions options;
-  options.results_dir = dir.string();
-  options.plots = false;
-  std::ostringstream md;
-  int missing = 0;
-  ASSERT_TRUE(append_field_estimators_section(md, {e}, options, missing));
-  const std::string text = md.str();
+  const std::string text = field_sections(dir, {e});
   EXPECT_NE(text.find("## The estimators in common use"), std::string::npos) << text;
   // Finest level: 1e-2 * (1/4)^2 = 6.25e-4, rate 2, 5 us per vertex.
   EXPECT_NE(text.find("| Second | - | - | 6.25e-04 (2.00) | - |"), std::string::npos) << text;
@@ -60,9 +65,7 @@ TEST(ReportField, TablesRatesTimesAndWordsFollowTheNumbers) {
   // No field-estimators experiment: nothing.
   Experiment other = e;
   other.name = "fig03-05";
-  std::ostringstream none;
-  ASSERT_TRUE(append_field_estimators_section(none, {other}, options, missing));
-  EXPECT_TRUE(none.str().empty());
+  EXPECT_TRUE(field_sections(dir, {other}).empty());
 }
 
 TEST(ReportField, TheCheapestEstimatorToATargetErrorFollowsTheRows) {
@@ -130,18 +133,13 @@ TEST(ReportField, TwoSettingsOfAFamilyCompareAtTheirFinestLevels) {
       }
   }
   write_error_csv((dir / "hard-meshes-test.csv").string(), rows);
-  ReportOptions options;
-  options.results_dir = dir.string();
-  options.plots = false;
-  std::ostringstream md;
-  int missing = 0;
-  ASSERT_TRUE(append_field_estimators_section(md, {e}, options, missing));
+  const std::string text = field_sections(dir, {e});
   // A4 level 3: 1e-2 / 16, 1e-3 / 16; A16 level 2: 4e-2 / 4, 1e-1 / 4: ratios 16 and 400.
-  EXPECT_NE(md.str().find("- `torus-anisotropic-A16` (level 2, h = 2.00e-01) against "
-                          "`torus-anisotropic-A4` (level 3, h = 1.00e-01), finest-level L2 error "
-                          "in H, ratio per method (smallest first): Second 16.00, Other 400.00."),
+  EXPECT_NE(text.find("- `torus-anisotropic-A16` (level 2, h = 2.00e-01) against "
+                      "`torus-anisotropic-A4` (level 3, h = 1.00e-01), finest-level L2 error "
+                      "in H, ratio per method (smallest first): Second 16.00, Other 400.00."),
             std::string::npos)
-      << md.str();
+      << text;
 }
 
 }  // namespace
