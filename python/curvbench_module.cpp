@@ -62,10 +62,11 @@ py::array as_array(const py::handle& h, const char* name) {
 
 void check_shape(const py::array& a, const char* name, const char* what) {
   if (a.ndim() != 2 || a.shape(1) != 3) {
+    // Appends, not operator+: GCC 12's LTO warns falsely on the temporaries (-Wstringop-overflow).
     std::string shape = "(";
     for (py::ssize_t d = 0; d < a.ndim(); ++d)
-      shape += (d ? ", " : "") + std::to_string(a.shape(d));
-    shape += a.ndim() == 1 ? ",)" : ")";
+      shape.append(d ? ", " : "").append(std::to_string(a.shape(d)));
+    shape.append(a.ndim() == 1 ? ",)" : ")");
     throw InputError(std::string(name) + ": expected shape (" + what + ", 3), got " + shape);
   }
 }
