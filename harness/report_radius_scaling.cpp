@@ -101,15 +101,19 @@ void append_radius_scaling_section(std::ostringstream& md,
       families.push_back(r.family);
   for (const std::string& family : families)
     for (const char* quantity : {"normal", "H", "K"}) {
+      // The table's levels are those of its first series; a row over other levels (another
+      // experiment, e.g. a diagnostic) names them.
       std::vector<std::string> methods;
       std::map<std::pair<std::string, double>, double> cell;
       std::string levels;
       for (const auto& r : rates) {
         if (r.family != family || r.quantity != quantity) continue;
-        if (std::find(methods.begin(), methods.end(), r.method) == methods.end())
-          methods.push_back(r.method);
-        cell[{r.method, r.alpha}] = r.rate;
-        levels = std::to_string(r.first_level) + "-" + std::to_string(r.last_level);
+        const std::string own = std::to_string(r.first_level) + "-" + std::to_string(r.last_level);
+        if (levels.empty()) levels = own;
+        const std::string name = own == levels ? r.method : r.method + " (levels " + own + ")";
+        if (std::find(methods.begin(), methods.end(), name) == methods.end())
+          methods.push_back(name);
+        cell[{name, r.alpha}] = r.rate;
       }
       if (methods.empty()) continue;
       // One table row: "| first | cell(alpha) | ... |".

@@ -65,6 +65,17 @@ TEST(ReportRadiusScaling, RatesPerAlphaSideBySide) {
     EXPECT_EQ(rates[1].method, "Meyer (interior)");
     EXPECT_NEAR(rates[1].rate, -0.5, 1e-12);
   }
+  // A diagnostic at alpha 1/2 over levels 2-3 only: its row names its levels.
+  Experiment diag;
+  diag.name = "rs-diag";
+  diag.radius_alpha = 0.5;
+  diag.radius_c = 0.44;
+  std::vector<ErrorRow> diag_rows;
+  for (const ErrorRow& r :
+       testing::synthetic_series(diag.name, "torus-iso", "LHF-2 diag", 0.1, 1.5))
+    if (r.level >= 2) diag_rows.push_back(r);
+  write_error_csv((dir / "rs-diag.csv").string(), diag_rows);
+  experiments.push_back(diag);
   Experiment plain;  // no radius-scaling: not in the section
   plain.name = "fig03-05";
   experiments.push_back(plain);
@@ -83,7 +94,8 @@ TEST(ReportRadiusScaling, RatesPerAlphaSideBySide) {
                       "| *bound, general stencil* | *0.50* | *0.00* |\n"
                       "| *bound, odd terms cancel* | *1.00* | *0.00* |\n"
                       "| LHF-2 | 1.10 | 0.30 |\n"
-                      "| Meyer (interior) | -0.50 | -0.50 |\n"),
+                      "| Meyer (interior) | -0.50 | -0.50 |\n"
+                      "| LHF-2 diag (levels 2-3) | 1.50 | - |\n"),
             std::string::npos)
       << text;
   EXPECT_EQ(text.find("### `torus-iso`, normals"), std::string::npos);  // only H rows given
