@@ -14,9 +14,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <map>
 #include <numbers>
 #include <numeric>
+#include <string>
 #include <vector>
 
 namespace curvbench {
@@ -133,6 +135,14 @@ GeneratedMesh delaunay_surface_mesh(const ImplicitMeshing& spec) {
   out.exact_points = V;
   out.mesh = Mesh(std::move(V), std::move(F), spec.name);
   out.surface = spec.surface;
+  out.family = spec.name;
+  out.level = spec.level;
+  char mesher[128];
+  std::snprintf(mesher, sizeof mesher, "CGAL surface mesher (angle 30 deg, radius %g, distance %g)",
+                spec.radius_bound, 0.1 * spec.radius_bound);
+  out.description = spec.name + " level " + std::to_string(spec.level) + ": " + spec.surface_words +
+                    ", " + mesher + ", vertices projected to " + spec.projected_to +
+                    ", seed=" + std::to_string(spec.seed);
   return out;
 }
 

@@ -29,11 +29,16 @@ struct ImplicitMeshing {
   /// Two angles in [-pi, pi] of a surface point, for the Z-order numbering.
   std::array<double, 2> (*angles)(const Vec3& p) = nullptr;
   std::uint64_t seed = 1;
-  std::string name;  ///< the mesh's name
+  std::string name;  ///< the mesh's name and family ("torus-unstructured")
+  int level = 1;
+  /// For the description: the surface ("torus R=1 r=0.3") and what the vertices are projected
+  /// to ("the torus").
+  std::string surface_words, projected_to;
 };
 
-/// The mesh (with exact_points == vertices and surface set; family, level and description are
-/// the caller's).
+/// The mesh, with exact_points == vertices, surface, family (spec.name), level and the
+/// description "<name> level L: <surface_words>, CGAL surface mesher (angle 30 deg, radius rho,
+/// distance 0.1 rho), vertices projected to <projected_to>, seed=S".
 GeneratedMesh delaunay_surface_mesh(const ImplicitMeshing& spec);
 
 }  // namespace curvbench

@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <string>
 
 #include "core/errors.h"
@@ -44,16 +43,10 @@ GeneratedMesh ellipsoid_mesh(int level, std::uint64_t seed) {
   spec.angles = ellipsoid_angles;
   spec.seed = seed;
   spec.name = "ellipsoid";
-  GeneratedMesh out = delaunay_surface_mesh(spec);
-  out.family = "ellipsoid";
-  out.level = level;
-  char buf[256];
-  std::snprintf(buf, sizeof buf,
-                "ellipsoid level %d: semi-axes 1, 0.8, 0.6, CGAL surface mesher (angle 30 deg, "
-                "radius %g, distance %g), vertices projected to the ellipsoid, seed=%llu",
-                level, rho, 0.1 * rho, static_cast<unsigned long long>(seed));
-  out.description = buf;
-  return out;
+  spec.level = level;
+  spec.surface_words = "semi-axes 1, 0.8, 0.6";
+  spec.projected_to = "the ellipsoid";
+  return delaunay_surface_mesh(spec);
 }
 
 GeneratedMesh generate_ellipsoid(const MeshSpec& spec) {

@@ -3,7 +3,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <string>
 
 #include "core/errors.h"
@@ -42,16 +41,10 @@ GeneratedMesh generate(int level, std::uint64_t seed) {
   spec.angles = torus_angles;
   spec.seed = seed;
   spec.name = "torus-unstructured";
-  GeneratedMesh out = delaunay_surface_mesh(spec);
-  out.family = "torus-unstructured";
-  out.level = level;
-  char buf[256];
-  std::snprintf(buf, sizeof buf,
-                "torus-unstructured level %d: torus R=1 r=0.3, CGAL surface mesher (angle 30 deg, "
-                "radius %g, distance %g), vertices projected to the torus, seed=%llu",
-                level, rho, 0.1 * rho, static_cast<unsigned long long>(seed));
-  out.description = buf;
-  return out;
+  spec.level = level;
+  spec.surface_words = "torus R=1 r=0.3";
+  spec.projected_to = "the torus";
+  return delaunay_surface_mesh(spec);
 }
 
 }  // namespace
