@@ -14,6 +14,7 @@
 #include "meshgen/anisotropic.h"
 #include "meshgen/generate.h"
 #include "tests/meshgen/identical_matrices.h"
+#include "tests/meshgen/inward_faces.h"
 #include "tests/surfaces/surface_test_util.h"
 #include "torus_test_util.h"
 
@@ -112,13 +113,7 @@ std::vector<double> conformal_stretches(const Mesh& m) {
 
 // Faces whose normal points into the tube (against the torus normal at the centroid).
 int inverted_faces(const Mesh& m) {
-  int inward = 0;
-  for (int f = 0; f < m.num_faces(); ++f) {
-    const Vec3 a = m.position(m.face_vertex(f, 0)), b = m.position(m.face_vertex(f, 1)),
-               c = m.position(m.face_vertex(f, 2));
-    inward += (b - a).cross(c - a).dot(testing::torus_outward((a + b + c) / 3.0)) <= 0;
-  }
-  return inward;
+  return testing::inward_faces(m, testing::torus_outward);
 }
 
 TEST(TorusAnisotropic, ClosedOutwardAndOnTheTorus) {

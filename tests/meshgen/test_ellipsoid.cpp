@@ -14,6 +14,7 @@
 #include "meshgen/generate.h"
 #include "surfaces/ellipsoid.h"
 #include "tests/meshgen/identical_matrices.h"
+#include "tests/meshgen/inward_faces.h"
 #include "tests/surfaces/surface_test_util.h"
 
 namespace curvbench {
@@ -53,13 +54,7 @@ TEST_P(EllipsoidMesh, OnTheEllipsoidClosedOutwardWellShaped) {
     ASSERT_EQ(n, 1);
     ASSERT_EQ(edge_use.count({e.second, e.first}), 1u);
   }
-  int inward = 0;
-  for (int f = 0; f < m.num_faces(); ++f) {
-    const Vec3 a = m.position(m.face_vertex(f, 0)), b = m.position(m.face_vertex(f, 1)),
-               c = m.position(m.face_vertex(f, 2));
-    if ((b - a).cross(c - a).dot(outward((a + b + c) / 3.0)) <= 0) ++inward;
-  }
-  EXPECT_EQ(inward, 0);
+  EXPECT_EQ(testing::inward_faces(m, outward), 0);
   const MeshQuality q = mesh_quality(m);
   EXPECT_GE(q.min_angle_deg, 25.0);
   EXPECT_LT(q.min_valence, 6);

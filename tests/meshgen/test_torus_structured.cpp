@@ -7,6 +7,7 @@
 #include "core/errors.h"
 #include "meshgen/torus_structured.h"
 #include "tests/meshgen/identical_matrices.h"
+#include "tests/meshgen/inward_faces.h"
 
 namespace curvbench {
 namespace {
@@ -28,14 +29,7 @@ Vec3 outward(const Vec3& p) {
 
 // Counts faces whose normal points inward at the face centroid.
 int inward_faces(const Mesh& m) {
-  int bad = 0;
-  for (int f = 0; f < m.num_faces(); ++f) {
-    const Vec3 a = m.position(m.face_vertex(f, 0)), b = m.position(m.face_vertex(f, 1)),
-               c = m.position(m.face_vertex(f, 2));
-    const Vec3 n = (b - a).cross(c - a);
-    if (n.dot(outward((a + b + c) / 3.0)) <= 0) ++bad;
-  }
-  return bad;
+  return testing::inward_faces(m, outward);
 }
 
 TEST(TorusStructured, CountsTopologyAndOrientation) {

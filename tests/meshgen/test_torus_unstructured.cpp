@@ -12,6 +12,7 @@
 #include "meshgen/generate.h"
 #include "meshgen/torus_unstructured.h"
 #include "tests/meshgen/identical_matrices.h"
+#include "tests/meshgen/inward_faces.h"
 #include "torus_test_util.h"
 
 namespace curvbench {
@@ -53,13 +54,7 @@ TEST_P(TorusUnstructured, PaperCountsExactPositionsAnglesValences) {
   }
   EXPECT_LT(worst, 1e-14);
   // Outward faces.
-  int inward = 0;
-  for (int f = 0; f < m.num_faces(); ++f) {
-    const Vec3 a = m.position(m.face_vertex(f, 0)), b = m.position(m.face_vertex(f, 1)),
-               c = m.position(m.face_vertex(f, 2));
-    if ((b - a).cross(c - a).dot(outward((a + b + c) / 3.0)) <= 0) ++inward;
-  }
-  EXPECT_EQ(inward, 0);
+  EXPECT_EQ(testing::inward_faces(m, outward), 0);
   // Well-shaped and unstructured: minimum angle >= 25 degrees, at least three valences.
   const MeshQuality q = mesh_quality(m);
   EXPECT_GE(q.min_angle_deg, 25.0);

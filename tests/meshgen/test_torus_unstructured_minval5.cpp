@@ -17,6 +17,7 @@
 #include "meshgen/torus_unstructured.h"
 #include "meshgen/torus_unstructured_minval5.h"
 #include "tests/meshgen/identical_matrices.h"
+#include "tests/meshgen/inward_faces.h"
 #include "torus_test_util.h"
 
 namespace curvbench {
@@ -71,13 +72,7 @@ TEST_P(TorusUnstructuredMinval5, NoLowValenceWellShapedOnTheTorusPaperCounts) {
   EXPECT_EQ(count_duplicate_faces(m), 0);
 
   // Outward faces.
-  int inward = 0;
-  for (int f = 0; f < m.num_faces(); ++f) {
-    const Vec3 a = m.position(m.face_vertex(f, 0)), b = m.position(m.face_vertex(f, 1)),
-               c = m.position(m.face_vertex(f, 2));
-    if ((b - a).cross(c - a).dot(outward((a + b + c) / 3.0)) <= 0) ++inward;
-  }
-  EXPECT_EQ(inward, 0);
+  EXPECT_EQ(testing::inward_faces(m, outward), 0);
 
   // The exact data comes from the same torus as the base family's.
   ASSERT_TRUE(g.surface);
