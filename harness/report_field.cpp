@@ -349,66 +349,56 @@ bool append_field_section(std::ostringstream& md, const FieldSection& section,
       }
       md << "\n";
 
-      // Accuracy versus cost: L2 error in H against microseconds per vertex.
-      std::vector<ErrorRow> frontier;
-      for (const MethodRows& m : methods)
-        if (const auto* s = m.find(Quantity::H, Norm::L2))
-          for (const auto& [level, r] : *s) {
-            const auto t = us_per_vertex.find({mesh.label(), level, m.method});
-            if (t == us_per_vertex.end()) continue;
-            ErrorRow p = *r;
-            p.h = t->second;  // the x axis of the plot
-            frontier.push_back(p);
-          }
-      if (options.plots && !frontier.empty()) {
-        if (options.stop && options.stop()) return false;
-        const std::string base = "field-frontier_" + e.name + "_" + mesh.label();
+      // Every method's L2 errors in H at the levels `x_of` (microseconds per vertex, seconds
+      // of the mesh) has a value for, with that value as the plot's x (ErrorRow::h) and in
+      // ErrorRow::seconds.
+      const auto h_errors_against = [&](const auto& x_of) {
+        std::vector<ErrorRow> out;
+        for (const MethodRows& m : methods)
+          if (const auto* s = m.find(Quantity::H, Norm::L2))
+            for (const auto& [level, r] : *s) {
+              const auto x = x_of.find({mesh.label(), level, m.method});
+              if (x == x_of.end()) continue;
+              ErrorRow p = *r;
+              p.h = p.seconds = x->second;
+              out.push_back(p);
+            }
+        return out;
+      };
+      // One plot of the L2 error in H against a cost, and its line in the report.
+      const auto cost_plot = [&](const std::string& kind, const std::string& x_label,
+                                 const std::string& title, const std::vector<ErrorRow>& points) {
+        const std::string base = kind + "_" + e.name + "_" + mesh.label();
         PlotAxis axis;
-        axis.label = "time per vertex (microseconds)";
+        axis.label = x_label;
         axis.reversed = false;
         axis.rate_in_legend = false;
         axis.reference_slopes = false;
         if (render_plot(dir + "/plots/" + base,
-                        "Accuracy versus cost: L2 error in H against time per vertex [" +
-                            mesh.label() + (any->noise != "none" ? ", noise " + any->noise : "") +
-                            "]",
-                        frontier, axis))
-          md << "![" << base << "](plots/" << base << ".png) ([svg](plots/" << base << ".svg))\n\n";
-        else
-          ++missing_plots;
-      }
-
-      // Time to solution: L2 error in H against the seconds of the whole mesh, per method over
-      // the levels, and the cheapest method reaching each target error.
-      std::vector<ErrorRow> timed;
-      for (const MethodRows& m : methods)
-        if (const auto* s = m.find(Quantity::H, Norm::L2))
-          for (const auto& [level, r] : *s) {
-            const auto t = case_seconds.find({mesh.label(), level, m.method});
-            if (t == case_seconds.end()) continue;
-            ErrorRow p = *r;
-            p.seconds = t->second;
-            timed.push_back(p);
-          }
-      if (timed.empty()) continue;
-      if (options.plots) {
-        if (options.stop && options.stop()) return false;
-        std::vector<ErrorRow> points = timed;
-        for (ErrorRow& p : points) p.h = p.seconds;  // the x axis of the plot
-        const std::string base = "field-time_" + e.name + "_" + mesh.label();
-        PlotAxis axis;
-        axis.label = "time of the whole mesh (seconds)";
-        axis.reversed = false;
-        axis.rate_in_legend = false;
-        axis.reference_slopes = false;
-        if (render_plot(dir + "/plots/" + base,
-                        "Time to solution: L2 error in H against the time of the mesh [" +
-                            mesh.label() + (any->noise != "none" ? ", noise " + any->noise : "") +
-                            "]",
+                        title + " [" + mesh.label() +
+                            (any->noise != "none" ? ", noise " + any->noise : "") + "]",
                         points, axis))
           md << "![" << base << "](plots/" << base << ".png) ([svg](plots/" << base << ".svg))\n\n";
         else
           ++missing_plots;
+      };
+
+      // Accuracy versus cost: L2 error in H against microseconds per vertex.
+      const std::vector<ErrorRow> frontier = h_errors_against(us_per_vertex);
+      if (options.plots && !frontier.empty()) {
+        if (options.stop && options.stop()) return false;
+        cost_plot("field-frontier", "time per vertex (microseconds)",
+                  "Accuracy versus cost: L2 error in H against time per vertex", frontier);
+      }
+
+      // Time to solution: L2 error in H against the seconds of the whole mesh, per method over
+      // the levels, and the cheapest method reaching each target error.
+      const std::vector<ErrorRow> timed = h_errors_against(case_seconds);
+      if (timed.empty()) continue;
+      if (options.plots) {
+        if (options.stop && options.stop()) return false;
+        cost_plot("field-time", "time of the whole mesh (seconds)",
+                  "Time to solution: L2 error in H against the time of the mesh", timed);
       }
       const std::vector<double> targets = time_targets(timed);
       if (targets.empty()) continue;
