@@ -43,13 +43,6 @@ std::string sci(double x, int digits = 2) {
   return buf;
 }
 
-std::string fixed(double x, int digits = 2) {
-  if (!std::isfinite(x)) return "n/a";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, x);
-  return buf;
-}
-
 // A value of the paper's tables as it prints it: 3.60e-3 (3 significant digits, short exponent).
 std::string paper_sci(double x) {
   const int ex = static_cast<int>(std::floor(std::log10(x)));
@@ -181,7 +174,7 @@ bool render_plot(const std::string& base, const std::string& title,
     const double rate = series_rate(series[i]);
     plot << (i ? ", " : "") << "$S" << i << " using 1:2 with linespoints lw 2 ps 1.2 "
          << gnuplot_style(styles[i]) << " title \"" << series[i].method
-         << (x_axis.rate_in_legend ? " (rate " + fixed(rate) + ")" : "") << "\" noenhanced";
+         << (x_axis.rate_in_legend ? " (rate " + two_decimals(rate) + ")" : "") << "\" noenhanced";
   }
   // Dashed reference slopes O(h^p) for the orders the panel's rates round to (1-4), anchored at
   // half the largest error at the coarsest h.
@@ -312,8 +305,8 @@ std::string write_report(const std::vector<Experiment>& experiments, const Repor
       std::string rate_l2 = "-", rate_inf = "-";
       if (i > 1) {
         const auto& p = t4[i - 1];
-        rate_l2 = fixed(std::log2(std::stod(p[4]) / rms));
-        rate_inf = fixed(std::log2(std::stod(p[5]) / mx));
+        rate_l2 = two_decimals(std::log2(std::stod(p[4]) / rms));
+        rate_inf = two_decimals(std::log2(std::stod(p[5]) / mx));
       }
       const paper::Table4Row* p = i - 1 < paper::kTable4.size() ? &paper::kTable4[i - 1] : nullptr;
       md << "| " << r[0] << "^3 | " << r[1] << " / " << (p ? std::to_string(p->vertices) : "-")
@@ -387,8 +380,8 @@ std::string write_report(const std::vector<Experiment>& experiments, const Repor
             auto it = s.by_level.find(l);
             md << " " << (it == s.by_level.end() ? "-" : sci(it->second->error)) << " |";
           }
-          md << " **" << fixed(series_rate(s)) << "** | " << fixed(series_halving_rate(s))
-             << " |\n";
+          md << " **" << two_decimals(series_rate(s)) << "** | "
+             << two_decimals(series_halving_rate(s)) << " |\n";
         }
         const std::string base = panel.id + "_" + m.label();
         md << "\n";

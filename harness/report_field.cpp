@@ -49,14 +49,6 @@ std::string error_text(double e) {
   return scientific(e);
 }
 
-// "1.98", or "n/a".
-std::string rate_text(double r) {
-  if (!std::isfinite(r)) return "n/a";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f", r);
-  return buf;
-}
-
 // One method's rows on one family: (quantity, norm) -> level -> row.
 struct MethodRows {
   std::string method;
@@ -199,7 +191,7 @@ void append_setting_ratios(std::ostringstream& md, const Experiment& e,
          << ") against `" << a.label() << "` (level " << ea.level << ", h = " << scientific(ea.h)
          << "), finest-level L2 error in H, ratio per method (smallest first): ";
       for (size_t k = 0; k < ratios.size(); ++k)
-        md << (k ? ", " : "") << ratios[k].second << " " << rate_text(ratios[k].first);
+        md << (k ? ", " : "") << ratios[k].second << " " << two_decimals(ratios[k].first);
       md << ".\n";
     }
 }
@@ -254,7 +246,7 @@ bool append_field_section(std::ostringstream& md, const FieldSection& section,
             "against the time of the whole mesh, with the cheapest estimator reaching each "
             "target error. A series *converges* when its average L2 rate and "
             "its rate between the two finest levels are both at least "
-         << rate_text(kConvergenceRateThreshold) << " (a finest-level error of at most "
+         << two_decimals(kConvergenceRateThreshold) << " (a finest-level error of at most "
          << error_text(kRoundOffError) << " counts as exact up to round-off)"
          << "; the words below are generated from the tables with that threshold.\n\n";
       header_written = true;
@@ -298,10 +290,10 @@ bool append_field_section(std::ostringstream& md, const FieldSection& section,
               continue;
             }
             md << " " << error_text(s->rbegin()->second->error) << " ("
-               << rate_text(rates(*s).first) << ") |";
+               << two_decimals(rates(*s).first) << ") |";
           }
         const auto t = us_per_vertex.find({mesh.label(), finest, m.method});
-        md << " " << (t == us_per_vertex.end() ? "n/a" : rate_text(t->second)) << " |\n";
+        md << " " << (t == us_per_vertex.end() ? "n/a" : two_decimals(t->second)) << " |\n";
       }
       md << "\n";
 
@@ -315,10 +307,10 @@ bool append_field_section(std::ostringstream& md, const FieldSection& section,
           if (s->rbegin()->second->error <= kRoundOffError)
             exact += (exact.empty() ? "" : ", ") + m.method;
           else if (converges(r))
-            yes += (yes.empty() ? "" : ", ") + m.method + " (" + rate_text(r.first) + ")";
+            yes += (yes.empty() ? "" : ", ") + m.method + " (" + two_decimals(r.first) + ")";
           else
-            no += (no.empty() ? "" : ", ") + m.method + " (" + rate_text(r.first) + ", last " +
-                  rate_text(r.second) + ")";
+            no += (no.empty() ? "" : ", ") + m.method + " (" + two_decimals(r.first) + ", last " +
+                  two_decimals(r.second) + ")";
         }
         if (yes.empty() && no.empty() && exact.empty()) continue;
         md << "- " << quantity_name(q) << ": "
@@ -344,7 +336,7 @@ bool append_field_section(std::ostringstream& md, const FieldSection& section,
         const auto t = us_per_vertex.find({mesh.label(), finest, best->method});
         md << "- Smallest L2 error in H at level " << finest << ": " << best->method << " ("
            << error_text(best_error)
-           << (t == us_per_vertex.end() ? "" : ", " + rate_text(t->second) + " us/vertex")
+           << (t == us_per_vertex.end() ? "" : ", " + two_decimals(t->second) + " us/vertex")
            << ").\n";
       }
       md << "\n";

@@ -51,12 +51,9 @@ std::vector<RadiusScalingRate> radius_scaling_rates(const std::vector<ErrorRow>&
 
 namespace {
 
-// "1.23" between `mark`s ("*1.23*" for emphasis), or "n/a".
-std::string two_decimals(double x, const char* mark = "") {
-  if (!std::isfinite(x)) return "n/a";
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%s%.2f%s", mark, x, mark);
-  return buf;
+// "*1.23*" (emphasis), or "n/a".
+std::string emphasised(double x) {
+  return std::isfinite(x) ? std::string("*").append(two_decimals(x)).append("*") : "n/a";
 }
 
 const char* quantity_heading(const std::string& q) {
@@ -129,12 +126,11 @@ void append_radius_scaling_section(std::ostringstream& md,
       const bool normals = std::string(quantity) == "normal";
       row(normals ? "*bound*" : "*bound, general stencil*", [&](double a) {
         const RadiusScalingBounds b = radius_scaling_bounds(a);
-        return two_decimals(normals ? b.normals : b.curvature, "*");
+        return emphasised(normals ? b.normals : b.curvature);
       });
       if (!normals)
-        row("*bound, odd terms cancel*", [](double a) {
-          return two_decimals(radius_scaling_bounds(a).curvature_symmetric, "*");
-        });
+        row("*bound, odd terms cancel*",
+            [](double a) { return emphasised(radius_scaling_bounds(a).curvature_symmetric); });
       for (const std::string& m : methods)
         row(m, [&](double a) {
           const auto it = cell.find({m, a});

@@ -22,13 +22,6 @@ namespace {
 
 constexpr Quantity kQuantities[] = {Quantity::normal, Quantity::H, Quantity::K};
 
-std::string sci(double x) {
-  if (!std::isfinite(x)) return "n/a";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2e", x);
-  return buf;
-}
-
 // [A-Za-z0-9.-] kept, anything else '_' (plot file names).
 std::string file_safe(const std::string& s) {
   std::string out;
@@ -88,7 +81,7 @@ bool radius_sweep(std::ostringstream& md, const Experiment& e, const std::vector
         if (r.family == family && r.noise == noise && r.norm == "L2") sel.push_back(&r);
       if (sel.empty()) continue;
       md << "#### `" << family << "` level " << sel.front()->level << " (" << sel.front()->vertices
-         << " vertices, h = " << sci(sel.front()->h) << "), noise " << noise
+         << " vertices, h = " << scientific(sel.front()->h) << "), noise " << noise
          << "\n\n| method | radius swept |";
       for (Quantity q : kQuantities) md << " best for " << to_string(q) << " | L2 error |";
       md << "\n|---|---|";
@@ -117,7 +110,7 @@ bool radius_sweep(std::ostringstream& md, const Experiment& e, const std::vector
           cells += ' ';
           cells += radius_text(*found);
           cells += " | ";
-          cells += sci(found->error);
+          cells += scientific(found->error);
           cells += " |";
         }
         md << "| " << method << " | " << swept << " |" << cells << "\n";
@@ -203,7 +196,7 @@ bool noise_sweep(std::ostringstream& md, const Experiment& e, const std::vector<
       if (r.family == family && r.norm == "L2") fam.push_back(r);
     if (fam.empty()) continue;
     md << "#### `" << family << "` level " << fam.front().level << " (" << fam.front().vertices
-       << " vertices, h = " << sci(fam.front().h) << ")\n\n";
+       << " vertices, h = " << scientific(fam.front().h) << ")\n\n";
     const auto methods = distinct(fam, [](const ErrorRow& r) { return r.method; });
     // Outliers: methods x (none, each outlier label), per quantity.
     std::vector<std::string> columns{"none"};
@@ -224,7 +217,7 @@ bool noise_sweep(std::ostringstream& md, const Experiment& e, const std::vector<
         for (Quantity q : kQuantities)
           for (const std::string& c : columns) {
             const auto it = err.find({m, c, to_string(q)});
-            md << " " << (it == err.end() ? "-" : sci(it->second)) << " |";
+            md << " " << (it == err.end() ? "-" : scientific(it->second)) << " |";
           }
         md << "\n";
       }

@@ -55,6 +55,13 @@ std::string scientific(double x, const char* not_finite) {
   return buf;
 }
 
+std::string two_decimals(double x) {
+  if (!std::isfinite(x)) return "n/a";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f", x);
+  return buf;
+}
+
 std::string format_double(double x) {
   if (std::isnan(x)) return "nan";
   if (std::isinf(x)) return x > 0 ? "inf" : "-inf";

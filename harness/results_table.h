@@ -138,6 +138,9 @@ int remove_stale_temp_files(const std::string& directory);
 /// x as "1.23e-04" (two decimals, for error tables), or `not_finite` when x is not finite.
 std::string scientific(double x, const char* not_finite = "n/a");
 
+/// x as "1.98" (two decimals, for rates and ratios), or "n/a" when x is not finite.
+std::string two_decimals(double x);
+
 /// "%.17g" with "nan"/"inf" spelled out.
 std::string format_double(double x);
 
