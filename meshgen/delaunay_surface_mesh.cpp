@@ -21,28 +21,13 @@
 #include <string>
 #include <vector>
 
+#include "meshgen/cgal_timestamped.h"
+
 namespace curvbench {
 namespace {
 
-// CGAL's default surface-mesher triangulation, with time-stamped vertices and cells: handles then
-// compare by creation order instead of by address (CGAL's Compact_container uses the stamps when
-// the type declares Has_timestamp), so the refinement order, and the mesh, do not depend on the
-// state of the heap (without the stamps, meshing level 1 first changed level 2 from 5246 to 5307
-// vertices).
-template <class Base>
-struct Timestamped : Base {
-  using Base::Base;
-  template <class TDS2>
-  struct Rebind_TDS {
-    using Other = Timestamped<typename Base::template Rebind_TDS<TDS2>::Other>;
-  };
-  using Has_timestamp = CGAL::Tag_true;
-  std::size_t time_stamp() const { return stamp_; }
-  void set_time_stamp(std::size_t s) { stamp_ = s; }
-
- private:
-  std::size_t stamp_ = static_cast<std::size_t>(-1);
-};
+// CGAL's default surface-mesher triangulation, with time-stamped vertices and cells
+// (cgal_timestamped.h): the mesh does not depend on the state of the heap.
 using Kernel =
     CGAL::Robust_circumcenter_traits_3<CGAL::Exact_predicates_inexact_constructions_kernel>;
 using Vb = Timestamped<CGAL::Surface_mesh_vertex_base_3<Kernel>>;

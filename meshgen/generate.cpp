@@ -12,6 +12,7 @@
 #include "core/text.h"
 #include "meshgen/bump_grid.h"
 #include "meshgen/bump_irregular.h"
+#include "meshgen/bump_unstructured.h"
 #include "meshgen/noise.h"
 #include "meshgen/torus_isosurface.h"
 #include "meshgen/torus_structured.h"
@@ -41,6 +42,10 @@
     "the 4-8 mesh of the Gaussian bump, section 5.2", "none")                                     \
   X("bump-irregular", max_bump_level(), generate_bump_irregular, "irregular mesh",                \
     "the irregular mesh of the Gaussian bump, section 5.2", "none")                               \
+  X("bump-unstructured", max_bump_level(), generate_bump_unstructured,                            \
+    "irregular mesh, Delaunay-refined (a mesher's output in place of the jittered grid)",         \
+    "the irregular mesh of the Gaussian bump, section 5.2, read as an unstructured mesher's "     \
+    "output (an alternative to bump-irregular)", "none")                                          \
   X("torus-unstructured", 4, generate_torus_unstructured,                                         \
     "well-shaped torus (Delaunay-refined; the stand-in for the paper's GAMBIT meshes)",           \
     "the well-shaped torus of sections 5.1, 5.3 and Table 5", "none")                             \
@@ -120,6 +125,10 @@ GeneratedMesh generate_bump_48(const MeshSpec& spec) {
 
 GeneratedMesh generate_bump_irregular(const MeshSpec& spec) {
   return bump_irregular(spec.level, spec.seed);
+}
+
+GeneratedMesh generate_bump_unstructured(const MeshSpec& spec) {
+  return bump_unstructured(spec.level);
 }
 
 namespace {

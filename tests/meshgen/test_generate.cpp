@@ -29,11 +29,21 @@ std::string usage_error(const MeshSpec& spec) {
 }
 
 TEST(Generate, Families) {
-  const std::vector<std::string> expected = {
-      "torus-structured",  "torus-jittered",   "torus-iso",          "torus-iso-projected",
-      "bump-48",           "bump-irregular",   "torus-unstructured", "torus-unstructured-minval5",
-      "torus-anisotropic", "bump-anisotropic", "bump-density",       "lantern",
-      "lantern-squeezed",  "ellipsoid"};
+  const std::vector<std::string> expected = {"torus-structured",
+                                             "torus-jittered",
+                                             "torus-iso",
+                                             "torus-iso-projected",
+                                             "bump-48",
+                                             "bump-irregular",
+                                             "bump-unstructured",
+                                             "torus-unstructured",
+                                             "torus-unstructured-minval5",
+                                             "torus-anisotropic",
+                                             "bump-anisotropic",
+                                             "bump-density",
+                                             "lantern",
+                                             "lantern-squeezed",
+                                             "ellipsoid"};
   EXPECT_EQ(mesh_families(), expected);
   EXPECT_EQ(max_mesh_level("torus-structured"), 6);  // 5-6: beyond the paper, for scaling
   EXPECT_EQ(max_mesh_level("torus-jittered"), 6);
@@ -41,6 +51,7 @@ TEST(Generate, Families) {
   EXPECT_EQ(max_mesh_level("torus-iso-projected"), 5);
   EXPECT_EQ(max_mesh_level("bump-48"), 5);
   EXPECT_EQ(max_mesh_level("bump-irregular"), 5);
+  EXPECT_EQ(max_mesh_level("bump-unstructured"), 5);
   EXPECT_EQ(max_mesh_level("torus-unstructured"), 4);  // the paper's four well-shaped meshes
   EXPECT_EQ(max_mesh_level("torus-unstructured-minval5"), 4);
   EXPECT_EQ(max_mesh_level("torus-anisotropic"), 4);
