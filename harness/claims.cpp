@@ -119,18 +119,19 @@ std::string differing_checks(const std::string& a, const std::string& b) {
   return claims::join(out, "\n");
 }
 
-// Substitutes the well-shaped torus family for the lifetime of the object.
-class WellScope {
+// Substitutes `by` for `family` in the checks for the lifetime of the object.
+class FamilyScope {
  public:
-  explicit WellScope(const std::string& family) : saved_(claims::well()) {
-    claims::well() = family;
+  FamilyScope(const std::string& family, const std::string& by)
+      : family_(family), saved_(claims::family(family)) {
+    claims::set_substitute(family_, by);
   }
-  ~WellScope() { claims::well() = saved_; }
-  WellScope(const WellScope&) = delete;
-  WellScope& operator=(const WellScope&) = delete;
+  ~FamilyScope() { claims::set_substitute(family_, saved_); }
+  FamilyScope(const FamilyScope&) = delete;
+  FamilyScope& operator=(const FamilyScope&) = delete;
 
  private:
-  std::string saved_;
+  std::string family_, saved_;
 };
 
 // The "Why" line of a checked claim that is not reproduced: every diagnostic the registry can run
@@ -149,7 +150,8 @@ std::string why_line(const claims::ClaimEntry& def, const claims::Data& data,
     std::vector<std::string> shapes;
     bool reproduced_elsewhere = false;
     for (const std::string family : {"torus-jittered", "torus-structured"}) {
-      const WellScope scope(family);  // rates over the measured h (evaluate_claims' default)
+      const FamilyScope scope(claims::kWell,
+                              family);  // rates over the measured h (evaluate_claims' default)
       claims::Check c;
       def.check(data, c);
       shapes.push_back(family + ": " + to_string(c.verdict()));
@@ -297,9 +299,9 @@ std::string claim_sensitivity(const ClaimResult& r,
 }  // namespace
 
 std::vector<ClaimResult> evaluate_claims(const std::string& results_dir, const std::string& overlay,
-                                         const std::string& well_family) {
+                                         const FamilySubstitute& substitute) {
   const claims::Data data(results_dir, overlay);
-  const WellScope well(well_family.empty() ? claims::kWell : well_family);
+  const FamilyScope swap(substitute.family, substitute.by);
   std::vector<ClaimResult> out;
   for (const auto& def : registry()) {
     ClaimResult r;
@@ -362,7 +364,7 @@ std::vector<ReadingResults> evaluate_readings(const std::string& results_dir) {
       std::error_code ec;
       if (!std::filesystem::is_directory(folder, ec)) continue;
       out.push_back({reading.id, choice.name, choice.description,
-                     evaluate_claims(results_dir, folder, choice.well_family)});
+                     evaluate_claims(results_dir, folder, choice.substitute)});
     }
   return out;
 }

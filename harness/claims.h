@@ -30,6 +30,8 @@
 #include <string>
 #include <vector>
 
+#include "harness/family_substitute.h"
+
 namespace curvbench {
 
 enum class Verdict { reproduced, not_reproduced, not_applicable };
@@ -87,11 +89,12 @@ Band claim_band(const std::string& id, const std::string& name);
 
 /// Evaluates claims A1-G4 of docs/claims.md from the CSVs in results_dir (see above), in order.
 /// With `overlay`, an experiment with rows in that folder's CSVs is read from there (a reading's
-/// run, readings.h); with `well_family`, that family stands for the well-shaped torus. Throws
+/// run, readings.h); with `substitute` (a reading's family swap, e.g. torus-unstructured by
+/// torus-unstructured-minval5), the checks read the substitute's rows for that family. Throws
 /// InputError if a CSV it reads is malformed.
 std::vector<ClaimResult> evaluate_claims(const std::string& results_dir,
                                          const std::string& overlay = "",
-                                         const std::string& well_family = "");
+                                         const FamilySubstitute& substitute = {});
 
 /// Every claim under one alternative reading (readings.h): the reading, the choice and what it
 /// does, and the results in registry order.

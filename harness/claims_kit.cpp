@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <set>
 #include <sstream>
 #include <tuple>
@@ -151,13 +152,31 @@ RateFormula& rate_formula() {
   return formula;
 }
 
-std::string& well() {
-  thread_local std::string family = kWell;
-  return family;
+namespace {
+std::map<std::string, std::string>& substitutes() {
+  thread_local std::map<std::string, std::string> table;
+  return table;
+}
+}  // namespace
+
+const std::string& family(const std::string& name) {
+  const auto it = substitutes().find(name);
+  return it == substitutes().end() ? name : it->second;
+}
+
+void set_substitute(const std::string& name, const std::string& substitute) {
+  if (substitute.empty() || substitute == name)
+    substitutes().erase(name);
+  else
+    substitutes()[name] = substitute;
 }
 
 std::vector<std::string> tori() {
-  return {well(), kPoor};
+  return {family(kWell), kPoor};
+}
+
+std::vector<std::string> bumps() {
+  return {family(kBumpIrr), kBump48};
 }
 
 double Series::rate() const {

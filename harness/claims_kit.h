@@ -230,17 +230,20 @@ std::vector<ClaimEntry> section6_claims();    // G1-G4  (claims_section6.cpp)
 // unstructured torus with the paper's vertex counts (docs/mesh_families.md). The structured and
 // jittered tori are extra rows of the experiments, not used by the claims.
 inline const std::string kWell = "torus-unstructured";
-/// The well-shaped family the checks read: kWell, unless evaluate_claims substitutes another
-/// torus family for the mesh-shape diagnostic of a miss (the "Why" line of CLAIMS.md).
-std::string& well();
-/// {well(), kPoor}.
-std::vector<std::string> tori();
 inline const std::string kPoor = "torus-iso-projected";
 inline const std::string kNoisyTorus = "torus-iso";
 inline const std::string kBumpIrr = "bump-irregular";
 inline const std::string kBump48 = "bump-48";
-inline const std::vector<std::string> kTori = {kWell, kPoor};
-inline const std::vector<std::string> kBumps = {kBumpIrr, kBump48};
+/// The family the checks read for `family` (kWell, kBumpIrr): itself, unless evaluate_claims
+/// substitutes another family under a reading (readings.h) or for the mesh-shape diagnostic of a
+/// miss (the "Why" line of CLAIMS.md).
+const std::string& family(const std::string& family);
+/// Sets (or, with an empty `substitute`, clears) the substitution of `family` on this thread.
+void set_substitute(const std::string& family, const std::string& substitute);
+/// {family(kWell), kPoor}.
+std::vector<std::string> tori();
+/// {family(kBumpIrr), kBump48}.
+std::vector<std::string> bumps();
 inline const std::vector<std::string> kDeg2Others = {"LHF-2", "LOP-2", "LSCM-2"};
 
 }  // namespace curvbench::claims

@@ -150,23 +150,24 @@ std::vector<ClaimEntry> section5_1_claims() {
        {{"L2_ratio", b4_l2}, {"Linf_ratio", b4_linf}},
        [=](const Data& d, Check& c) {
          for (const char* q : {"normal", "H"}) {
-           const Series* xu = torus2(d, c, well(), "Xu-2", q, "L2");
-           const Series* lhf = torus2(d, c, well(), "LHF-2", q, "L2");
+           const Series* xu = torus2(d, c, family(kWell), "Xu-2", q, "L2");
+           const Series* lhf = torus2(d, c, family(kWell), "LHF-2", q, "L2");
            if (xu && lhf)
-             require_most_levels(c, error_ratios(*xu, *lhf), b4_l2,
-                                 well() + " " + q + " L2 " + xu->method + " / " + lhf->method);
+             require_most_levels(
+                 c, error_ratios(*xu, *lhf), b4_l2,
+                 family(kWell) + " " + q + " L2 " + xu->method + " / " + lhf->method);
          }
          for (const char* q : {"normal", "H"}) {
-           const Series* xu = torus2(d, c, well(), "Xu-2", q, "Linf");
-           const Series* lhf = torus2(d, c, well(), "LHF-2", q, "Linf");
+           const Series* xu = torus2(d, c, family(kWell), "Xu-2", q, "Linf");
+           const Series* lhf = torus2(d, c, family(kWell), "LHF-2", q, "Linf");
            if (!xu || !lhf) continue;
            const auto r = error_ratios(*xu, *lhf);
            if (r.empty()) {
-             c.missing(well() + " " + q + " Linf: no level in common");
+             c.missing(family(kWell) + " " + q + " Linf: no level in common");
              continue;
            }
            require_finest(c, r, b4_linf,
-                          well() + " " + q + " Linf " + xu->method + " / " + lhf->method);
+                          family(kWell) + " " + q + " Linf " + xu->method + " / " + lhf->method);
          }
        },
        {},
@@ -302,7 +303,8 @@ std::vector<ClaimEntry> section5_1_claims() {
            }
          if (ratios.empty()) return "";
          std::sort(ratios.begin(), ratios.end());
-         return "the size, not the direction: LSCM-3 is more accurate than LHF-3 in " +
+         return "the size, not the direction (experiment fig06-07, REPORT.md): LSCM-3 is more "
+                "accurate than LHF-3 in " +
                 std::to_string(better) + " of " + std::to_string(ratios.size()) +
                 " combinations, by a factor 1/ratio of " + f2(1.0 / ratios.back()) + " to " +
                 f2(1.0 / ratios.front()) + " (median " + f2(1.0 / ratios[ratios.size() / 2]) +
@@ -365,7 +367,8 @@ std::vector<ClaimEntry> section5_1_claims() {
                             (normal ? "4" : "3") + ")");
            }
          if (gain.empty() || theory.empty()) return "";
-         return "the gain is not in every quantity: nearly an order above theory for " +
+         return "the gain is not in every quantity (experiment fig06-07, REPORT.md): nearly an "
+                "order above theory for " +
                 join(gain, ", ") + "; at theory for " + join(theory, ", ") +
                 " (consistent with the symmetric cancellation of an even degree raising the even "
                 "derivatives, H and K, and not the first, the normals)";
@@ -381,9 +384,10 @@ std::vector<ClaimEntry> section5_1_claims() {
            kPoor + ": the failure criterion for H and K (L2)",
        {{"normal_rate", c4_normal}, {"H_rate", c4_h}},
        [=](const Data& d, Check& c) {
-         if (const Series* s = torus34(d, c, well(), "LSCM-4", "normal"))
+         if (const Series* s = torus34(d, c, family(kWell), "LSCM-4", "normal"))
            require_rate(c, *s, c4_normal);
-         if (const Series* s = torus34(d, c, well(), "LSCM-4", "H")) require_rate(c, *s, c4_h);
+         if (const Series* s = torus34(d, c, family(kWell), "LSCM-4", "H"))
+           require_rate(c, *s, c4_h);
          for (const char* q : {"H", "K"})
            if (const Series* s = torus34(d, c, kPoor, "LSCM-4", q)) require_failure(c, *s);
          // Not part of the band: the same map solved by OpenNL conjugate gradients (tolerance
@@ -410,8 +414,9 @@ std::vector<ClaimEntry> section5_1_claims() {
              if (!failure_reasons(*s).empty())
                fails.push_back(std::string(q) + " rate " + f2(s->rate()));
          if (fails.empty()) return "";
-         return "the LSCM solver: the same map solved by conjugate gradients to 1e-6 (lscm-cg, as "
-                "CGAL does without Eigen, most likely the paper's) fails to converge on " +
+         return "the LSCM solver (experiment fig06-07's LSCM-CG-4 rows, REPORT.md): the same map "
+                "solved by conjugate gradients to 1e-6 (lscm-cg, as CGAL does without Eigen, "
+                "most likely the paper's) fails to converge on " +
                 kPoor + " (" + join(fails, ", ") +
                 "), as the paper reports, while the exact solve converges";
        }});

@@ -3,6 +3,7 @@
 // (degrees 3, 4) and fig13-14 (boundary vertices).
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "harness/claims_kit.h"
 
@@ -36,6 +37,7 @@ std::string degree_band_text(const Band& offset) {
 
 constexpr const char* kInteriorDiag = "diag-d-bump-interior";
 constexpr const char* kLevel5Diag = "diag-d6-level5";
+constexpr const char* kD5Level5Diag = "diag-d5-level5";
 
 const Series* interior(const Data& d, Check& c, const std::string& family, const std::string& m,
                        const std::string& q) {
@@ -62,7 +64,7 @@ std::string ratio_list(const Series& a, const Series& b, double& max_ratio) {
 std::string why_d1(const Data& d, const Band& band) {
   std::vector<std::string> parts;
   bool interior_outside = false, ring_inside = true;
-  for (const auto& fam : kBumps) {
+  for (const auto& fam : bumps()) {
     Check scratch;
     const Series* lhf = interior(d, scratch, fam, "LHF-2", "K");
     const Series* lop = interior(d, scratch, fam, "LOP-2", "K");
@@ -97,7 +99,7 @@ std::string why_d1(const Data& d, const Band& band) {
 // boundary lowers each bump's rate, and where the interior itself sets it.
 std::string why_d2(const Data& d, const std::vector<std::string>& tori, double gap) {
   std::vector<std::string> parts;
-  for (const auto& fam : kBumps) {
+  for (const auto& fam : bumps()) {
     Check scratch;
     const Series* in = interior(d, scratch, fam, "LHF-2", "H");
     const Series* ring = boundary_ring(d, scratch, fam, "LHF-2", "H");
@@ -125,32 +127,135 @@ std::string why_d2(const Data& d, const std::vector<std::string>& tori, double g
          "symmetric as the 4-8 mesh's ends level with them";
 }
 
-// D5's measured cause: the LHF-4 / LSCM-4 rate gap over the interior (diag-d-bump-interior).
-std::string why_d5(const Data& d, const Band& band) {
+// One diagnostic of D5: a cause when the rate gap holds on every bump under it, else one more
+// thing tried; `text` says what was measured.
+struct D5Finding {
+  bool cause = false;
+  std::string text;
+};
+
+// rate(LHF-4) - rate(<lscm>) for normals and H (L2) on each bump, from `series(family, method, q)`;
+// holds when normals or H reach the band on every bump. Empty text when a series is missing.
+template <class SeriesOf>
+D5Finding d5_gaps(const Band& band, const std::string& lscm, SeriesOf series,
+                  bool with_rates = false) {
   std::vector<std::string> parts;
   bool holds_everywhere = true;
-  for (const auto& fam : kBumps) {
+  for (const auto& fam : bumps()) {
     bool any = false;
     std::vector<std::string> gaps;
     for (const char* q : {"normal", "H"}) {
-      Check scratch;
-      const Series* lhf = interior(d, scratch, fam, "LHF-4", q);
-      const Series* lscm = interior(d, scratch, fam, "LSCM-4", q);
-      if (!lhf || !lscm) return "";
-      const double g = lhf->rate() - lscm->rate();
+      const std::optional<double> lhf = series(fam, std::string("LHF-4"), q),
+                                  other = series(fam, lscm, q);
+      if (!lhf || !other) return {};
+      const double g = *lhf - *other;
       any = any || band.holds(g);
-      gaps.push_back(std::string(q) + " " + f2(lhf->rate()) + " - " + f2(lscm->rate()) + " = " +
-                     f2(g));
+      gaps.push_back(std::string(q) + " " +
+                     (with_rates ? f2(*lhf) + " - " + f2(*other) + " = " : std::string()) + f2(g));
     }
     holds_everywhere = holds_everywhere && any;
     parts.push_back(fam + ": " + join(gaps, ", "));
   }
-  return std::string(holds_everywhere ? "the boundary ring: " : "tried ") +
-         "over the interior vertices alone (diagnostic diag-d-bump-interior, REPORT.md), "
-         "rate(LHF-4) - rate(LSCM-4) is " +
-         join(parts, "; ") + " (" + band.text() + " for normals or H" +
-         (holds_everywhere ? ": the claim holds without the boundary ring)"
-                           : ": not enough either)");
+  return {holds_everywhere, join(parts, "; ") + " (" + band.text() + " for normals or H" +
+                                (holds_everywhere ? ")" : ": not enough either)")};
+}
+
+std::optional<double> rate_of(const Series* s) {
+  return s ? std::optional<double>(s->rate()) : std::nullopt;
+}
+
+// The LSCM map solved by conjugate gradients (lscm-cg-4, the solver of C4's Why line).
+D5Finding d5_solver(const Data& d, const Band& band) {
+  D5Finding f =
+      d5_gaps(band, "LSCM-CG-4", [&](const std::string& fam, const std::string& m, const char* q) {
+        Check scratch;
+        return rate_of(bump(d, scratch, fam, m, q, "L2"));
+      });
+  if (!f.text.empty())
+    f.text =
+        "the LSCM solver: with the map solved by conjugate gradients to 1e-6 (lscm-cg-4), "
+        "rate(LHF-4) - rate(LSCM-CG-4) is " +
+        f.text;
+  return f;
+}
+
+// The gap over the interior vertices alone (diag-d-bump-interior).
+D5Finding d5_interior(const Data& d, const Band& band) {
+  D5Finding f = d5_gaps(
+      band, "LSCM-4",
+      [&](const std::string& fam, const std::string& m, const char* q) {
+        Check scratch;
+        return rate_of(interior(d, scratch, fam, m, q));
+      },
+      true);
+  if (!f.text.empty())
+    f.text =
+        "the boundary ring: over the interior vertices alone (diagnostic "
+        "diag-d-bump-interior, REPORT.md), rate(LHF-4) - rate(LSCM-4) is " +
+        f.text;
+  return f;
+}
+
+// The gap between the rates of the finest pair of levels, one level finer than the paper's four
+// (diag-d5-level5), with each method's level-to-level H rates.
+D5Finding d5_levels(const Data& d, const Band& band) {
+  // The rate of each pair of consecutive levels (rate_formula()), finest last.
+  auto pair_rates = [&](const std::string& fam, const std::string& m, const char* q) {
+    std::vector<double> out;
+    Check scratch;
+    const Series* s = d.find(scratch, query(kD5Level5Diag, fam, m, q, "L2"));
+    if (!s || s->points.size() < 5) return out;
+    for (size_t i = 1; i < s->points.size(); ++i) {
+      Series pair = *s;
+      pair.points = {s->points[i - 1], s->points[i]};
+      out.push_back(pair.rate());
+    }
+    return out;
+  };
+  D5Finding f = d5_gaps(
+      band, "LSCM-4",
+      [&](const std::string& fam, const std::string& m, const char* q) -> std::optional<double> {
+        const std::vector<double> r = pair_rates(fam, m, q);
+        return r.empty() ? std::nullopt : std::optional<double>(r.back());
+      },
+      true);
+  if (f.text.empty()) return f;
+  std::vector<std::string> rates, drops;
+  bool drops_everywhere = true;
+  for (const auto& fam : bumps()) {
+    for (const char* m : {"LHF-4", "LSCM-4"}) {
+      std::vector<std::string> values;
+      for (double r : pair_rates(fam, m, "H")) values.push_back(f2(r));
+      rates.push_back(fam + " " + m + " H " + join(values, ", "));
+    }
+    const std::vector<double> lscm = pair_rates(fam, "LSCM-4", "H");
+    const double drop = *std::max_element(lscm.begin(), lscm.end() - 1) - lscm.back();
+    drops_everywhere = drops_everywhere && drop >= 0.3;
+    drops.push_back(fam + " " + f2(drop));
+  }
+  f.text =
+      "the levels: one level finer than the paper's four (diagnostic diag-d5-level5, "
+      "REPORT.md), rate(LHF-4) - rate(LSCM-4) from level 4 to 5 is " +
+      f.text + "; level-to-level rates " + join(rates, "; ");
+  if (drops_everywhere)
+    f.text +=
+        ". From level 4 to 5 LSCM-4's H rate falls below its earlier level-to-level rates "
+        "(by " +
+        join(drops, ", ") +
+        "), the onset on the bump of the loss of an order that the tori show from level 1 "
+        "(claim C5)";
+  return f;
+}
+
+// D5's Why line from its three diagnostics: the causes first, then what was tried.
+std::string why_d5(const Data& d, const Band& band) {
+  std::vector<std::string> causes, tried;
+  for (const D5Finding& f : {d5_levels(d, band), d5_interior(d, band), d5_solver(d, band)}) {
+    if (f.text.empty()) continue;
+    (f.cause ? causes : tried).push_back(f.text);
+  }
+  if (causes.empty()) return tried.empty() ? "" : "tried " + join(tried, "; ");
+  return join(causes, "; ") + (tried.empty() ? "" : "; also tried " + join(tried, "; "));
 }
 
 // D6's measured cause: LHF-4 on the boundary ring one level finer (diag-d6-level5).
@@ -158,7 +263,7 @@ std::string why_d6(const Data& d, const Band& curvature_offset) {
   const Band band = Band::in(4 + curvature_offset.lo, 4 + curvature_offset.hi, 2);
   std::vector<std::string> parts;
   bool all_inside = true;
-  for (const auto& fam : kBumps)
+  for (const auto& fam : bumps())
     for (const char* q : {"H", "K"}) {
       Check scratch;
       const Series* s =
@@ -194,7 +299,7 @@ std::vector<ClaimEntry> section5_2_claims() {
                  [=](const Data& d, Check& c) {
                    const std::pair<const char*, const char*> measures[] = {
                        {"normal", "L2"}, {"normal", "Linf"}, {"H", "L2"}, {"K", "L2"}};
-                   for (const auto& fam : kBumps)
+                   for (const auto& fam : bumps())
                      for (const auto& [q, norm] : measures) {
                        std::vector<const Series*> ss;
                        for (const auto& m : kDeg2Others)
@@ -219,7 +324,7 @@ std::vector<ClaimEntry> section5_2_claims() {
                  {{"torus_minus_bump_rate", d2_gap}},
                  [=](const Data& d, Check& c) {
                    for (const auto& m : kDeg2Others)
-                     for (const auto& fam : kBumps) {
+                     for (const auto& fam : bumps()) {
                        const Series* b = bump(d, c, fam, m, "H", "L2");
                        for (const auto& tor : tori()) {
                          const Series* t = torus2(d, c, tor, m, "H", "L2");
@@ -242,7 +347,7 @@ std::vector<ClaimEntry> section5_2_claims() {
                  "bump-48",
                  {},
                  [](const Data& d, Check& c) {
-                   for (const auto& fam : kBumps)
+                   for (const auto& fam : bumps())
                      for (const char* q : {"H", "K"})
                        if (const Series* s = bump(d, c, fam, "Xu-2", q, "L2"))
                          require_failure(c, *s);
@@ -260,7 +365,7 @@ std::vector<ClaimEntry> section5_2_claims() {
                  [=](const Data& d, Check& c) {
                    const std::pair<const char*, const char*> measures[] = {
                        {"normal", "L2"}, {"normal", "Linf"}, {"H", "L2"}, {"K", "L2"}};
-                   for (const auto& fam : kBumps)
+                   for (const auto& fam : bumps())
                      for (int deg : {3, 4})
                        for (const auto& [q, norm] : measures) {
                          const std::string dd = std::to_string(deg);
@@ -275,68 +380,38 @@ std::vector<ClaimEntry> section5_2_claims() {
                  {}});
 
   const Band d5 = Band::at_least(1.0, 1);
-  out.push_back(
-      {"D5",
-       "LSCM-4 converges substantially slower than LHF-4 on the bump",
-       "LSCM-4 converges substantially slower than LHF-4.",
-       "rate(LHF-4) - rate(LSCM-4) " + d5.text() +
-           " for normals or H (L2), on each bump "
-           "mesh",
-       {{"rate_gap", d5}},
-       [=](const Data& d, Check& c) {
-         for (const auto& fam : kBumps) {
-           std::vector<std::string> parts;
-           bool any = false, complete = true;
-           for (const char* q : {"normal", "H"}) {
-             const Series* lhf = bump(d, c, fam, "LHF-4", q, "L2");
-             const Series* lscm = bump(d, c, fam, "LSCM-4", q, "L2");
-             if (!lhf || !lscm) {
-               complete = false;
-               continue;
-             }
-             const double gap = lhf->rate() - lscm->rate();
-             any = any || d5.holds(gap);
-             parts.push_back(std::string(q) + " L2 " + f2(lhf->rate()) + " - " + f2(lscm->rate()) +
-                             " = " + f2(gap));
-           }
-           if (complete)
-             c.require(any, fam + ": rate(LHF-4) - rate(LSCM-4): " + join(parts, "; ") + " (" +
-                                d5.text() + " for normals or H)");
-         }
-       },
-       {},
-       // Measured cause: the gap over the interior vertices (diag-d-bump-interior); also tried:
-       // the LSCM map solved by conjugate gradients (lscm-cg-4, the solver of C4's Why line).
-       [=](const Data& d) -> std::string {
-         std::vector<std::string> parts;
-         bool cg_holds = true;
-         for (const auto& fam : kBumps) {
-           bool any = false;
-           std::vector<std::string> gaps;
-           for (const char* q : {"normal", "H"}) {
-             Check scratch;
-             const Series* lhf = bump(d, scratch, fam, "LHF-4", q, "L2");
-             const Series* cg = bump(d, scratch, fam, "LSCM-CG-4", q, "L2");
-             if (!lhf || !cg) return why_d5(d, d5);
-             const double gap = lhf->rate() - cg->rate();
-             any = any || d5.holds(gap);
-             gaps.push_back(std::string(q) + " " + f2(gap));
-           }
-           cg_holds = cg_holds && any;
-           parts.push_back(fam + ": " + join(gaps, ", "));
-         }
-         const std::string cg =
-             "with the map solved by conjugate gradients to 1e-6 (lscm-cg-4), "
-             "rate(LHF-4) - rate(LSCM-CG-4) is " +
-             join(parts, "; ") + " (" + d5.text() + " for normals or H" +
-             (cg_holds ? ": the claim holds with that solver)" : ": not enough either)");
-         if (cg_holds) return "the LSCM solver: " + cg;
-         const std::string interior_part = why_d5(d, d5);
-         if (interior_part.empty()) return "tried the LSCM solver: " + cg;
-         if (interior_part.rfind("tried ", 0) == 0)
-           return "tried the LSCM solver: " + cg + "; " + interior_part.substr(6);
-         return interior_part + "; also tried the LSCM solver: " + cg;
-       }});
+  out.push_back({"D5",
+                 "LSCM-4 converges substantially slower than LHF-4 on the bump",
+                 "LSCM-4 converges substantially slower than LHF-4.",
+                 "rate(LHF-4) - rate(LSCM-4) " + d5.text() +
+                     " for normals or H (L2), on each bump "
+                     "mesh",
+                 {{"rate_gap", d5}},
+                 [=](const Data& d, Check& c) {
+                   for (const auto& fam : bumps()) {
+                     std::vector<std::string> parts;
+                     bool any = false, complete = true;
+                     for (const char* q : {"normal", "H"}) {
+                       const Series* lhf = bump(d, c, fam, "LHF-4", q, "L2");
+                       const Series* lscm = bump(d, c, fam, "LSCM-4", q, "L2");
+                       if (!lhf || !lscm) {
+                         complete = false;
+                         continue;
+                       }
+                       const double gap = lhf->rate() - lscm->rate();
+                       any = any || d5.holds(gap);
+                       parts.push_back(std::string(q) + " L2 " + f2(lhf->rate()) + " - " +
+                                       f2(lscm->rate()) + " = " + f2(gap));
+                     }
+                     if (complete)
+                       c.require(any, fam + ": rate(LHF-4) - rate(LSCM-4): " + join(parts, "; ") +
+                                          " (" + d5.text() + " for normals or H)");
+                   }
+                 },
+                 {},
+                 // Measured causes: one level finer (diag-d5-level5), the interior vertices
+                 // (diag-d-bump-interior), the LSCM map's solver (lscm-cg-4).
+                 [=](const Data& d) { return why_d5(d, d5); }});
 
   // Relative to the degree d.
   const Band d6_normal = Band::in(-0.5, 0.7, 2), d6_curvature = Band::in(-1.5, -0.3, 2);
@@ -351,7 +426,7 @@ std::vector<ClaimEntry> section5_2_claims() {
            "; each <= the corresponding all-vertex rate + " + num(d6_margin) + "; both bump meshes",
        {{"normal_rate_minus_degree", d6_normal}, {"curvature_rate_minus_degree", d6_curvature}},
        [=](const Data& d, Check& c) {
-         for (const auto& fam : kBumps)
+         for (const auto& fam : bumps())
            for (int deg : {2, 3, 4}) {
              const std::string m = "LHF-" + std::to_string(deg);
              for (const char* q : {"normal", "H", "K"}) {

@@ -41,6 +41,18 @@ bool well_shaped_without_valence_4(Experiment& e) {
   });
 }
 
+// The Delaunay-refined irregular bump in place of the jittered grid, in the experiments of the
+// paper's sections (the studies beyond the paper keep bump-irregular).
+constexpr const char* kBumpUnstructured = "bump-unstructured";
+bool irregular_bump_delaunay_refined(Experiment& e) {
+  if (e.section == "beyond") return false;
+  return keep_changed_meshes(e, [](ExperimentMesh& m) {
+    if (m.family != "bump-irregular") return false;
+    m.family = kBumpUnstructured;
+    return true;
+  });
+}
+
 // The noisy-data half ring for degree 2 only, where the experiment fits a higher degree.
 bool noisy_rings_quadratic_only(Experiment& e) {
   if (!e.noisy || e.noisy_quadratic_only) return false;
@@ -74,33 +86,55 @@ const std::vector<Reading>& readings() {
        "Which isosurface meshes",
        "§5.1 uses \"four\" isosurface meshes and §5.3 the same ones; Table 4 lists five, from "
        "16^3 to 256^3 volume cells",
-       {{"32-256", "levels 2-5 (n = 32..256: 1760 to 122464 vertices)", unchanged, ""},
-        {"16-128", "levels 1-4 (n = 16..128: 320 to 31136 vertices)", shift_iso_levels_down, ""}}},
+       {{"32-256", "levels 2-5 (n = 32..256: 1760 to 122464 vertices)", unchanged, {}},
+        {"16-128", "levels 1-4 (n = 16..128: 320 to 31136 vertices)", shift_iso_levels_down, {}}}},
       {"noisy-rings",
        "Rings of the noisy-data fits",
        "§5.3: the neighbourhood grows by half a ring for LHF, LOP and LSCM, stated before the "
        "degree-2 figures; the cubic and quartic fits follow \"for completeness\"",
-       {{"all", "half a ring more for the fits of every degree", unchanged, ""},
-        {"quadratic", "half a ring more for degree 2 only; degrees 3, 4 keep their own rings",
-         noisy_rings_quadratic_only, ""}}},
+       {{"all", "half a ring more for the fits of every degree", unchanged, {}},
+        {"quadratic",
+         "half a ring more for degree 2 only; degrees 3, 4 keep their own rings",
+         noisy_rings_quadratic_only,
+         {}}}},
       {"noise-alpha",
        "The distribution of the controlled noise",
        "§5.3: alpha is \"a random number between 0 and 0.1 with Gaussian distribution\"",
-       {{"gaussian-0.1", "alpha = 0.1 N(0,1)", unchanged, ""},
-        {"uniform-0.1", "alpha = 0.1 U[0,1): one-signed, in [0, 0.1)",
-         set_noise_model({NoiseDistribution::uniform, 0.1}), ""},
-        {"gaussian-0.033", "alpha = (0.1/3) N(0,1): |alpha| < 0.1 at three standard deviations",
-         set_noise_model({NoiseDistribution::gaussian, 0.1 / 3}), ""}}},
+       {{"gaussian-0.1", "alpha = 0.1 N(0,1)", unchanged, {}},
+        {"uniform-0.1",
+         "alpha = 0.1 U[0,1): one-signed, in [0, 0.1)",
+         set_noise_model({NoiseDistribution::uniform, 0.1}),
+         {}},
+        {"gaussian-0.033",
+         "alpha = (0.1/3) N(0,1): |alpha| < 0.1 at three standard deviations",
+         set_noise_model({NoiseDistribution::gaussian, 0.1 / 3}),
+         {}}}},
       {"well-shaped-torus",
        "The vertex valences of the well-shaped torus",
        "§5.1: four \"well shaped\" meshes from the commercial generator GAMBIT, \"such as those "
        "obtained from CAD software for finite element analysis\"; their valences are not given",
-       {{"delaunay", "torus-unstructured: CGAL's Delaunay refinement as it comes (1.6% valence 4)",
-         unchanged, ""},
+       {{"delaunay",
+         "torus-unstructured: CGAL's Delaunay refinement as it comes (1.6% valence 4)",
+         unchanged,
+         {}},
         {"min-valence-5",
          "torus-unstructured-minval5: the same meshes with every valence-4 vertex removed by edge "
          "flips",
-         well_shaped_without_valence_4, kMinValence5}}},
+         well_shaped_without_valence_4,
+         {"torus-unstructured", kMinValence5}}}},
+      {"irregular-bump",
+       "The generator of the irregular bump mesh",
+       "§5.2: two bump meshes, \"irregular\" and 4-8, \"both well-shaped\" with \"variations of "
+       "vertex valences\"; the irregular one is shown in a figure, its generator is not named",
+       {{"jittered-grid",
+         "bump-irregular: the 4-8 mesh's grid points jittered by up to h/4, Delaunay-triangulated",
+         unchanged,
+         {}},
+        {"delaunay-refined",
+         "bump-unstructured: CGAL's Delaunay refinement of the square (angle 30 deg), as the "
+         "well-shaped torus",
+         irregular_bump_delaunay_refined,
+         {"bump-irregular", kBumpUnstructured}}}},
   };
   return table;
 }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "harness/experiment.h"
+#include "harness/family_substitute.h"
 
 namespace curvbench {
 
@@ -21,8 +22,8 @@ struct ReadingChoice {
   /// Changes an experiment to this choice; returns whether anything changed (the adopted
   /// choice is the experiment files' own and changes nothing).
   std::function<bool(Experiment&)> apply;
-  /// The well-shaped torus family the claims read under this choice ("" = the default).
-  std::string well_family;
+  /// The family the claims read in place of another under this choice (none by default).
+  FamilySubstitute substitute;
 };
 
 struct Reading {

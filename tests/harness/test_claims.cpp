@@ -729,3 +729,62 @@ TEST(Claims, EveryMissHasAWhyLine) {
 
 }  // namespace
 }  // namespace curvbench
+
+namespace curvbench {
+namespace {
+
+// D5's Why line reads diag-d5-level5: where the LHF-4 / LSCM-4 gap misses the band over levels
+// 1-4 but holds between levels 4 and 5 on both bumps, the cause is the levels; where it still
+// misses there, the diagnostic joins what was tried, with its numbers.
+TEST(Claims, D5WhyLineReadsTheLevelFiveDiagnostic) {
+  auto with_level5 = [](double finest_lscm_h_rate) {
+    SyntheticSet s = ideal_set();
+    for (const std::string fam : {"bump-irregular", "bump-48"})
+      for (const std::string q : {"normal", "H"}) {
+        // Levels 1-4: LSCM-4 half an order behind LHF-4 (the band wants 1.0).
+        const double lhf = q == "normal" ? 4.0 : 3.0;
+        s.set("fig11-12", fam, "LSCM-4", q, "L2", 2.0, lhf - 0.5);
+        s.add("diag-d5-level5", fam, {1, 2, 3, 4, 5}, "LHF-4", "2.5", "none", "all", q, "L2", 1.0,
+              lhf);
+        s.add("diag-d5-level5", fam, {1, 2, 3, 4, 5}, "LSCM-4", "2.5", "none", "all", q, "L2", 2.0,
+              lhf - 0.5);
+        if (q == "H") {  // the finest pair at `finest_lscm_h_rate`
+          std::vector<double> e;
+          for (int level = 1; level <= 4; ++level) e.push_back(2.0 * std::pow(h_of(level), 2.5));
+          e.push_back(e.back() * std::pow(0.5, finest_lscm_h_rate));
+          s.set_errors("diag-d5-level5", fam, "LSCM-4", "H", "L2", e);
+        }
+      }
+    return s;
+  };
+  {
+    TempDir dir;
+    write_ideal(dir, with_level5(1.8));  // gap 3 - 1.8 = 1.2 between levels 4 and 5
+    const auto results = evaluate_claims(dir.str());
+    const ClaimResult& d5 = claim(results, "D5");
+    ASSERT_EQ(d5.verdict, Verdict::not_reproduced);
+    EXPECT_EQ(d5.why.rfind("the levels: one level finer than the paper's four (diagnostic "
+                           "diag-d5-level5, REPORT.md)",
+                           0),
+              0u)
+        << d5.why;
+    EXPECT_NE(d5.why.find("H 3.00 - 1.80 = 1.20"), std::string::npos) << d5.why;
+    EXPECT_NE(d5.why.find("falls below its earlier level-to-level rates (by bump-irregular 0.70, "
+                          "bump-48 0.70)"),
+              std::string::npos)
+        << d5.why;
+  }
+  {
+    TempDir dir;
+    write_ideal(dir, with_level5(2.5));  // still half an order
+    const auto results = evaluate_claims(dir.str());
+    const ClaimResult& d5 = claim(results, "D5");
+    EXPECT_EQ(d5.why.rfind("no cause found; tried ", 0), 0u) << d5.why;
+    EXPECT_NE(d5.why.find("the levels: one level finer"), std::string::npos) << d5.why;
+    EXPECT_NE(d5.why.find("H 3.00 - 2.50 = 0.50"), std::string::npos) << d5.why;
+    EXPECT_EQ(d5.why.find("falls below"), std::string::npos) << d5.why;
+  }
+}
+
+}  // namespace
+}  // namespace curvbench

@@ -68,7 +68,27 @@ TEST(Readings, WellShapedTorusSwapsTheFamilyAndNamesItForTheClaims) {
   ASSERT_EQ(changed[0].meshes.size(), 1u);
   EXPECT_EQ(changed[0].meshes[0].family, "torus-unstructured-minval5");
   EXPECT_EQ(changed[0].meshes[0].levels, (std::vector<int>{1, 2}));
-  EXPECT_EQ(c.well_family, "torus-unstructured-minval5");
+  EXPECT_EQ(c.substitute.family, "torus-unstructured");
+  EXPECT_EQ(c.substitute.by, "torus-unstructured-minval5");
+}
+
+TEST(Readings, IrregularBumpSwapsTheFamilyInThePapersExperimentsOnly) {
+  const Experiment paper =
+      parse("mesh bump-irregular levels=1,2\nmesh bump-48 levels=1,2\nmethod lhf-4\n");
+  const ReadingChoice& c = choice("irregular-bump", "delaunay-refined");
+  const auto changed = apply_reading({paper}, c);
+  ASSERT_EQ(changed.size(), 1u);
+  ASSERT_EQ(changed[0].meshes.size(), 1u);  // bump-48's rows stay the adopted run's
+  EXPECT_EQ(changed[0].meshes[0].family, "bump-unstructured");
+  EXPECT_EQ(changed[0].meshes[0].levels, (std::vector<int>{1, 2}));
+  EXPECT_EQ(c.substitute.family, "bump-irregular");
+  EXPECT_EQ(c.substitute.by, "bump-unstructured");
+  // A study beyond the paper keeps the adopted mesh.
+  const Experiment beyond = parse_experiment_text(
+      "name b\ntitle b\nsection beyond\nmesh bump-irregular levels=1\nmethod lhf-2\n"
+      "panel p \"p\" normal L2\n",
+      "b.exp");
+  EXPECT_TRUE(apply_reading({beyond}, c).empty());
 }
 
 TEST(Readings, NoisyRingsQuadraticOnlyGivesDegreesThreeAndFourTheirOwnRings) {
