@@ -164,6 +164,12 @@ D5Finding d5_gaps(const Band& band, const std::string& lscm, SeriesOf series,
           short_of};
 }
 
+// `f` with `prefix` before its text (unchanged when a series was missing).
+D5Finding prefixed(D5Finding f, const std::string& prefix) {
+  if (!f.text.empty()) f.text = prefix + f.text;
+  return f;
+}
+
 std::optional<double> rate_of(const Series* s) {
   return s ? std::optional<double>(s->rate()) : std::nullopt;
 }
@@ -175,12 +181,9 @@ D5Finding d5_solver(const Data& d, const Band& band) {
         Check scratch;
         return rate_of(bump(d, scratch, fam, m, q, "L2"));
       });
-  if (!f.text.empty())
-    f.text =
-        "the LSCM solver: with the map solved by conjugate gradients to 1e-6 (lscm-cg-4), "
-        "rate(LHF-4) - rate(LSCM-CG-4) is " +
-        f.text;
-  return f;
+  return prefixed(std::move(f),
+                  "the LSCM solver: with the map solved by conjugate gradients to 1e-6 "
+                  "(lscm-cg-4), rate(LHF-4) - rate(LSCM-CG-4) is ");
 }
 
 // The gap over the interior vertices alone (diag-d-bump-interior).
@@ -192,12 +195,9 @@ D5Finding d5_interior(const Data& d, const Band& band) {
         return rate_of(interior(d, scratch, fam, m, q));
       },
       true);
-  if (!f.text.empty())
-    f.text =
-        "the boundary ring: over the interior vertices alone (diagnostic "
-        "diag-d-bump-interior, REPORT.md), rate(LHF-4) - rate(LSCM-4) is " +
-        f.text;
-  return f;
+  return prefixed(std::move(f),
+                  "the boundary ring: over the interior vertices alone (diagnostic "
+                  "diag-d-bump-interior, REPORT.md), rate(LHF-4) - rate(LSCM-4) is ");
 }
 
 // The gap between the rates of the finest pair of levels, one level finer than the paper's four
