@@ -150,8 +150,8 @@ std::string why_line(const claims::ClaimEntry& def, const claims::Data& data,
     std::vector<std::string> shapes;
     bool reproduced_elsewhere = false;
     for (const std::string family : {"torus-jittered", "torus-structured"}) {
-      const FamilyScope scope(claims::kWell,
-                              family);  // rates over the measured h (evaluate_claims' default)
+      // Rates over the measured h (evaluate_claims' default).
+      const FamilyScope scope(claims::kWell, family);
       claims::Check c;
       def.check(data, c);
       shapes.push_back(family + ": " + to_string(c.verdict()));
