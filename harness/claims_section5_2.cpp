@@ -160,7 +160,7 @@ D5Finding d5_gaps(const Band& band, const std::string& lscm, SeriesOf series,
   }
   return {holds_everywhere,
           join(parts, "; ") + " (" + band.text() + " for normals or H" +
-              (holds_everywhere ? ")" : ": not enough either)"),
+              (holds_everywhere ? ")" : ": short on " + join(short_of, ", ") + ")"),
           short_of};
 }
 
