@@ -91,6 +91,30 @@ TEST(Readings, IrregularBumpSwapsTheFamilyInThePapersExperimentsOnly) {
   EXPECT_TRUE(apply_reading({beyond}, c).empty());
 }
 
+TEST(Readings, QrToleranceSetsEveryRingFitWithoutItsOwnTolerance) {
+  const Experiment e = parse(
+      "mesh bump-48 levels=1\nmethod lhf-4\nmethod lop-2\nmethod lscm-3\nmethod xu-2\n"
+      "method jet-2\nmethod meyer\nmethod lhf-2 qr-tol=1e-5 label=\"own\"\n");
+  const ReadingChoice& c = choice("qr-tolerance", "1e-8");
+  const auto changed = apply_reading({e}, c);
+  ASSERT_EQ(changed.size(), 1u);
+  const Experiment& x = changed[0];
+  ASSERT_EQ(x.methods.size(), e.methods.size());
+  EXPECT_EQ(x.meshes.size(), e.meshes.size());  // every mesh line: the methods change
+  const double adopted = EstimatorOptions{}.qr_tolerance;
+  EXPECT_EQ(adopted, 1e-3);
+  for (size_t i = 0; i < 3; ++i) EXPECT_EQ(x.methods[i].options.qr_tolerance, 1e-8) << i;
+  for (size_t i = 3; i < 6; ++i) EXPECT_EQ(x.methods[i].options.qr_tolerance, adopted) << i;
+  EXPECT_EQ(x.methods[6].options.qr_tolerance, 1e-5);  // its own stays
+  // Nothing to change: no ring fit, or a study beyond the paper.
+  EXPECT_TRUE(apply_reading({parse("mesh bump-48 levels=1\nmethod meyer\n")}, c).empty());
+  const Experiment beyond = parse_experiment_text(
+      "name b\ntitle b\nsection beyond\nmesh bump-48 levels=1\nmethod lhf-2\n"
+      "panel p \"p\" normal L2\n",
+      "b.exp");
+  EXPECT_TRUE(apply_reading({beyond}, c).empty());
+}
+
 TEST(Readings, NoisyRingsQuadraticOnlyGivesDegreesThreeAndFourTheirOwnRings) {
   const Experiment e = parse("noisy yes\nmesh torus-iso levels=2\nmethod lhf-2\nmethod lhf-4\n");
   const auto changed = apply_reading({e}, choice("noisy-rings", "quadratic"));
