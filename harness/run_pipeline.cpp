@@ -170,6 +170,8 @@ PipelineResult run_pipeline(const PipelineOptions& o) {
       if (stop()) return stopped(0);
     }
   }
+  // Commands of outside estimators found unable to run here, carried into the readings' runs.
+  std::map<std::string, std::string> unavailable;
   if (!o.report_only) {
     RunOptions ro;
     ro.threads = o.threads;
@@ -206,6 +208,7 @@ PipelineResult run_pipeline(const PipelineOptions& o) {
              ? format(", skipped %d (outside estimators that cannot run here)", done.skipped)
              : std::string()));
     if (!sharded) write_skipped(o.output, o.experiments, done.skipped_methods);
+    unavailable = done.unavailable;
   }
 
   // The alternative readings: the experiments each changes, in their own folder and case store
@@ -239,12 +242,14 @@ PipelineResult run_pipeline(const PipelineOptions& o) {
         ro.progress = o.progress;
         ro.shard = o.shard;
         ro.shard_count = o.shard_count;
+        ro.unavailable = unavailable;
         if (!sharded)
           ro.experiment_done = [folder](const Experiment& e, const std::vector<ErrorRow>& rows) {
             write_error_csv(folder + "/" + e.name + ".csv", rows);
           };
         const RunSummary done = run_experiments(changed, ro);
         if (done.interrupted || stop()) return stopped(done.reused + done.computed + done.skipped);
+        unavailable = done.unavailable;
       }
   }
   if (sharded) {

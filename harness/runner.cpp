@@ -255,7 +255,8 @@ RunSummary run_experiments(const std::vector<Experiment>& experiments, const Run
   MeshCache cache;
   RunSummary summary;
   // Commands of outside estimators that said they cannot run here, with their reason.
-  std::map<std::string, std::string> unavailable;
+  std::map<std::string, std::string>& unavailable = summary.unavailable;
+  unavailable = options.unavailable;
   const auto skip = [&](const RunCase& c, const std::string& reason) {
     ++summary.skipped;
     if (store) store->save_skipped(c, reason);

@@ -76,6 +76,10 @@ struct RunOptions {
   std::function<void(const Experiment&, const std::vector<CauseRow>&)> causes_done;
   /// Folder of the case store (case_store.h); empty = no store, every case is computed.
   std::string store_dir;
+  /// Commands of outside estimators already known not to run here (RunSummary::unavailable of
+  /// an earlier run of the same process, e.g. the adopted readings' before an alternative's),
+  /// with the reason: their cases are skipped without a try and without a second message.
+  std::map<std::string, std::string> unavailable;
   bool force = false;  ///< recompute every case even if stored (the store is rewritten)
   /// Polled after each case; true = stop there (the finished cases are stored).
   std::function<bool()> stop;
@@ -93,7 +97,10 @@ struct RunSummary {
   int computed = 0;                            ///< finished cases computed in this run
   int skipped = 0;                             ///< cases of outside estimators that cannot run here
   std::vector<SkippedMethod> skipped_methods;  ///< per (experiment, method), first-seen order
-  bool interrupted = false;                    ///< stopped before the last case
+  /// Commands of outside estimators that cannot run here, with the reason (those of
+  /// RunOptions::unavailable included).
+  std::map<std::string, std::string> unavailable;
+  bool interrupted = false;  ///< stopped before the last case
 };
 
 /// Expands the experiments into cases (experiment order, then mesh, level, method).
