@@ -385,6 +385,21 @@ Experiment parse_experiment(const std::string& path) {
   return parse_experiment_text(ss.str(), path);
 }
 
+namespace {
+// The subfolders of the experiments folder: the diagnostic experiments behind CLAIMS.md's Why
+// lines, and the full sweeps (read with `full` only).
+constexpr const char* kDiagnosticsFolder = "diagnostics";
+constexpr const char* kSweepsFolder = "sweeps";
+}  // namespace
+
+std::string experiment_source_name(const Experiment& e) {
+  const std::filesystem::path source(e.source);
+  const std::string folder = source.parent_path().filename().string();
+  std::string name = "experiments/";
+  if (folder == kDiagnosticsFolder || folder == kSweepsFolder) name.append(folder).append("/");
+  return name.append(source.filename().string());
+}
+
 std::vector<std::string> list_experiment_files(const std::string& directory, bool full) {
   std::vector<std::string> out;
   std::error_code ec;
@@ -398,10 +413,8 @@ std::vector<std::string> list_experiment_files(const std::string& directory, boo
   };
   add_folder(directory);
   if (ec) throw InputError(directory + ": cannot list experiments (" + ec.message() + ")");
-  // The diagnostic experiments behind CLAIMS.md's Why lines (experiments/diagnostics/), and with
-  // `full` the full sweeps (experiments/sweeps/).
-  for (const char* sub : {"diagnostics", "sweeps"}) {
-    if (std::string(sub) == "sweeps" && !full) continue;
+  for (const char* sub : {kDiagnosticsFolder, kSweepsFolder}) {
+    if (sub == kSweepsFolder && !full) continue;
     const std::filesystem::path folder = std::filesystem::path(directory) / sub;
     if (std::filesystem::is_directory(folder, ec)) add_folder(folder);
   }

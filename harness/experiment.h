@@ -158,4 +158,8 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
 /// `full`, then those of its `sweeps` subfolder (the full sweeps, `curvbench run --full`).
 std::vector<std::string> list_experiment_files(const std::string& directory, bool full = false);
 
+/// How REPORT.md names an experiment's file: "experiments/<file>", or "experiments/<sub>/<file>"
+/// for a file of the subfolders list_experiment_files reads (diagnostics/, sweeps/).
+std::string experiment_source_name(const Experiment& e);
+
 }  // namespace curvbench

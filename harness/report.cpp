@@ -344,7 +344,7 @@ std::string write_report(const std::vector<Experiment>& experiments, const Repor
        << (e.section == "beyond" ? std::string(" (beyond the paper)")
                                  : std::string(" (paper §").append(e.section).append(")"))
        << "\n\n"
-       << "Source: `experiments/" << fs::path(e.source).filename().string() << "`.\n\n"
+       << "Source: `" << experiment_source_name(e) << "`.\n\n"
        << outside_method_notes(e, dir);
     for (const auto& panel : e.panels) {
       md << "### " << panel.caption << "\n\n";

@@ -402,9 +402,8 @@ bool append_sweeps_section(std::ostringstream& md, const std::vector<Experiment>
             "normal (meshgen/noise.h).\n\n";
       header = true;
     }
-    md << "### " << e.name << ": " << e.title << "\n\nSource: `"
-       << fs::path(e.source).parent_path().filename().string() << "/"
-       << fs::path(e.source).filename().string() << "`.\n\n";
+    md << "### " << e.name << ": " << e.title << "\n\nSource: `" << experiment_source_name(e)
+       << "`.\n\n";
     if (e.sweep == "radius") {
       const std::vector<BestRadius> best = best_radii(rows);
       all_best.insert(all_best.end(), best.begin(), best.end());

@@ -382,3 +382,23 @@ TEST(ResultsTable, CsvRoundTripAndRates) {
 
 }  // namespace
 }  // namespace curvbench
+
+namespace curvbench {
+namespace {
+
+// REPORT.md names each shipped experiment's file by its path in the repository, subfolder
+// included (the diagnostics were named as if they were top-level files).
+TEST(Experiment, SourceNamesArePathsInTheRepository) {
+  const std::string root = std::string(CURVBENCH_SOURCE_DIR) + "/";
+  int diagnostics = 0;
+  for (const auto& f : list_experiment_files(root + "experiments", true)) {
+    const Experiment e = parse_experiment(f);
+    const std::string name = experiment_source_name(e);
+    EXPECT_TRUE(std::filesystem::is_regular_file(root + name)) << f << " -> " << name;
+    diagnostics += name.rfind("experiments/diagnostics/", 0) == 0;
+  }
+  EXPECT_GE(diagnostics, 6);
+}
+
+}  // namespace
+}  // namespace curvbench
