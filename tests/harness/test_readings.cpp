@@ -22,9 +22,9 @@ const ReadingChoice& choice(const std::string& reading, const std::string& name)
   throw std::out_of_range(reading + "=" + name);
 }
 
-Experiment parse(const std::string& body) {
-  return parse_experiment_text("name t\ntitle t\nsection 5\n" + body + "panel p \"p\" normal L2\n",
-                               "t.exp");
+Experiment parse(const std::string& body, const std::string& section = "5") {
+  return parse_experiment_text(
+      "name t\ntitle t\nsection " + section + "\n" + body + "panel p \"p\" normal L2\n", "t.exp");
 }
 
 TEST(Readings, EveryReadingHasTheAdoptedChoiceFirstAndItChangesNothing) {
@@ -58,37 +58,32 @@ TEST(Readings, IsoLevelsShiftTheIsosurfaceToriOnly) {
                   .empty());
 }
 
-TEST(Readings, WellShapedTorusSwapsTheFamilyAndNamesItForTheClaims) {
-  const Experiment e = parse(
-      "mesh torus-unstructured levels=1,2\nmesh torus-iso-projected "
-      "levels=2,3\nmethod xu-2\n");
-  const ReadingChoice& c = choice("well-shaped-torus", "min-valence-5");
-  const auto changed = apply_reading({e}, c);
+// A family-swapping reading: of an experiment with `family` and `other` mesh lines, it keeps the
+// `family` line, renamed `by` with the same levels (the `other` rows stay the adopted run's), and
+// tells the claims to read `by` for `family`.
+void expect_family_swap(const ReadingChoice& c, const std::string& family, const std::string& other,
+                        const std::string& by) {
+  const auto changed = apply_reading(
+      {parse("mesh " + family + " levels=1,2\nmesh " + other + " levels=2,3\nmethod lhf-4\n")}, c);
   ASSERT_EQ(changed.size(), 1u);
   ASSERT_EQ(changed[0].meshes.size(), 1u);
-  EXPECT_EQ(changed[0].meshes[0].family, "torus-unstructured-minval5");
+  EXPECT_EQ(changed[0].meshes[0].family, by);
   EXPECT_EQ(changed[0].meshes[0].levels, (std::vector<int>{1, 2}));
-  EXPECT_EQ(c.substitute.family, "torus-unstructured");
-  EXPECT_EQ(c.substitute.by, "torus-unstructured-minval5");
+  EXPECT_EQ(c.substitute.family, family);
+  EXPECT_EQ(c.substitute.by, by);
+}
+
+TEST(Readings, WellShapedTorusSwapsTheFamilyAndNamesItForTheClaims) {
+  expect_family_swap(choice("well-shaped-torus", "min-valence-5"), "torus-unstructured",
+                     "torus-iso-projected", "torus-unstructured-minval5");
 }
 
 TEST(Readings, IrregularBumpSwapsTheFamilyInThePapersExperimentsOnly) {
-  const Experiment paper =
-      parse("mesh bump-irregular levels=1,2\nmesh bump-48 levels=1,2\nmethod lhf-4\n");
   const ReadingChoice& c = choice("irregular-bump", "delaunay-refined");
-  const auto changed = apply_reading({paper}, c);
-  ASSERT_EQ(changed.size(), 1u);
-  ASSERT_EQ(changed[0].meshes.size(), 1u);  // bump-48's rows stay the adopted run's
-  EXPECT_EQ(changed[0].meshes[0].family, "bump-unstructured");
-  EXPECT_EQ(changed[0].meshes[0].levels, (std::vector<int>{1, 2}));
-  EXPECT_EQ(c.substitute.family, "bump-irregular");
-  EXPECT_EQ(c.substitute.by, "bump-unstructured");
+  expect_family_swap(c, "bump-irregular", "bump-48", "bump-unstructured");
   // A study beyond the paper keeps the adopted mesh.
-  const Experiment beyond = parse_experiment_text(
-      "name b\ntitle b\nsection beyond\nmesh bump-irregular levels=1\nmethod lhf-2\n"
-      "panel p \"p\" normal L2\n",
-      "b.exp");
-  EXPECT_TRUE(apply_reading({beyond}, c).empty());
+  EXPECT_TRUE(
+      apply_reading({parse("mesh bump-irregular levels=1\nmethod lhf-2\n", "beyond")}, c).empty());
 }
 
 TEST(Readings, QrToleranceSetsEveryRingFitWithoutItsOwnTolerance) {
@@ -108,11 +103,7 @@ TEST(Readings, QrToleranceSetsEveryRingFitWithoutItsOwnTolerance) {
   EXPECT_EQ(x.methods[6].options.qr_tolerance, 1e-5);  // its own stays
   // Nothing to change: no ring fit, or a study beyond the paper.
   EXPECT_TRUE(apply_reading({parse("mesh bump-48 levels=1\nmethod meyer\n")}, c).empty());
-  const Experiment beyond = parse_experiment_text(
-      "name b\ntitle b\nsection beyond\nmesh bump-48 levels=1\nmethod lhf-2\n"
-      "panel p \"p\" normal L2\n",
-      "b.exp");
-  EXPECT_TRUE(apply_reading({beyond}, c).empty());
+  EXPECT_TRUE(apply_reading({parse("mesh bump-48 levels=1\nmethod lhf-2\n", "beyond")}, c).empty());
 }
 
 TEST(Readings, NoisyRingsQuadraticOnlyGivesDegreesThreeAndFourTheirOwnRings) {
