@@ -1,5 +1,6 @@
 #include "meshgen/bump_grid.h"
 
+#include <algorithm>
 #include <string>
 
 #include "core/errors.h"
@@ -15,6 +16,15 @@ void check_bump_level(const std::string& family, int level) {
   if (level < 1 || level > max_bump_level())
     throw UsageError(family + ": level " + std::to_string(level) + " out of range [1, " +
                      std::to_string(max_bump_level()) + "]");
+}
+
+FaceMatrix canonical_faces(std::vector<std::array<int, 3>> ccw) {
+  for (auto& t : ccw) std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+  std::sort(ccw.begin(), ccw.end());
+  FaceMatrix F(static_cast<Eigen::Index>(ccw.size()), 3);
+  for (size_t k = 0; k < ccw.size(); ++k)
+    F.row(static_cast<Eigen::Index>(k)) << ccw[k][0], ccw[k][1], ccw[k][2];
+  return F;
 }
 
 GeneratedMesh lift_onto_bump(const PlanarPoints& xy, FaceMatrix faces, const std::string& family,

@@ -10,7 +10,9 @@
 //   corners valence 3; non-corner boundary vertices valence 5 (i+j even) or 3 (odd).
 #pragma once
 
+#include <array>
 #include <string>
+#include <vector>
 
 #include "core/types.h"
 #include "meshgen/generated_mesh.h"
@@ -28,6 +30,11 @@ void check_bump_level(const std::string& family, int level);
 constexpr int max_bump_level() {
   return 5;
 }  // N = 256
+
+/// Triangles given counter-clockwise in xy as an m x 3 face matrix in canonical order: each row
+/// rotated (orientation kept) so that its smallest index leads, rows sorted; the faces then depend
+/// only on the triangulation, not on the order a library lists them in.
+FaceMatrix canonical_faces(std::vector<std::array<int, 3>> ccw);
 
 /// Lifts planar points xy (n x 2, in [0,1]^2) onto the Gaussian bump and wraps them with `faces`
 /// (m x 3, ccw in xy) into a GeneratedMesh (exact_points == vertices, surface = bump).

@@ -65,19 +65,11 @@ FaceMatrix delaunay_triangulation(const PlanarPoints& xy) {
     throw InputError("delaunay_triangulation: " + std::to_string(n - dt.number_of_vertices()) +
                      " duplicate point(s)");
 
-  std::vector<std::array<int, 3>> faces;
+  std::vector<std::array<int, 3>> faces;  // CGAL's finite faces are ccw
   faces.reserve(dt.number_of_faces());
-  for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
-    std::array<int, 3> t{f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
-    // CGAL's finite faces are ccw; rotate (orientation-preserving) so the smallest index leads.
-    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-    faces.push_back(t);
-  }
-  std::sort(faces.begin(), faces.end());
-  FaceMatrix F(static_cast<Eigen::Index>(faces.size()), 3);
-  for (size_t k = 0; k < faces.size(); ++k)
-    F.row(static_cast<Eigen::Index>(k)) << faces[k][0], faces[k][1], faces[k][2];
-  return F;
+  for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)
+    faces.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
+  return canonical_faces(std::move(faces));
 }
 
 GeneratedMesh bump_irregular(int level, std::uint64_t seed) {

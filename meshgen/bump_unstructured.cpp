@@ -73,19 +73,12 @@ GeneratedMesh bump_unstructured(int level) {
     index[vertices[i]] = static_cast<int>(i);
     xy.row(static_cast<Eigen::Index>(i)) << vertices[i]->point().x(), vertices[i]->point().y();
   }
-  std::vector<std::array<int, 3>> faces;
+  std::vector<std::array<int, 3>> faces;  // CGAL's finite faces are ccw
   faces.reserve(cdt.number_of_faces());
-  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
-    std::array<int, 3> t{index.at(f->vertex(0)), index.at(f->vertex(1)), index.at(f->vertex(2))};
-    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());  // ccw kept
-    faces.push_back(t);
-  }
-  std::sort(faces.begin(), faces.end());
-  FaceMatrix F(static_cast<Eigen::Index>(faces.size()), 3);
-  for (size_t k = 0; k < faces.size(); ++k)
-    F.row(static_cast<Eigen::Index>(k)) << faces[k][0], faces[k][1], faces[k][2];
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    faces.push_back({index.at(f->vertex(0)), index.at(f->vertex(1)), index.at(f->vertex(2))});
   return lift_onto_bump(
-      xy, std::move(F), "bump-unstructured", level,
+      xy, canonical_faces(std::move(faces)), "bump-unstructured", level,
       "bump-unstructured level " + std::to_string(level) +
           ": Gaussian bump a=81/16 on [0,1]^2, boundary in N=" + std::to_string(N) +
           " segments per side, CGAL Delaunay refinement (angle 30 deg, edges "
