@@ -188,6 +188,16 @@ double Series::rate_h() const {
 double Series::rate_halving() const {
   return level_halving_rate(first().e, last().e, first().level, last().level);
 }
+std::vector<double> Series::pair_rates() const {
+  std::vector<double> out;
+  for (size_t i = 1; i < points.size(); ++i) {
+    const Point &a = points[i - 1], &b = points[i];
+    out.push_back(rate_formula() == RateFormula::measured_h
+                      ? convergence_rate(a.e, b.e, a.h, b.h)
+                      : level_halving_rate(a.e, b.e, a.level, b.level));
+  }
+  return out;
+}
 const Point* Series::at(int level) const {
   for (const auto& p : points)
     if (p.level == level) return &p;

@@ -80,6 +80,8 @@ struct Series {
   double rate_h() const;
   /// log2(e_first/e_last)/(level_last - level_first), the paper's formula.
   double rate_halving() const;
+  /// The rate of rate_formula() between each pair of consecutive levels present, finest last.
+  std::vector<double> pair_rates() const;
   const Point* at(int level) const;
   std::string label() const { return family + " " + method + " " + quantity + " " + norm; }
   /// "errors at levels 1-4: a, b, c, d; level-to-level rates r12, r23, r34"

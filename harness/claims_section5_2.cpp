@@ -203,18 +203,11 @@ D5Finding d5_interior(const Data& d, const Band& band) {
 // The gap between the rates of the finest pair of levels, one level finer than the paper's four
 // (diag-d5-level5), with each method's level-to-level H rates.
 D5Finding d5_levels(const Data& d, const Band& band) {
-  // The rate of each pair of consecutive levels (rate_formula()), finest last.
+  // The level-to-level rates over levels 1-5 (none when the diagnostic is missing).
   auto pair_rates = [&](const std::string& fam, const std::string& m, const char* q) {
-    std::vector<double> out;
     Check scratch;
     const Series* s = d.find(scratch, query(kD5Level5Diag, fam, m, q, "L2"));
-    if (!s || s->points.size() < 5) return out;
-    for (size_t i = 1; i < s->points.size(); ++i) {
-      Series pair = *s;
-      pair.points = {s->points[i - 1], s->points[i]};
-      out.push_back(pair.rate());
-    }
-    return out;
+    return s && s->points.size() >= 5 ? s->pair_rates() : std::vector<double>{};
   };
   D5Finding f = d5_gaps(
       band, "LSCM-4",
