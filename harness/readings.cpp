@@ -31,26 +31,20 @@ bool shift_iso_levels_down(Experiment& e) {
   });
 }
 
-// The well-shaped torus without valence-4 vertices in place of torus-unstructured.
-constexpr const char* kMinValence5 = "torus-unstructured-minval5";
-bool well_shaped_without_valence_4(Experiment& e) {
-  return keep_changed_meshes(e, [](ExperimentMesh& m) {
-    if (m.family != "torus-unstructured") return false;
-    m.family = kMinValence5;
-    return true;
-  });
-}
-
-// The Delaunay-refined irregular bump in place of the jittered grid, in the experiments of the
-// paper's sections (the studies beyond the paper keep bump-irregular).
-constexpr const char* kBumpUnstructured = "bump-unstructured";
-bool irregular_bump_delaunay_refined(Experiment& e) {
-  if (e.section == "beyond") return false;
-  return keep_changed_meshes(e, [](ExperimentMesh& m) {
-    if (m.family != "bump-irregular") return false;
-    m.family = kBumpUnstructured;
-    return true;
-  });
+// A choice that reads another mesh family: the experiments run `swap.by` in place of
+// `swap.family` (of the paper's sections only, with `paper_only`; the studies beyond the paper
+// keep theirs), and the claims read its rows for `swap.family`.
+ReadingChoice family_swap(std::string name, std::string description, FamilySubstitute swap,
+                          bool paper_only) {
+  auto apply = [swap, paper_only](Experiment& e) {
+    if (paper_only && e.section == "beyond") return false;
+    return keep_changed_meshes(e, [&swap](ExperimentMesh& m) {
+      if (m.family != swap.family) return false;
+      m.family = swap.by;
+      return true;
+    });
+  };
+  return {std::move(name), std::move(description), apply, std::move(swap)};
 }
 
 // The QR rank tolerance 1e-8 in place of 1e-3 for every fit of the paper's weighted least-squares
@@ -134,11 +128,10 @@ const std::vector<Reading>& readings() {
          "torus-unstructured: CGAL's Delaunay refinement as it comes (1.6% valence 4)",
          unchanged,
          {}},
-        {"min-valence-5",
-         "torus-unstructured-minval5: the same meshes with every valence-4 vertex removed by edge "
-         "flips",
-         well_shaped_without_valence_4,
-         {"torus-unstructured", kMinValence5}}}},
+        family_swap("min-valence-5",
+                    "torus-unstructured-minval5: the same meshes with every valence-4 vertex "
+                    "removed by edge flips",
+                    {"torus-unstructured", "torus-unstructured-minval5"}, false)}},
       {"qr-tolerance",
        "The tolerance of the safeguarded QR",
        "§4.3.2: columns are removed from the right while the Vandermonde matrix has \"a large "
@@ -157,11 +150,10 @@ const std::vector<Reading>& readings() {
          "bump-irregular: the 4-8 mesh's grid points jittered by up to h/4, Delaunay-triangulated",
          unchanged,
          {}},
-        {"delaunay-refined",
-         "bump-unstructured: CGAL's Delaunay refinement of the square (angle 30 deg), as the "
-         "well-shaped torus",
-         irregular_bump_delaunay_refined,
-         {"bump-irregular", kBumpUnstructured}}}},
+        family_swap("delaunay-refined",
+                    "bump-unstructured: CGAL's Delaunay refinement of the square (angle 30 deg), "
+                    "as the well-shaped torus",
+                    {"bump-irregular", "bump-unstructured"}, true)}},
   };
   return table;
 }
