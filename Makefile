@@ -29,7 +29,7 @@ FUZZ_SECONDS ?= 60
 FUZZ_CXX ?= clang++
 SLURM_EXPERIMENTS ?= tests/cluster/experiments
 
-.PHONY: sweeps all deps configure build test experiments bench clean format test-sanitize fuzz install realmeshes \
+.PHONY: site sweeps all deps configure build test experiments bench clean format test-sanitize fuzz install realmeshes \
 	test-slurm
 
 all: build
@@ -54,6 +54,11 @@ experiments: build
 
 bench: build
 	@bash tools/bench.sh $(BUILD)
+
+# The results site (results/site/index.html) re-rendered from the committed CSVs in seconds,
+# computing nothing (`curvbench report --site-only`); `make experiments` writes it too.
+site: build
+	@$(BUILD)/curvbench report --site-only
 
 # The full sweeps (experiments/sweeps/: the radius-scaling study, docs/algorithms.md §15; the
 # radius and noise sweeps at a fixed mesh, of which `make experiments` runs trimmed versions)

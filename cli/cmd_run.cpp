@@ -91,22 +91,6 @@ struct RunArgs {
   int table4_max = 256;
 };
 
-// With `full`, the full sweeps of <dir>/sweeps/ join; one named like an earlier experiment (the
-// trimmed sweep of the default run) replaces it.
-std::vector<Experiment> load_all(const std::string& dir, bool full) {
-  std::vector<Experiment> out;
-  for (const auto& f : list_experiment_files(dir, full)) {
-    Experiment e = parse_experiment(f);
-    const auto same =
-        std::find_if(out.begin(), out.end(), [&](const Experiment& o) { return o.name == e.name; });
-    if (same != out.end())
-      *same = std::move(e);
-    else
-      out.push_back(std::move(e));
-  }
-  return out;
-}
-
 // Parses "K/N" (1 <= K <= N).
 std::pair<int, int> parse_shard(const std::string& s) {
   const std::string bad = "--shard " + s + ": expected K/N with 1 <= K <= N, e.g. 2/8";
@@ -176,7 +160,7 @@ Command add_run_command(CLI::App& app) {
       "the outputs instead of the current time, so that two runs give byte-identical files.");
 
   return [args]() {
-    auto available = load_all(args->experiments_dir, args->full);
+    auto available = load_experiments(args->experiments_dir, args->full);
     if (args->list) {
       for (const auto& e : available)
         std::printf("%-10s  %s (paper §%s)  [%s]\n", e.name.c_str(), e.title.c_str(),

@@ -421,4 +421,18 @@ std::vector<std::string> list_experiment_files(const std::string& directory, boo
   return out;
 }
 
+std::vector<Experiment> load_experiments(const std::string& dir, bool full) {
+  std::vector<Experiment> out;
+  for (const auto& f : list_experiment_files(dir, full)) {
+    Experiment e = parse_experiment(f);
+    const auto same =
+        std::find_if(out.begin(), out.end(), [&](const Experiment& o) { return o.name == e.name; });
+    if (same != out.end())
+      *same = std::move(e);
+    else
+      out.push_back(std::move(e));
+  }
+  return out;
+}
+
 }  // namespace curvbench

@@ -162,4 +162,9 @@ std::vector<std::string> list_experiment_files(const std::string& directory, boo
 /// for a file of the subfolders list_experiment_files reads (diagnostics/, sweeps/).
 std::string experiment_source_name(const Experiment& e);
 
+/// Every experiment of the .exp files of `dir` (list_experiment_files); with `full`, the full
+/// sweeps of <dir>/sweeps/ join, one named like an earlier experiment (the trimmed sweep of the
+/// default run) replacing it.
+std::vector<Experiment> load_experiments(const std::string& dir, bool full = false);
+
 }  // namespace curvbench

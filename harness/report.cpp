@@ -62,15 +62,6 @@ std::string read_text(const std::string& path) {
   return fs::exists(path) ? read_file(path) : "";
 }
 
-// Header then rows of a results CSV; empty when the file does not exist (not generated yet).
-std::vector<std::vector<std::string>> read_simple_csv(const std::string& path) {
-  if (!fs::exists(path)) return {};
-  CsvTable t = read_csv_table(path);
-  std::vector<std::vector<std::string>> out{std::move(t.header)};
-  for (auto& row : t.rows) out.push_back(std::move(row));
-  return out;
-}
-
 std::string family_caption(const std::string& family) {
   try {
     return mesh_family(family).caption;
@@ -144,57 +135,92 @@ void write_table4_csv(const std::string& path, int max_grid_points) {
   write_file_atomic(path, out.str());
 }
 
-bool render_plot(const std::string& base, const std::string& title,
-                 const std::vector<ErrorRow>& rows, const PlotAxis& x_axis) {
+std::vector<report::Series> error_series(const std::vector<ErrorRow>& rows, bool rates,
+                                         bool slopes) {
   std::vector<const ErrorRow*> ptrs;
   for (const auto& r : rows) ptrs.push_back(&r);
   const auto series = series_of(ptrs);
+  std::vector<std::string> labels;
+  for (const auto& s : series) labels.push_back(s.method);
+  const std::vector<PlotStyle> styles = plot_styles(labels);  // one look per method everywhere
+  std::vector<report::Series> out;
+  std::set<int> orders;
+  double h0 = 0.0, e0 = 0.0, h_last = INFINITY;
+  for (size_t i = 0; i < series.size(); ++i) {
+    report::Series se;
+    const double rate = series_rate(series[i]);
+    se.label = series[i].method + (rates ? " (rate " + two_decimals(rate) + ")" : "");
+    se.color = styles[i].colour;
+    se.marker = styles[i].marker;
+    se.dash = styles[i].dash;
+    for (const auto& [level, r] : series[i].by_level) {
+      if (!std::isfinite(r->error) || r->error <= 0) continue;
+      se.points.push_back({r->h, r->error,
+                           "level " + std::to_string(level) + ", " + std::to_string(r->vertices) +
+                               " vertices, " + r->family +
+                               (r->noise != "none" ? ", noise " + r->noise : "")});
+      if (r->h >= h0) {
+        e0 = r->h > h0 ? r->error : std::max(e0, r->error);
+        h0 = r->h;
+      }
+      h_last = std::min(h_last, r->h);
+    }
+    if (std::isfinite(rate)) orders.insert(std::clamp(static_cast<int>(std::lround(rate)), 1, 4));
+    out.push_back(std::move(se));
+  }
+  // Dashed reference slopes O(h^p) for the orders the rates round to, anchored at half the
+  // largest error at the coarsest h.
+  if (slopes && h0 > 0 && e0 > 0 && std::isfinite(h_last) && h_last < h0)
+    for (int p : orders) {
+      report::Series ref;
+      ref.label = "O(h^" + std::to_string(p) + ")";
+      ref.color = "#808080";
+      ref.marker = 0;
+      ref.dash = 2;
+      ref.points = {{h0, 0.5 * e0, "reference slope"},
+                    {h_last, 0.5 * e0 * std::pow(h_last / h0, p), "reference slope"}};
+      out.push_back(std::move(ref));
+    }
+  return out;
+}
+
+bool render_plot_files(report::Plot& plot, const std::string& results_dir,
+                       const std::string& base) {
   std::ostringstream gp;
-  gp << "set logscale xy\nset format y '10^{%L}'\nset xlabel '" << x_axis.label << "'\n"
-     << "set ylabel 'error'\nset key outside right top\nset grid\n"
-     << (x_axis.reversed ? "set xrange [*:*] reverse\n" : "")
+  gp << (plot.log_x && plot.log_y ? "set logscale xy\n"
+         : plot.log_x             ? "set logscale x\n"
+         : plot.log_y             ? "set logscale y\n"
+                                  : "")
+     << (plot.log_y ? "set format y '10^{%L}'\n" : "") << "set xlabel '" << plot.x_label << "'\n"
+     << "set ylabel '" << plot.y_label << "'\nset key outside right top\nset grid\n"
+     << (plot.reverse_x ? "set xrange [*:*] reverse\n" : "")
      // The bottom margin holds the x label and, below it, the provenance footer.
      << "set bmargin 5\n"
      << "set label 1 \"" << build_info() << ", " << utc_timestamp()
      << "\" at screen 0.01, screen 0.015 font ',8' noenhanced\n"
-     << "set title \"" << title << "\" noenhanced\n";
-  for (size_t i = 0; i < series.size(); ++i) {
+     << "set title \"" << plot.title << "\" noenhanced\n";
+  std::ostringstream cmd;
+  cmd << "plot ";
+  int drawn = 0;
+  for (size_t i = 0; i < plot.series.size(); ++i) {
+    const report::Series& s = plot.series[i];
     gp << "$S" << i << " << EOD\n";
-    for (const auto& [level, r] : series[i].by_level)
-      if (std::isfinite(r->error) && r->error > 0)
-        gp << format_double(r->h) << ' ' << format_double(r->error) << "\n";
+    for (const report::Point& p : s.points)
+      if (std::isfinite(p.x) && std::isfinite(p.y) && (!plot.log_y || p.y > 0))
+        gp << format_double(p.x) << ' ' << format_double(p.y) << "\n";
     gp << "EOD\n";
+    const std::string look = "lc rgb '" + (s.color.empty() ? std::string("#000000") : s.color) +
+                             "' dt " + std::to_string(s.dash);
+    cmd << (drawn++ ? ", " : "") << "$S" << i << " using 1:2 with "
+        << (s.marker == 0   ? "lines lw 1 "
+            : s.points_only ? "points ps 1.2 pt " + std::to_string(s.marker) + " "
+                            : "linespoints lw 2 ps 1.2 pt " + std::to_string(s.marker) + " ")
+        << look << " title \"" << s.label << "\" noenhanced";
   }
-  std::vector<std::string> labels;
-  for (const auto& s : series) labels.push_back(s.method);
-  const std::vector<PlotStyle> styles = plot_styles(labels);  // one look per method everywhere
-  std::ostringstream plot;
-  plot << "plot ";
-  for (size_t i = 0; i < series.size(); ++i) {
-    const double rate = series_rate(series[i]);
-    plot << (i ? ", " : "") << "$S" << i << " using 1:2 with linespoints lw 2 ps 1.2 "
-         << gnuplot_style(styles[i]) << " title \"" << series[i].method
-         << (x_axis.rate_in_legend ? " (rate " + two_decimals(rate) + ")" : "") << "\" noenhanced";
-  }
-  // Dashed reference slopes O(h^p) for the orders the panel's rates round to (1-4), anchored at
-  // half the largest error at the coarsest h.
-  std::set<int> orders;
-  double h0 = 0.0, e0 = 0.0;
-  for (const auto& sr : series) {
-    const double rate = series_rate(sr);
-    if (std::isfinite(rate)) orders.insert(std::clamp(static_cast<int>(std::lround(rate)), 1, 4));
-    for (const auto& [level, r] : sr.by_level)
-      if (std::isfinite(r->error) && r->error > 0 && r->h >= h0) {
-        e0 = r->h > h0 ? r->error : std::max(e0, r->error);
-        h0 = r->h;
-      }
-  }
-  if (x_axis.reference_slopes && h0 > 0 && e0 > 0)
-    for (int p : orders)
-      plot << ", " << format_double(0.5 * e0) << "*(x/" << format_double(h0) << ")**" << p
-           << " with lines dt 2 lw 1 lc rgb '#808080' title 'O(h^" << p << ")'";
-  plot << "\n";
-  return run_gnuplot(base, gp.str(), plot.str());
+  cmd << "\n";
+  if (!run_gnuplot(results_dir + "/plots/" + base, gp.str(), cmd.str())) return false;
+  plot.image = "plots/" + base + ".png";
+  return true;
 }
 
 bool run_gnuplot(const std::string& base, const std::string& setup, const std::string& plot) {
@@ -249,115 +275,132 @@ std::string outside_method_notes(const Experiment& e, const std::string& results
   return out.empty() ? out : out + "\n";
 }
 
-std::string write_report(const std::vector<Experiment>& experiments, const ReportOptions& options) {
+namespace {
+
+report::Section table2_section(const std::string& dir) {
+  report::Section s{
+      "table2",
+      "Table 2. Numbers of coefficients in degree-d fittings versus numbers of points "
+      "in typical (d+1)/2 rings",
+      {}};
+  const std::string csv = dir + "/table2.csv";
+  if (!fs::exists(csv)) return s;
+  const CsvTable t = read_csv_table(csv);
+  s.text("Interior vertex of a regular valence-6 mesh (the structured torus), centre included.");
+  report::Table tab;
+  tab.id = "table2";
+  tab.columns = {"degree (d)"};
+  std::vector<report::Cell> coeffs{"#coeffs."}, ring{"ring"}, ours{"#points (ours)"},
+      paper{"#points (paper)"};
+  const size_t cd = t.col("degree"), cc = t.col("coefficients"), cr = t.col("ring"),
+               cp = t.col("points_with_centre"), cq = t.col("paper_points");
+  for (size_t i = 0; i < t.rows.size(); ++i) {
+    tab.columns.push_back(t.text(i, cd));
+    coeffs.push_back(report::Cell::number(t.number(i, cc), t.text(i, cc)));
+    ring.push_back(report::Cell::number(t.number(i, cr), t.text(i, cr)));
+    ours.push_back(report::Cell::number(t.number(i, cp), t.text(i, cp)));
+    paper.push_back(report::Cell::number(t.number(i, cq), t.text(i, cq)));
+  }
+  tab.add(coeffs).add(ring).add(ours).add(paper);
+  return s.table(std::move(tab));
+}
+
+report::Section table4_section(const std::string& dir) {
+  report::Section s{
+      "table4", "Table 4. Input position errors of torus meshes extracted by marching cubes", {}};
+  const std::string csv = dir + "/table4.csv";
+  if (!fs::exists(csv)) return s;
+  const CsvTable t = read_csv_table(csv);
+  s.text(
+      "Signed distance function of the torus (R = 1, r = 0.3) sampled at n points per axis "
+      "on [-1.5, 1.5]^3, one vertex per sign-changing grid edge (docs/algorithms.md §10.1(a))."
+      " The paper's \"average edge length\" column equals half the true mean edge length "
+      "(see the last two columns).");
+  report::Table tab;
+  tab.id = "table4";
+  tab.columns = {"n",
+                 "#verts (ours / paper)",
+                 "L2 (ours / paper)",
+                 "Linf (ours / paper)",
+                 "rate L2",
+                 "rate Linf",
+                 "mean edge length",
+                 "its half / paper's column"};
+  const size_t cg = t.col("grid_points"), cv = t.col("vertices"), ch = t.col("mean_edge_length"),
+               cr = t.col("rms_error"), cm = t.col("max_error");
+  for (size_t i = 0; i < t.rows.size(); ++i) {
+    const double h = t.number(i, ch), rms = t.number(i, cr), mx = t.number(i, cm);
+    report::Cell rate_l2("-"), rate_inf("-");
+    if (i > 0) {
+      const double r2 = std::log2(t.number(i - 1, cr) / rms);
+      const double ri = std::log2(t.number(i - 1, cm) / mx);
+      rate_l2 = report::Cell::number(r2, two_decimals(r2));
+      rate_inf = report::Cell::number(ri, two_decimals(ri));
+    }
+    const paper::Table4Row* p = i < paper::kTable4.size() ? &paper::kTable4[i] : nullptr;
+    tab.add({report::Cell::number(t.number(i, cg), t.text(i, cg) + "^3"),
+             report::Cell::number(t.number(i, cv),
+                                  t.text(i, cv) + " / " + (p ? std::to_string(p->vertices) : "-")),
+             report::Cell::number(rms, sci(rms) + " / " + (p ? paper_sci(p->l2) : "-")),
+             report::Cell::number(mx, sci(mx) + " / " + (p ? paper_sci(p->linf) : "-")), rate_l2,
+             rate_inf, report::Cell::number(h, sci(h, 3)),
+             report::Cell::number(0.5 * h,
+                                  sci(0.5 * h, 2) + " / " + (p ? paper_g(p->edge_column) : "-"))});
+  }
+  return s.table(std::move(tab));
+}
+
+// A section still written as markdown by its own writer: one Text block.
+report::Section markdown_section(std::string id, std::string markdown) {
+  report::Section s;
+  s.id = std::move(id);
+  s.text(std::move(markdown));
+  return s;
+}
+
+// The vertex sets of the rows, in first-seen order.
+std::vector<std::string> vertex_sets_of(const std::vector<const ErrorRow*>& rows) {
+  std::vector<std::string> out;
+  for (const ErrorRow* r : rows)
+    if (std::find(out.begin(), out.end(), r->vertex_set) == out.end()) out.push_back(r->vertex_set);
+  return out;
+}
+
+// One experiment: per panel and mesh (and vertex set), the table of errors by level with both
+// rates, and the panel's plot; then the errors by cause.
+bool experiment_section(const Experiment& e, const ReportOptions& options, int& missing_plots,
+                        report::Section& s) {
   const std::string dir = options.results_dir;
-  fs::create_directories(fs::path(dir) / "plots");
-  std::ostringstream md;
-  md << "# curvbench results\n\n"
-     << "Reproduction of the numerical experiments of Wang, Jiao et al., *An Analysis and "
-        "Comparison of Parameterization-Based Computation of Differential Quantities for "
-        "Discrete Surfaces* (CAGD 2009), §5.\n\n"
-     << "Generated by " << build_info() << " on " << utc_timestamp()
-     << ". Regenerate with `make experiments`; the paper's claims are checked in "
-        "[CLAIMS.md](CLAIMS.md).\n\n"
-     << "Errors (paper §5): normals are absolute (RMS = L2, max = Linf of |n~ - n|); "
-        "curvatures are relative norm ratios |e|/|k|. Each table lists the error per mesh level "
-        "and, at the end of the row, two average convergence rates: ours, log(e1/eN)/log(h1/hN) "
-        "with the measured mean edge length h, and the paper's, (1/(N-1)) log2(e1/eN), which "
-        "assumes that each level halves h. Xu-2 on open surfaces is scored over interior "
-        "vertices only (paper §5.2).\n\n";
-
-  // Table 2.
-  const auto t2 = read_simple_csv(dir + "/table2.csv");
-  if (t2.size() > 1) {
-    md << "## Table 2. Numbers of coefficients in degree-d fittings versus numbers of points in "
-          "typical (d+1)/2 rings\n\n"
-       << "Interior vertex of a regular valence-6 mesh (the structured torus), centre included."
-          "\n\n| degree (d) | ";
-    for (size_t i = 1; i < t2.size(); ++i) md << t2[i][0] << " | ";
-    md << "\n|---|";
-    for (size_t i = 1; i < t2.size(); ++i) md << "---|";
-    md << "\n| #coeffs. | ";
-    for (size_t i = 1; i < t2.size(); ++i) md << t2[i][1] << " | ";
-    md << "\n| ring | ";
-    for (size_t i = 1; i < t2.size(); ++i) md << t2[i][2] << " | ";
-    md << "\n| #points (ours) | ";
-    for (size_t i = 1; i < t2.size(); ++i) md << t2[i][3] << " | ";
-    md << "\n| #points (paper) | ";
-    for (size_t i = 1; i < t2.size(); ++i) md << t2[i][4] << " | ";
-    md << "\n\n";
+  s.id = e.name;
+  s.title = e.name + ": " + e.title +
+            (e.section == "beyond" ? std::string(" (beyond the paper)")
+                                   : std::string(" (paper §").append(e.section).append(")"));
+  const std::string csv = dir + "/" + e.name + ".csv";
+  if (!fs::exists(csv)) {
+    s.text("Not run yet: " + csv + " is missing.");
+    return true;
   }
-
-  // Table 4.
-  const auto t4 = read_simple_csv(dir + "/table4.csv");
-  if (t4.size() > 1) {
-    md << "## Table 4. Input position errors of torus meshes extracted by marching cubes\n\n"
-       << "Signed distance function of the torus (R = 1, r = 0.3) sampled at n points per axis "
-          "on [-1.5, 1.5]^3, one vertex per sign-changing grid edge (docs/algorithms.md §10.1(a))."
-          " The paper's \"average edge length\" column equals half the true mean edge length "
-          "(see the last two columns).\n\n"
-       << "| n | #verts (ours / paper) | L2 (ours / paper) | Linf (ours / paper) | rate L2 | "
-          "rate Linf | mean edge length | its half / paper's column |\n"
-       << "|---|---|---|---|---|---|---|---|\n";
-    for (size_t i = 1; i < t4.size(); ++i) {
-      const auto& r = t4[i];
-      const double h = std::stod(r[2]), rms = std::stod(r[4]), mx = std::stod(r[5]);
-      std::string rate_l2 = "-", rate_inf = "-";
-      if (i > 1) {
-        const auto& p = t4[i - 1];
-        rate_l2 = two_decimals(std::log2(std::stod(p[4]) / rms));
-        rate_inf = two_decimals(std::log2(std::stod(p[5]) / mx));
-      }
-      const paper::Table4Row* p = i - 1 < paper::kTable4.size() ? &paper::kTable4[i - 1] : nullptr;
-      md << "| " << r[0] << "^3 | " << r[1] << " / " << (p ? std::to_string(p->vertices) : "-")
-         << " | " << sci(rms) << " / " << (p ? paper_sci(p->l2) : "-") << " | " << sci(mx) << " / "
-         << (p ? paper_sci(p->linf) : "-") << " | " << rate_l2 << " | " << rate_inf << " | "
-         << sci(h, 3) << " | " << sci(0.5 * h, 2) << " / " << (p ? paper_g(p->edge_column) : "-")
-         << " |\n";
-    }
-    md << "\n";
-  }
-
-  md << well_shaped_torus_markdown(dir + "/torus_unstructured.csv");
-
-  // Table 5 (performance issue), if present.
-  const std::string t5 = read_text(dir + "/table5_timing.md");
-  if (!t5.empty()) md << t5 << "\n";
-
-  // Figures.
-  int missing_plots = 0;
-  // The paper's figures first (experiments named fig...), then the extra studies.
-  std::vector<const Experiment*> ordered;
-  for (const auto& e : experiments) ordered.push_back(&e);
-  std::stable_partition(ordered.begin(), ordered.end(),
-                        [](const Experiment* e) { return e->name.rfind("fig", 0) == 0; });
-  for (const Experiment* ep : ordered) {
-    const Experiment& e = *ep;
-    if (!e.sweep.empty()) continue;  // the sweeps' own section (report_sweeps.h)
-    const std::string csv = dir + "/" + e.name + ".csv";
-    if (!fs::exists(csv)) {
-      md << "## " << e.title << " (" << e.name << ")\n\nNot run yet: " << csv << " is missing.\n\n";
-      continue;
-    }
-    const auto rows = read_error_csv(csv);
-    md << "## " << e.name << ": " << e.title
-       << (e.section == "beyond" ? std::string(" (beyond the paper)")
-                                 : std::string(" (paper §").append(e.section).append(")"))
-       << "\n\n"
-       << "Source: `" << experiment_source_name(e) << "`.\n\n"
-       << outside_method_notes(e, dir);
-    for (const auto& panel : e.panels) {
-      md << "### " << panel.caption << "\n\n";
-      for (const auto& m : e.meshes) {
+  const auto rows = read_error_csv(csv);
+  s.text("Source: `" + experiment_source_name(e) + "`.");
+  s.text(outside_method_notes(e, dir));
+  for (const auto& panel : e.panels) {
+    s.heading(panel.caption);
+    for (const auto& m : e.meshes) {
+      std::vector<const ErrorRow*> all;
+      for (const auto& r : rows)
+        if (r.family == m.label() && r.quantity == to_string(panel.quantity) &&
+            r.norm == to_string(panel.norm))
+          all.push_back(&r);
+      // One table and plot per vertex set: rows of different sets never share a series.
+      const std::vector<std::string> sets = vertex_sets_of(all);
+      for (const std::string& set : sets) {
         std::vector<const ErrorRow*> sel;
         std::vector<ErrorRow> sel_rows;
-        for (const auto& r : rows)
-          if (r.family == m.label() && r.quantity == to_string(panel.quantity) &&
-              r.norm == to_string(panel.norm)) {
-            sel.push_back(&r);
-            sel_rows.push_back(r);
+        for (const ErrorRow* r : all)
+          if (r->vertex_set == set) {
+            sel.push_back(r);
+            sel_rows.push_back(*r);
           }
-        if (sel.empty()) continue;
         const auto series = series_of(sel);
         std::set<int> levels;
         std::map<int, const ErrorRow*> any_at;
@@ -365,54 +408,98 @@ std::string write_report(const std::vector<Experiment>& experiments, const Repor
           levels.insert(r->level);
           any_at[r->level] = r;
         }
-        md << "**" << family_caption(m.family) << "** (`" << m.label() << "`, vertex set "
-           << sel.front()->vertex_set << (sel.front()->noise != "none" ? ", noise " : "")
-           << (sel.front()->noise != "none" ? sel.front()->noise : "") << ")\n\n| method |";
-        for (int l : levels) md << " level " << l << " |";
-        md << " rate (h) | rate (halving) |\n|---|";
-        for (size_t i = 0; i <= levels.size() + 1; ++i) md << "---|";
-        md << "\n| *h (#verts)* |";
-        for (int l : levels) md << " " << sci(any_at[l]->h) << " (" << any_at[l]->vertices << ") |";
-        md << " | |\n";
-        for (const auto& s : series) {
-          md << "| " << s.method << " |";
+        const std::string noise = sel.front()->noise;
+        report::Table tab;
+        tab.caption = "**" + family_caption(m.family) + "** (`" + m.label() + "`, vertex set " +
+                      set + (noise != "none" ? ", noise " + noise : "") + ")";
+        tab.columns = {"method"};
+        for (int l : levels) tab.columns.push_back("level " + std::to_string(l));
+        tab.columns.push_back("rate (h)");
+        tab.columns.push_back("rate (halving)");
+        std::vector<report::Cell> h_row{"*h (#verts)*"};
+        for (int l : levels)
+          h_row.push_back(report::Cell::number(
+              any_at[l]->h, sci(any_at[l]->h) + " (" + std::to_string(any_at[l]->vertices) + ")"));
+        h_row.push_back({});
+        h_row.push_back({});
+        tab.add(std::move(h_row));
+        for (const auto& sr : series) {
+          std::vector<report::Cell> row{sr.method};
           for (int l : levels) {
-            auto it = s.by_level.find(l);
-            md << " " << (it == s.by_level.end() ? "-" : sci(it->second->error)) << " |";
+            auto it = sr.by_level.find(l);
+            row.push_back(it == sr.by_level.end()
+                              ? report::Cell("-")
+                              : report::Cell::number(it->second->error, sci(it->second->error)));
           }
-          md << " **" << two_decimals(series_rate(s)) << "** | "
-             << two_decimals(series_halving_rate(s)) << " |\n";
+          const double rate = series_rate(sr), halving = series_halving_rate(sr);
+          report::Cell rc = report::Cell::number(rate, two_decimals(rate));
+          rc.strong = true;  // the rate the report leads with
+          row.push_back(rc);
+          row.push_back(report::Cell::number(halving, two_decimals(halving)));
+          tab.add(std::move(row));
         }
-        const std::string base = panel.id + "_" + m.label();
-        md << "\n";
+        s.table(std::move(tab));
+        const std::string base = panel.id + "_" + m.label() + (set != "all" ? "_" + set : "");
+        // Two title lines: "Fig. 6 (left). [family]" and the rest of the caption.
+        const size_t after_fig = panel.caption.rfind("Fig. ", 0) == 0 ? 5 : 0;
+        const auto cut = panel.caption.find(". ", after_fig);
+        report::Plot plot;
+        plot.id = base;
+        plot.title = cut == std::string::npos
+                         ? panel.caption + " [" + m.label() + ", " + set + "]"
+                         : panel.caption.substr(0, cut + 1) + " [" + m.label() + ", " + set +
+                               "]\\n" + panel.caption.substr(cut + 2);
+        plot.series = error_series(sel_rows);
         if (options.plots) {
-          if (options.stop && options.stop()) return "";
-          // Two title lines: "Fig. 6 (left). [family]" and the rest of the caption (gnuplot
-          // turns \n inside a double-quoted title into a line break).
-          const size_t after_fig = panel.caption.rfind("Fig. ", 0) == 0 ? 5 : 0;
-          const auto cut = panel.caption.find(". ", after_fig);
-          const std::string title = cut == std::string::npos
-                                        ? panel.caption + " [" + m.label() + "]"
-                                        : panel.caption.substr(0, cut + 1) + " [" + m.label() +
-                                              "]\\n" + panel.caption.substr(cut + 2);
-          if (render_plot(dir + "/plots/" + base, title, sel_rows))
-            md << "![" << panel.id << " " << m.label() << "](plots/" << base << ".png) "
-               << "([svg](plots/" << base << ".svg))\n\n";
-          else
-            ++missing_plots;
+          if (options.stop && options.stop()) return false;
+          if (!render_plot_files(plot, dir, base)) ++missing_plots;
         }
+        s.plot(std::move(plot));
       }
     }
-    md << cause_tables_markdown(e, dir);
   }
-  if (!append_field_estimators_section(md, experiments, options, missing_plots)) return "";
-  append_radius_scaling_section(md, experiments, options);
-  if (!append_sweeps_section(md, experiments, options, missing_plots)) return "";
+  s.text(cause_tables_markdown(e, dir));
+  return true;
+}
+
+}  // namespace
+
+std::optional<ReportContent> build_report(const std::vector<Experiment>& experiments,
+                                          const ReportOptions& options) {
+  const std::string dir = options.results_dir;
+  fs::create_directories(fs::path(dir) / "plots");
+  ReportContent out;
+  out.paper.push_back(table2_section(dir));
+  out.paper.push_back(table4_section(dir));
+  out.paper.push_back(markdown_section(
+      "well-shaped-torus", well_shaped_torus_markdown(dir + "/torus_unstructured.csv")));
+  out.paper.push_back(markdown_section("table5", read_text(dir + "/table5_timing.md")));
+
+  int missing_plots = 0;
+  // The paper's figures first (experiments named fig...), then the extra studies.
+  std::vector<const Experiment*> ordered;
+  for (const auto& e : experiments) ordered.push_back(&e);
+  std::stable_partition(ordered.begin(), ordered.end(),
+                        [](const Experiment* e) { return e->name.rfind("fig", 0) == 0; });
+  for (const Experiment* e : ordered) {
+    if (!e->sweep.empty()) continue;  // the sweeps' own section (report_sweeps.h)
+    report::Section s;
+    if (!experiment_section(*e, options, missing_plots, s)) return std::nullopt;
+    out.experiments.push_back(std::move(s));
+  }
+  std::ostringstream field;
+  if (!append_field_estimators_section(field, experiments, options, missing_plots))
+    return std::nullopt;
+  out.studies.push_back(markdown_section("field-studies", field.str()));
+  std::ostringstream scaling;
+  append_radius_scaling_section(scaling, experiments, options);
+  out.studies.push_back(markdown_section("radius-scaling", scaling.str()));
+  std::ostringstream sweeps;
+  if (!append_sweeps_section(sweeps, experiments, options, missing_plots)) return std::nullopt;
+  out.studies.push_back(markdown_section("sweeps", sweeps.str()));
   if (missing_plots > 0)
     std::fprintf(stderr, "report: %d plots not rendered (is gnuplot installed?)\n", missing_plots);
-  const std::string path = dir + "/REPORT.md";
-  write_file_atomic(path, md.str());
-  return path;
+  return out;
 }
 
 }  // namespace curvbench

@@ -9,10 +9,12 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "harness/experiment.h"
+#include "harness/report_model.h"
 #include "harness/results_table.h"
 
 namespace curvbench {
@@ -29,31 +31,39 @@ void write_table2_csv(const std::string& path);
 /// Writes results/table4.csv from the marching-cubes torus meshes up to max_grid_points.
 void write_table4_csv(const std::string& path, int max_grid_points);
 
-/// Builds REPORT.md (and the plots) for the given experiments from the CSVs in results_dir.
-/// Returns the path of REPORT.md, or "" if options.stop asked to stop (REPORT.md untouched).
-std::string write_report(const std::vector<Experiment>& experiments, const ReportOptions& options);
+/// Everything the report shows, as sections of the report model (report_model.h), built once
+/// and rendered to markdown (REPORT.md's details in results/report/) and to HTML (the site).
+struct ReportContent {
+  std::vector<report::Section> paper;        ///< Tables 2 and 4, the well-shaped tori, Table 5
+  std::vector<report::Section> experiments;  ///< one per experiment but the sweeps; id = name
+  std::vector<report::Section> studies;      ///< field studies, radius scaling, sweeps + advice
+};
+
+/// Builds the content (and, with options.plots, the PNG/SVG plots) from the CSVs in
+/// results_dir; std::nullopt if options.stop asked to stop.
+std::optional<ReportContent> build_report(const std::vector<Experiment>& experiments,
+                                          const ReportOptions& options);
 
 /// Markdown bullets for the outside estimators of an experiment: each `description="..."`, and
 /// each method skipped because its command cannot run here (from <results_dir>/skipped.csv,
 /// results_table.h), with the reason. Empty when there is neither.
 std::string outside_method_notes(const Experiment& e, const std::string& results_dir);
 
-/// The x axis of a plot: by default the mean edge length h, decreasing to the right, with each
-/// method's convergence rate in the legend. The accuracy-versus-cost plots put the time per
-/// vertex there instead (the rows' `h` then holds it).
-struct PlotAxis {
-  std::string label = "mean edge length h";
-  bool reversed = true;
-  bool rate_in_legend = true;
-  bool reference_slopes = true;  ///< dashed O(h^p) lines (x must be h)
-};
+/// Renders a plot of the report model (report_model.h) with gnuplot to <results_dir>/plots/
+/// <base>.png and .svg (each under its temp_path() name first, then renamed into place), and on
+/// success sets plot.image to "plots/<base>.png" so that the markdown renderer shows it. Returns
+/// false if gnuplot is unavailable or fails. If gnuplot was killed by SIGINT or SIGTERM (std::
+/// system ignores them in the caller meanwhile), the signal is re-raised.
+bool render_plot_files(report::Plot& plot, const std::string& results_dir, const std::string& base);
 
-/// Renders one panel's log-log plot (error vs h, one line per method, rate in the legend) to
-/// <base>.png and <base>.svg with gnuplot, each under its temp_path() name first and then renamed
-/// into place. Returns false if gnuplot is unavailable or fails. If gnuplot was killed by SIGINT
-/// or SIGTERM (std::system ignores them in the caller meanwhile), the signal is re-raised.
-bool render_plot(const std::string& base, const std::string& title,
-                 const std::vector<ErrorRow>& rows, const PlotAxis& x_axis = {});
+/// The series of one method per label, in first-seen order, of error rows (x = h, y = error;
+/// non-finite or non-positive errors left out; the hover note names level, vertices and case),
+/// each styled by plot_styles.h; with `rates`, the label ends with "(rate r)", r the average
+/// rate log(e1/eN)/log(h1/hN) over its first and last level; with `slopes`, dashed O(h^p)
+/// reference series for the orders those rates round to (1-4), anchored at half the largest
+/// error at the coarsest h.
+std::vector<report::Series> error_series(const std::vector<ErrorRow>& rows, bool rates = true,
+                                         bool slopes = true);
 
 /// Runs gnuplot on `setup` (settings and data blocks) then `plot` (the plot command, drawn once
 /// per terminal) into <base>.png and <base>.svg, as render_plot does. Returns false if gnuplot is

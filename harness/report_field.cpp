@@ -361,15 +361,14 @@ bool append_field_section(std::ostringstream& md, const FieldSection& section,
       const auto cost_plot = [&](const std::string& kind, const std::string& x_label,
                                  const std::string& title, const std::vector<ErrorRow>& points) {
         const std::string base = kind + "_" + e.name + "_" + mesh.label();
-        PlotAxis axis;
-        axis.label = x_label;
-        axis.reversed = false;
-        axis.rate_in_legend = false;
-        axis.reference_slopes = false;
-        if (render_plot(dir + "/plots/" + base,
-                        title + " [" + mesh.label() +
-                            (any->noise != "none" ? ", noise " + any->noise : "") + "]",
-                        points, axis))
+        report::Plot plot;
+        plot.id = base;
+        plot.title = title + " [" + mesh.label() +
+                     (any->noise != "none" ? ", noise " + any->noise : "") + "]";
+        plot.x_label = x_label;
+        plot.reverse_x = false;
+        plot.series = error_series(points, false, false);
+        if (render_plot_files(plot, dir, base))
           md << "![" << base << "](plots/" << base << ".png) ([svg](plots/" << base << ".svg))\n\n";
         else
           ++missing_plots;

@@ -62,6 +62,33 @@ struct PipelineResult {
 /// the missing cases of an incomplete store in report-only mode.
 PipelineResult run_pipeline(const PipelineOptions& options);
 
+/// What render_results writes from the CSVs of a results folder (nothing is computed).
+struct RenderOptions {
+  std::vector<Experiment> experiments;  ///< every experiment the report covers
+  std::string output = "results";       ///< the results folder
+  std::string site_dir;                 ///< "" = <output>/site
+  bool plots = true;     ///< render the PNG/SVG plots of the markdown report (gnuplot)
+  bool markdown = true;  ///< REPORT.md, report/*.md, leaderboard.csv and CLAIMS.md
+  bool site = true;      ///< the results site
+  /// Every experiment's CSV must exist (else InputError naming it): `curvbench report`.
+  bool require_all = false;
+  std::string chart_js = "/usr/share/javascript/chart.js/chart.min.js";
+  std::function<void(const std::string&)> message;
+  std::function<bool()> stop;
+};
+
+struct RenderResult {
+  bool stopped = false;
+  std::string report;  ///< REPORT.md ("" if not written)
+  std::string site;    ///< site/index.html ("" if not written)
+  int reproduced = 0, not_reproduced = 0, not_applicable = 0;  ///< claim verdicts
+};
+
+/// REPORT.md (a summary), results/report/*.md, the plots, leaderboard.csv, CLAIMS.md and the
+/// results site from the CSVs in options.output. Throws InputError naming a CSV that is missing
+/// (with require_all), truncated or written by another version (a missing column).
+RenderResult render_results(const RenderOptions& options);
+
 /// The stable ids (case_store.h case_id) of the cases of the experiments, in case order; with
 /// shard_count > 1 only those of shard `shard`.
 std::vector<std::string> list_case_ids(const std::vector<Experiment>& experiments, int shard = 1,

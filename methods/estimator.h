@@ -201,6 +201,16 @@ class Estimator {
 /// method it does not apply to (methods/option_schema.h).
 std::unique_ptr<Estimator> make_estimator(const std::string& name, EstimatorOptions options);
 
+/// The family a method belongs to on the results site and in the leaderboard's filters.
+enum class MethodGroup {
+  paper_fit,  ///< the paper's parameterization-based fits (LHF, LOP, Xu, LSCM)
+  jet,        ///< CGAL's osculating jet
+  discrete,   ///< an operator on the 1-ring or a ball (Meyer, Taubin, ICC, ...)
+  outside,    ///< not in the registry: an outside estimator (a command of an experiment file)
+};
+/// "paper fits", "jets", "discrete operators", "outside estimators".
+const char* to_string(MethodGroup g);
+
 /// One line of the registry (methods/registry.cpp): what the rest of the project needs to know
 /// of a method besides its estimator.
 struct MethodInfo {
@@ -210,8 +220,14 @@ struct MethodInfo {
   std::vector<int> bench_degrees;  ///< make bench's rows (0: a degree-free operator, once)
   double cost = 1.0;               ///< seconds per vertex relative to LHF-2 (shard balance)
   std::string summary;             ///< one line for --help
+  MethodGroup group = MethodGroup::discrete;  ///< its family on the results site
   bool is_fit() const { return max_degree > 0; }
 };
+
+/// The group of a method label as the result CSVs spell it ("LHF-2", "Meyer", "LSCM-fast-4",
+/// case-insensitive, a trailing degree ignored); MethodGroup::outside when no registered
+/// method has that name.
+MethodGroup method_group(const std::string& label);
 
 /// Every registered method, in registry order.
 std::vector<MethodInfo> method_table();

@@ -281,7 +281,8 @@ TEST(External, SkippedMethodLeavesTheRunGoingAndSaysWhy) {
   EXPECT_EQ(skipped[0].method, "gone");
   EXPECT_EQ(skipped[0].cases, 3);
   EXPECT_EQ(skipped[0].reason, "libfoo is missing; install it");  // commas would split the CSV
-  std::string report = sh("cat '" + (out / "REPORT.md").string() + "'").output;
+  // The experiment's page of the report (results/report/<experiment>.md) holds the notes.
+  std::string report = sh("cat '" + (out / "report" / "skip.md").string() + "'").output;
   EXPECT_NE(report.find("- `gone` (outside estimator): a test estimator"), std::string::npos);
   EXPECT_NE(report.find("- `gone` was skipped (3 cases): its command cannot run here (libfoo is "
                         "missing; install it)"),
@@ -305,7 +306,7 @@ TEST(External, SkippedMethodLeavesTheRunGoingAndSaysWhy) {
                           [](const ErrorRow& row) { return row.method == "gone"; }),
             3);
   EXPECT_FALSE(fs::exists(out / "skipped.csv"));
-  report = sh("cat '" + (out / "REPORT.md").string() + "'").output;
+  report = sh("cat '" + (out / "report" / "skip.md").string() + "'").output;
   EXPECT_EQ(report.find("was skipped"), std::string::npos) << report;
   EXPECT_NE(report.find("- `gone` (outside estimator): a test estimator"), std::string::npos);
 }

@@ -1,6 +1,7 @@
-// write_report (harness/report.h): the figure section of REPORT.md from an experiment's CSV:
+// build_report (harness/report.h): an experiment's section from its CSV, rendered to markdown:
 // the panel caption, the family's caption from the family table, one row per method with its
-// errors per level and the rate between the first and last level; a missing CSV is said.
+// errors per level and the rate between the first and last level; one table per vertex set;
+// a missing CSV is said; a stop request gives nothing.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -24,8 +25,11 @@ namespace curvbench {
 namespace {
 
 // H L2 errors e0 (h / 0.4)^rate on levels 1-3 of torus-unstructured (h = 0.4, 0.2, 0.1).
-std::vector<ErrorRow> rows_of(const std::string& method, double e0, double rate) {
-  return testing::synthetic_series("report-test", "torus-unstructured", method, e0, rate);
+std::vector<ErrorRow> rows_of(const std::string& method, double e0, double rate,
+                              const std::string& set = "all") {
+  auto rows = testing::synthetic_series("report-test", "torus-unstructured", method, e0, rate);
+  for (ErrorRow& r : rows) r.vertex_set = set;
+  return rows;
 }
 
 Experiment experiment(const std::string& section = "5.2") {
@@ -37,55 +41,103 @@ Experiment experiment(const std::string& section = "5.2") {
       "report-test.exp");
 }
 
-TEST(WriteReport, FigureSectionHasCaptionsErrorsAndRates) {
+// The markdown of the experiment's section.
+std::string experiment_markdown(const std::filesystem::path& dir, const std::string& section) {
+  ReportOptions o;
+  o.results_dir = dir.string();
+  o.plots = false;
+  const auto content = build_report({experiment(section)}, o);
+  EXPECT_TRUE(content.has_value());
+  if (!content || content->experiments.empty()) return "";
+  return report::to_markdown(content->experiments.front());
+}
+
+// The table line of a method: "| LHF-2 | ... |" (the first one from `from`).
+std::string row_of(const std::string& md, const std::string& method, size_t from = 0) {
+  const auto at = md.find("| " + method + " |", from);
+  return at == std::string::npos ? std::string() : md.substr(at, md.find('\n', at) - at);
+}
+
+TEST(BuildReport, ExperimentSectionHasCaptionsErrorsAndRates) {
   const auto dir = testing::fresh_dir("report_figures");
   std::vector<ErrorRow> rows = rows_of("LHF-2", 1e-2, 2.0);
   for (const ErrorRow& r : rows_of("LHF-4", 1e-4, 4.0)) rows.push_back(r);
   write_error_csv((dir / "report-test.csv").string(), rows);
-  ReportOptions o;
-  o.results_dir = dir.string();
-  o.plots = false;
-  const std::string path = write_report({experiment()}, o);
-  ASSERT_EQ(path, (dir / "REPORT.md").string());
-  const std::string md = testing::slurp(path);
+  const std::string md = experiment_markdown(dir, "5.2");
   EXPECT_NE(md.find("## report-test: A report test (paper §5.2)"), std::string::npos);
   EXPECT_NE(md.find("### Report test. L2 errors in H."), std::string::npos);
   EXPECT_NE(md.find("**" + mesh_family("torus-unstructured").caption + "** (`torus-unstructured`"),
             std::string::npos)
       << "the caption comes from the family table";
   // Rates from the first and the last level: exactly 2 and 4 (printed with two decimals).
-  const auto row = [&](const std::string& method) {
-    const auto at = md.find("| " + method + " |");
-    EXPECT_NE(at, std::string::npos) << method;
-    return at == std::string::npos ? std::string() : md.substr(at, md.find('\n', at) - at);
-  };
-  EXPECT_NE(row("LHF-2").find("**2.00**"), std::string::npos) << row("LHF-2");
-  EXPECT_NE(row("LHF-4").find("**4.00**"), std::string::npos) << row("LHF-4");
-  EXPECT_NE(row("LHF-4").find("1.00e-04"), std::string::npos) << row("LHF-4");
-  EXPECT_NE(row("LHF-4").find("6.25e-06"), std::string::npos) << row("LHF-4");  // 1e-4 / 16
+  EXPECT_NE(row_of(md, "LHF-2").find("**2.00**"), std::string::npos) << row_of(md, "LHF-2");
+  EXPECT_NE(row_of(md, "LHF-4").find("**4.00**"), std::string::npos) << row_of(md, "LHF-4");
+  EXPECT_NE(row_of(md, "LHF-4").find("1.00e-04"), std::string::npos);
+  EXPECT_NE(row_of(md, "LHF-4").find("6.25e-06"), std::string::npos);  // 1e-4 / 16
 
   // A study beyond the paper says so, not "paper §beyond".
-  const std::string md_beyond = testing::slurp(write_report({experiment("beyond")}, o));
+  const std::string md_beyond = experiment_markdown(dir, "beyond");
   EXPECT_NE(md_beyond.find("## report-test: A report test (beyond the paper)\n"),
             std::string::npos);
   EXPECT_EQ(md_beyond.find("§beyond"), std::string::npos);
 }
 
-TEST(WriteReport, MissingCsvIsSaidAndStopLeavesNoReport) {
-  const auto dir = testing::fresh_dir("report_missing");
+// Rows of two vertex sets of one method never share a table: each caption names its set and
+// holds that set's errors (the diag-b4 tables once printed the valence-5 rows under the
+// valence-4 caption).
+TEST(BuildReport, EachVertexSetHasItsOwnTable) {
+  const auto dir = testing::fresh_dir("report_sets");
+  std::vector<ErrorRow> rows = rows_of("LHF-2", 1e-2, 2.0, "valence-4-or-less");
+  for (const ErrorRow& r : rows_of("LHF-2", 3e-2, 1.0, "valence-5-or-more")) rows.push_back(r);
+  write_error_csv((dir / "report-test.csv").string(), rows);
+  const std::string md = experiment_markdown(dir, "5.1");
+  const size_t four = md.find("vertex set valence-4-or-less");
+  const size_t five = md.find("vertex set valence-5-or-more");
+  ASSERT_NE(four, std::string::npos);
+  ASSERT_NE(five, std::string::npos);
+  ASSERT_LT(four, five);
+  EXPECT_NE(row_of(md, "LHF-2", four).find("1.00e-02"), std::string::npos);
+  EXPECT_NE(row_of(md, "LHF-2", four).find("**2.00**"), std::string::npos);
+  EXPECT_NE(row_of(md, "LHF-2", five).find("3.00e-02"), std::string::npos);
+  EXPECT_NE(row_of(md, "LHF-2", five).find("**1.00**"), std::string::npos);
+}
+
+TEST(BuildReport, PlotsHoldTheSeriesWithRatesAndReferenceSlopes) {
+  const auto dir = testing::fresh_dir("report_plot_series");
+  std::vector<ErrorRow> rows = rows_of("LHF-2", 1e-2, 2.0);
+  write_error_csv((dir / "report-test.csv").string(), rows);
   ReportOptions o;
   o.results_dir = dir.string();
   o.plots = false;
-  const std::string md = testing::slurp(write_report({experiment()}, o));
+  const auto content = build_report({experiment()}, o);
+  ASSERT_TRUE(content);
+  const report::Plot* plot = nullptr;
+  for (const auto& b : content->experiments.front().blocks)
+    if (const auto* p = std::get_if<report::Plot>(&b)) plot = p;
+  ASSERT_NE(plot, nullptr);
+  ASSERT_EQ(plot->series.size(), 2u);  // LHF-2 and the O(h^2) slope
+  EXPECT_EQ(plot->series[0].label, "LHF-2 (rate 2.00)");
+  ASSERT_EQ(plot->series[0].points.size(), 3u);
+  EXPECT_DOUBLE_EQ(plot->series[0].points[2].x, 0.1);
+  EXPECT_DOUBLE_EQ(plot->series[0].points[2].y, 1e-2 / 16);
+  EXPECT_EQ(plot->series[1].label, "O(h^2)");
+  // The slope: half the coarsest error at h = 0.4, falling as h^2 to h = 0.1.
+  EXPECT_DOUBLE_EQ(plot->series[1].points[0].y, 0.5e-2);
+  EXPECT_DOUBLE_EQ(plot->series[1].points[1].y, 0.5e-2 / 16);
+  EXPECT_TRUE(plot->image.empty()) << "no PNG without plots";
+}
+
+TEST(BuildReport, MissingCsvIsSaidAndStopGivesNothing) {
+  const auto dir = testing::fresh_dir("report_missing");
+  const std::string md = experiment_markdown(dir, "5.2");
   EXPECT_NE(md.find("Not run yet: " + (dir / "report-test.csv").string() + " is missing."),
             std::string::npos);
-  // A stop request before the first plot: no REPORT.md is written (the previous one stays).
-  std::filesystem::remove(dir / "REPORT.md");
   write_error_csv((dir / "report-test.csv").string(), rows_of("LHF-2", 1e-2, 2.0));
+  ReportOptions o;
+  o.results_dir = dir.string();
   o.plots = true;
   o.stop = [] { return true; };
-  EXPECT_EQ(write_report({experiment()}, o), "");
-  EXPECT_FALSE(std::filesystem::exists(dir / "REPORT.md"));
+  EXPECT_FALSE(build_report({experiment()}, o).has_value());
 }
 
 }  // namespace
