@@ -57,11 +57,11 @@ struct RecommendationTable {
 RecommendationTable parse_recommendations_csv(const std::string& text, const std::string& name);
 /// DIR/recommendations.csv; throws InputError "<file>: not found" or as parse_recommendations_csv.
 RecommendationTable read_recommendations_csv(const std::string& results_dir);
-/// Where the default table is looked for, in order: share/curvbench/recommendations.csv under
-/// the install prefix of the program or library running this code (the folder of the curvbench
-/// executable, libcurvbench.so or the Python module, and up to two folders above it: bin/,
-/// lib/, lib/python3.X/site-packages/), then results/recommendations.csv of the source tree
-/// this code was built from.
+/// Where the default table is looked for, in order: P/share/curvbench/recommendations.csv for P
+/// the parent of the folder of the file running this code (the curvbench executable,
+/// libcurvbench.so or the Python module), then of the two folders above it (so that bin/, lib/
+/// and lib/python3.X/site-packages/ all find PREFIX/share/curvbench), then
+/// results/recommendations.csv of the source tree this code was built from.
 std::vector<std::string> recommendations_search_paths();
 /// The first of recommendations_search_paths() that exists ("" when none does).
 std::string default_recommendations_path();

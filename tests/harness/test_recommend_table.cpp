@@ -13,9 +13,12 @@
 
 #include "core/errors.h"
 #include "core/text.h"
+#include "harness/experiment.h"
 #include "harness/recommend_table.h"
 #include "mesh/io.h"
 #include "meshgen/generate.h"
+#include "methods/estimator.h"
+#include "methods/option_schema.h"
 #include "tests/cli/cli_runner.h"
 
 namespace curvbench {
@@ -119,6 +122,30 @@ TEST(RecommendTable, CommittedLabelsResolveToTheirOwnColumns) {
     }
   }
   EXPECT_GT(swept, 0);
+}
+
+// The advice runs a case label as the whole estimator: in both radius sweeps (the trimmed one
+// `make experiments` runs and the full one), every method's label resolves to an estimator with
+// the same options as the method line's, and the experiment adds none (no noisy, no radius
+// scaling).
+TEST(RecommendTable, SweepLabelsAreTheWholeEstimator) {
+  for (const char* file :
+       {"/experiments/sweep_radius.exp", "/experiments/sweeps/sweep_radius.exp"}) {
+    const Experiment e = parse_experiment(std::string(CURVBENCH_SOURCE_DIR) + file);
+    EXPECT_FALSE(e.noisy) << file;
+    EXPECT_EQ(e.radius_c, 0.0) << file;
+    ASSERT_FALSE(e.methods.empty()) << file;
+    for (const ExperimentMethod& m : e.methods) {
+      const auto line = make_estimator(m.spec, m.options);
+      const std::string label = m.label.empty() ? line->label() : m.label;
+      const EstimatorChoice c = estimator_choice(label);
+      const auto chosen = make_estimator(c.method, c.options);
+      EXPECT_EQ(chosen->label(), line->label()) << file << ": " << label;
+      for (const OptionInfo& o : estimator_option_schema())
+        EXPECT_EQ(option_text(chosen->options(), o), option_text(line->options(), o))
+            << file << ": " << label << ": " << o.name;
+    }
+  }
 }
 
 // The default table of a build-tree program is the source tree's; an installed one looks in
