@@ -33,6 +33,8 @@
 #include "core/errors.h"
 #include "core/text.h"
 #include "harness/estimate_columns.h"
+#include "harness/recommend_table.h"
+#include "harness/results_table.h"
 #include "mesh/colormap.h"
 #include "mesh/io.h"
 #include "mesh/mesh_checks.h"
@@ -70,6 +72,29 @@ VertexColors color_of(const std::string& quantity, std::span<const VertexEstimat
   return c;
 }
 
+// --method auto: the estimator and radius the default recommendations table gives the mesh
+// (harness/recommend_table.h, as `curvbench recommend`), said on stderr.
+std::unique_ptr<Estimator> auto_estimator(const std::string& path, const Mesh& mesh,
+                                          const EstimatorOptions& given) {
+  const Advice a = advise(mesh, std::nan(""), default_recommendations());
+  if (!a.has_choice)
+    throw InputError(a.table + ": no sweep ran for " + a.mesh_class.quality +
+                     " meshes at sigma/h " + format_g(a.noise_level) +
+                     ", so --method auto has no choice for " + path + "; give --method");
+  std::unique_ptr<Estimator> est =
+      make_estimator(a.choice.method, auto_options(a.choice, given, false));
+  std::string flags;
+  for (const std::string& f : a.choice.flags()) flags += (flags.empty() ? "" : " ") + f;
+  std::fprintf(stderr,
+               "curvbench estimate: --method auto chose %s (case '%s') for %s: %s mesh, sigma/h "
+               "%.3g estimated (table level %s); the sweep measured a relative %s error in %s "
+               "of %s; table %s\n",
+               flags.c_str(), a.row.best_label.c_str(), path.c_str(), a.mesh_class.quality.c_str(),
+               a.sigma_over_h, format_g(a.noise_level).c_str(), a.row.norm.c_str(),
+               a.row.quantity.c_str(), scientific(a.row.best_error).c_str(), a.table.c_str());
+  return est;
+}
+
 int run_estimate(const EstimateOptions& o) {
   const std::string ext = lower_extension(o.output);
   if (ext != "csv" && ext != "ply")
@@ -77,8 +102,10 @@ int run_estimate(const EstimateOptions& o) {
   if (!o.color.empty() && ext != "ply") throw UsageError("--color needs a .ply --output");
   if (o.block < 1) throw UsageError("--block must be at least 1");
   const EstimatorOptions eo = o.estimator.options();
-  std::unique_ptr<Estimator> est = make_estimator(o.method, eo);
-  if (eo.degree != 0 && est->options().degree != eo.degree)
+  // --method auto: the estimator is chosen from the mesh, once it is read.
+  const bool automatic = is_auto_method(o.method);
+  std::unique_ptr<Estimator> est = automatic ? nullptr : make_estimator(o.method, eo);
+  if (est && eo.degree != 0 && est->options().degree != eo.degree)
     throw UsageError("--method " + o.method + " names degree " +
                      std::to_string(est->options().degree) + " but --degree is " +
                      std::to_string(eo.degree));
@@ -91,6 +118,7 @@ int run_estimate(const EstimateOptions& o) {
   MeshReadReport report;
   Mesh input = read_input_mesh(o.mesh, o.skip_invalid, report);
   const double read_seconds = since(t_read);
+  if (automatic) est = auto_estimator(o.mesh, input, eo);
   const int n = input.num_vertices();
 
   // The output is written as the estimates come, a block of vertices at a time
@@ -225,7 +253,9 @@ Command add_estimate_command(CLI::App& app) {
   std::string names;
   for (const std::string& n : estimator_names()) names += (names.empty() ? "" : ", ") + n;
   sub->add_option("--method", o->method,
-                  "Method: " + names + " (case-insensitive; the degree may be attached, LHF-2)")
+                  "Method: " + names +
+                      " (case-insensitive; the degree may be attached, LHF-2), or auto: the "
+                      "estimator and radius `curvbench recommend` gives the mesh (said on stderr)")
       ->required();
   o->estimator.add_to(*sub);
   sub->add_flag(

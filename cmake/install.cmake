@@ -1,7 +1,9 @@
 # make install PREFIX=... (cmake --install build --prefix PREFIX): the shared and static library,
 # the public headers (include/curvbench/ only; the layers' internal headers are not installed),
 # the CMake package (find_package(curvbench CONFIG) -> curvbench::curvbench, shared, and
-# curvbench::curvbench_static), the curvbench command and the Python module.
+# curvbench::curvbench_static), the curvbench command, the Python module and the recommendations
+# table they read (share/curvbench/recommendations.csv: harness/recommend_table.h looks there,
+# under the prefix of the program, not under CMAKE_INSTALL_DATADIR).
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 set(CURVBENCH_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/curvbench)
@@ -27,4 +29,7 @@ if(TARGET curvbench)
 endif()
 if(TARGET curvbench_python)
   install(TARGETS curvbench_python LIBRARY DESTINATION ${CURVBENCH_PYTHON_INSTALL_DIR})
+endif()
+if(EXISTS ${PROJECT_SOURCE_DIR}/results/recommendations.csv)
+  install(FILES ${PROJECT_SOURCE_DIR}/results/recommendations.csv DESTINATION share/curvbench)
 endif()

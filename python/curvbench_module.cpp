@@ -6,6 +6,8 @@
 //   mesh(family, level, noise_order=0, seed=1, **options) -> (V, F, Exact)   (options: the mesh
 //            option table of meshgen/generate.h: aspect=16, density=4)
 //   score(exact_or_mesh, estimate, vertex_set="all") -> {quantity: {"L2", "Linf", ...}}
+//   recommend(V, F, noise=None, results=None) -> dict   (the advice of `curvbench recommend`;
+//            estimate(V, F, method="auto") follows it and keeps it in Estimate.recommendation)
 //   methods(), __version__
 //
 // Input arrays are read in place (any real dtype for V, any integer dtype for F, any strides)
@@ -18,6 +20,7 @@
 #include <pybind11/stl.h>
 
 #include <climits>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -30,6 +33,7 @@
 #include "core/text.h"
 #include "curvbench/curvbench.h"
 #include "harness/metrics.h"
+#include "harness/recommend_table.h"
 #include "mesh/io.h"
 #include "mesh/mesh.h"
 #include "meshgen/generate.h"
@@ -159,7 +163,39 @@ struct PyEstimate {
   std::string method;
   std::vector<VertexEstimate> estimates;
   py::object normal, k1, k2, H, K, d1, d2, degree, points, ring, status, status_code;
+  py::object recommendation = py::none();  ///< method="auto": the advice it followed
 };
+
+// The advice as recommend() returns it and Estimate.recommendation holds it.
+py::dict advice_dict(const Advice& a) {
+  py::dict d;
+  d["quality"] = a.mesh_class.quality;
+  d["quality_reason"] = a.mesh_class.reason;
+  d["sigma_over_h"] = a.sigma_over_h;
+  d["noise"] = a.noise_estimated ? "estimated" : "given";
+  d["noise_level"] = a.noise_level;
+  d["swept"] = a.has_choice;
+  py::dict options;
+  if (a.has_choice && !a.choice.parameter.empty()) {
+    std::string key = a.choice.parameter;
+    for (char& c : key)
+      if (c == '-') c = '_';
+    options[key.c_str()] = a.choice.radius;
+  }
+  const RecommendationRow& r = a.row;
+  d["method"] = a.has_choice ? py::object(py::str(a.choice.method)) : py::none();
+  d["options"] = options;
+  d["label"] = a.has_choice ? py::object(py::str(r.best_label)) : py::none();
+  d["quantity"] = a.has_choice ? py::object(py::str(r.quantity)) : py::none();
+  d["norm"] = a.has_choice ? py::object(py::str(r.norm)) : py::none();
+  d["error"] = a.has_choice ? py::object(py::float_(r.best_error)) : py::none();
+  d["experiment"] = a.has_choice ? py::object(py::str(r.experiment)) : py::none();
+  d["family"] = a.has_choice ? py::object(py::str(r.family)) : py::none();
+  d["level"] = a.has_choice ? py::object(py::int_(r.level)) : py::none();
+  d["table"] = a.table;
+  d["provenance"] = a.provenance;
+  return d;
+}
 
 /// The exact quantities of a generated mesh, plus the mesh (for vertex sets in score()).
 struct PyExact {
@@ -221,15 +257,30 @@ PyEstimate py_estimate(const py::handle& V, const py::handle& F, const std::stri
     }
     set_option_value(o, name, option_value(value));
   }
-  const std::unique_ptr<Estimator> est = make_api_estimator(o);
+  // method="auto": the estimator of the advice for the mesh, chosen once the mesh is made.
+  const bool automatic = is_auto_method(method);
+  std::unique_ptr<Estimator> est = automatic ? nullptr : make_api_estimator(o);
   VertexMatrix Vm = to_vertices(V);
   FaceMatrix Fm = to_faces(F, Vm.rows());
   PyEstimate r;
+  std::optional<Advice> advice;
   {
     py::gil_scoped_release unlocked;
     Mesh mesh(std::move(Vm), std::move(Fm), "mesh");
+    if (automatic) {
+      advice = advise(mesh, std::nan(""), default_recommendations());
+      if (!advice->has_choice)
+        throw InputError(advice->table + ": no sweep ran for " + advice->mesh_class.quality +
+                         " meshes at sigma/h " + format_g(advice->noise_level) +
+                         ", so method='auto' has no choice; name the method");
+      EstimateOptions chosen;
+      static_cast<EstimatorOptions&>(chosen) = auto_options(advice->choice, o, true);
+      chosen.method = advice->choice.method;
+      est = make_api_estimator(chosen);
+    }
     r.estimates = estimate_oriented(std::move(mesh), *est).estimates;
   }
+  if (advice) r.recommendation = advice_dict(*advice);
   const auto& e = r.estimates;
   const size_t n = e.size();
   r.method = est->label();
@@ -248,6 +299,21 @@ PyEstimate py_estimate(const py::handle& V, const py::handle& F, const std::stri
   r.status_code = codes;
   r.status = numpy_status_names(codes);
   return r;
+}
+
+py::dict py_recommend(const py::handle& V, const py::handle& F, std::optional<double> noise,
+                      std::optional<std::string> results) {
+  VertexMatrix Vm = to_vertices(V);
+  FaceMatrix Fm = to_faces(F, Vm.rows());
+  std::optional<Advice> advice;
+  {
+    py::gil_scoped_release unlocked;
+    const RecommendationTable table =
+        results ? read_recommendations_csv(*results) : default_recommendations();
+    const Mesh mesh(std::move(Vm), std::move(Fm), "mesh");
+    advice = advise(mesh, noise ? *noise : std::nan(""), table);
+  }
+  return advice_dict(*advice);
 }
 
 py::tuple mesh_arrays(const Mesh& mesh) {
@@ -398,6 +464,10 @@ PYBIND11_MODULE(curvbench, m) {
           "status_code", &PyEstimate::status_code,
           "(n,) uint8 status as 0 ok, 1 degree_reduced, 2 failed, 3 excluded, 4 disk_cut, "
           "5 sign_undetermined, 6 partial, 7 reprojected.")
+      .def_readonly("recommendation", &PyEstimate::recommendation,
+                    "method='auto': the advice it followed, as curvbench.recommend() returns it "
+                    "(method, options, label, the mesh's quality and noise, the sweep's error); "
+                    "None for a named method.")
       .def("__len__", [](const PyEstimate& e) { return e.estimates.size(); })
       .def("__repr__", [](const PyEstimate& e) {
         return "<curvbench.Estimate " + e.method + " of " + std::to_string(e.estimates.size()) +
@@ -424,14 +494,17 @@ PYBIND11_MODULE(curvbench, m) {
 
 V: (n, 3) vertex positions, float64 or float32 (int32/int64 accepted), any strides.
 F: (m, 3) triangles as 0-based vertex indices, any integer dtype, any strides.
-method: a name of curvbench.methods(), case-insensitive; 'LHF-4' attaches the degree.
+method: a name of curvbench.methods(), case-insensitive; 'LHF-4' attaches the degree; or
+'auto': the estimator and radius curvbench.recommend() gives the mesh (then only threads and
+kernel may be given; the choice is in the result's recommendation).
 **options: any estimator option below, by keyword (None: its default). An option set for a
 method that does not take it raises UsageError, as on the command line.
 )") + options_doc() +
          std::string(R"(
 Returns a curvbench.Estimate: normal (n,3), k1, k2, H, K (n,), d1, d2 (n,3), degree, points,
-ring (n,), status (n,) str and status_code (n,) uint8, method (label). Identical, bit for bit,
-to `curvbench estimate` on the same mesh. The GIL is released while estimating.
+ring (n,), status (n,) str and status_code (n,) uint8, method (label), recommendation (a dict
+for method='auto', else None). Identical, bit for bit, to `curvbench estimate` on the same mesh.
+The GIL is released while estimating.
 
 Raises MeshError (a ValueError) for a wrong shape or dtype, an index out of range, a face
 repeating a vertex or a NaN/Inf coordinate; UsageError for an unknown method, an unsupported
@@ -472,6 +545,22 @@ vertex_set: 'all', 'interior' or 'boundary-ring'.
 Returns {quantity: {'L2': e, 'Linf': e, 'counted': vertices, 'excluded': vertices}} for the
 quantities 'normal' (absolute RMS and max), 'H', 'K', 'k1', 'k2' (relative norm ratios) and 'd1'
 (over non-umbilic vertices); excluded estimates (NaN by design) are left out and counted.)");
+
+  m.def("recommend", &py_recommend, py::arg("V"), py::arg("F"), py::arg("noise") = py::none(),
+        py::arg("results") = py::none(),
+        R"(The estimator and radius recommended for a mesh, as `curvbench recommend`.
+
+V, F: as for estimate(). noise: the mesh's noise sigma/h along the normal (None: estimated from
+the residuals of a degree-4 fit at each vertex). results: a folder holding the
+recommendations.csv to read (None: the table installed with curvbench, or the source tree's).
+Returns a dict: quality and quality_reason (the mesh's class and why), sigma_over_h, noise
+('estimated' or 'given'), noise_level (the table's nearest level), swept (False: no sweep ran at
+that level, and the fields of the choice are None), method and options (estimate(V, F,
+method=d['method'], **d['options']) runs the choice), label (the sweep's case), quantity, norm and
+error (the error the sweep measured), experiment, family and level (the mesh it measured on),
+table and provenance (the file read and its first comment line).
+Raises MeshError for a mesh it cannot classify (under 50 vertices, non-manifold) and for a
+missing, truncated or foreign table; UsageError for a negative noise.)");
 
   m.def("methods", &curvbench::methods, "Names accepted as estimate(method=...), without degree.");
 }

@@ -311,3 +311,44 @@ def test_mesh_options():
         curvbench.mesh("bump-anisotropic", 1, stretch=2)
     with pytest.raises(curvbench.UsageError, match="mesh option aspect: expected a number"):
         curvbench.mesh("bump-anisotropic", 1, aspect="wide")
+
+
+def test_auto_follows_the_recommendation_of_the_command_line(tmp_path):
+    # method="auto" runs the estimator and radius `curvbench recommend` names for the mesh, keeps
+    # the advice in est.recommendation, and gives what naming them gives.
+    import json
+
+    path = tmp_path / "bump.off"
+    r = cli("mesh", "--family", "bump-irregular", "--level", "2", "--output", path)
+    assert r.returncode == 0, r.stderr
+    r = cli("recommend", path, "--format", "json")
+    assert r.returncode == 0, r.stderr
+    want = json.loads(r.stdout)
+    V, F = curvbench.read_mesh(str(path))
+    rec = curvbench.recommend(V, F)
+    for key in ("quality", "quality_reason", "noise", "noise_level", "swept", "method", "label",
+                "quantity", "norm", "error", "table", "provenance"):
+        assert rec[key] == want[key], key
+    assert rec["sigma_over_h"] == pytest.approx(want["sigma_over_h"], rel=1e-12)
+    assert rec["options"] == {k.replace("-", "_"): v for k, v in want["options"].items()}
+    assert rec["quality"] == "irregular" and rec["swept"]
+    est = curvbench.estimate(V, F, method="auto")
+    assert est.recommendation == rec
+    named = curvbench.estimate(V, F, method=rec["method"], **rec["options"])
+    assert est.method == named.method == rec["label"].split(" ")[0]
+    for q in QUANTITIES:
+        assert np.array_equal(getattr(est, q), getattr(named, q), equal_nan=True), q
+    assert named.recommendation is None
+    # Given noise, another table; the run options only; bad tables name the file.
+    assert curvbench.recommend(V, F, noise=0.2)["noise_level"] == 0.1
+    assert curvbench.recommend(V, F, noise=0.2)["noise"] == "given"
+    assert curvbench.estimate(V, F, method="Auto", threads=1).method == est.method
+    with pytest.raises(curvbench.UsageError, match="rings cannot be given"):
+        curvbench.estimate(V, F, method="auto", rings=2)
+    with pytest.raises(curvbench.MeshError, match="recommendations.csv: not found"):
+        curvbench.recommend(V, F, results=str(tmp_path))
+    (tmp_path / "recommendations.csv").write_text("# x\nquality,sigma_over_h\nwell-shaped,0\n")
+    with pytest.raises(curvbench.MeshError, match="recommendations.csv: no column 'status'"):
+        curvbench.recommend(V, F, results=str(tmp_path))
+    with pytest.raises(curvbench.UsageError, match="sigma/h must be finite"):
+        curvbench.recommend(V, F, noise=-1.0)
