@@ -13,6 +13,7 @@
 #include "core/atomic_file.h"
 #include "core/build_info.h"
 #include "core/errors.h"
+#include "harness/recommend_table.h"
 #include "harness/report_site_assets.h"
 #include "mesh/io.h"
 #include "methods/estimator.h"
@@ -118,22 +119,6 @@ report::Table speed_table(const std::string& dir) {
 }
 
 }  // namespace
-
-std::string estimate_command(const std::string& label, const std::string& mesh,
-                             const std::string& output) {
-  std::istringstream words(label);
-  std::string method;
-  words >> method;
-  std::string lower;
-  for (char c : method) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  std::string cmd = "curvbench estimate " + mesh + " --method " + lower;
-  for (std::string kv; words >> kv;) {
-    const size_t eq = kv.find('=');
-    if (eq == std::string::npos) continue;
-    cmd += " --" + kv.substr(0, eq) + " " + kv.substr(eq + 1);
-  }
-  return cmd + " --output " + output;
-}
 
 // ---- REPORT.md -------------------------------------------------------------------------------
 
@@ -512,8 +497,11 @@ std::vector<report::Section> advice_sections(const std::string& dir) {
     const std::string best = t.text(i, cb);
     tab.add({t.text(i, cq), report::Cell::number(t.number(i, cs), t.text(i, cs)), best,
              report::Cell::number(t.number(i, ce), scientific(t.number(i, ce))),
-             "`" + estimate_command(best, "MESH", "MESH.csv") + "`", t.text(i, cc),
-             report::Cell::number(t.number(i, cce), scientific(t.number(i, cce)))});
+             "`" +
+                 estimate_command("curvbench", "MESH", estimator_choice(best), false,
+                                  advice_output_path("MESH")) +
+                 "`",
+             t.text(i, cc), report::Cell::number(t.number(i, cce), scientific(t.number(i, cce)))});
   }
   s.table(std::move(tab));
   return {s};

@@ -61,9 +61,4 @@ std::string write_site(const std::vector<Experiment>& experiments, const ReportC
                        const std::vector<LeaderRow>& board, const std::vector<ClaimView>& claims,
                        const ReportFiles& files);
 
-/// The `curvbench estimate` command for a recommended label ("LHF-4 rings=2", "ICC
-/// ball-factor=4", "Rusinkiewicz") on MESH, writing MESH's curvatures to OUTPUT.
-std::string estimate_command(const std::string& label, const std::string& mesh,
-                             const std::string& output);
-
 }  // namespace curvbench

@@ -1,6 +1,6 @@
 // The leaderboard (harness/leaderboard.h) and the report's pages (harness/report_pages.h): a class
 // with several meshes shows each estimator's worst; the CSV round-trips; the site is written
-// whole or not at all; the summary names the winners; the advice's command line.
+// whole or not at all; the summary names the winners.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -98,15 +98,6 @@ TEST(Leaderboard, TheSummaryNamesEachClassWinner) {
             std::string::npos)
       << "one line per miss, its cause's first sentence";
   EXPECT_LT(std::count(md.begin(), md.end(), '\n'), 150);
-}
-
-TEST(ReportPages, EstimateCommandSpellsTheRadius) {
-  EXPECT_EQ(estimate_command("LHF-4 rings=2", "m.off", "m.csv"),
-            "curvbench estimate m.off --method lhf-4 --rings 2 --output m.csv");
-  EXPECT_EQ(estimate_command("ICC ball-factor=4", "m.off", "o.csv"),
-            "curvbench estimate m.off --method icc --ball-factor 4 --output o.csv");
-  EXPECT_EQ(estimate_command("Rusinkiewicz", "m.off", "o.csv"),
-            "curvbench estimate m.off --method rusinkiewicz --output o.csv");
 }
 
 TEST(ReportPages, SiteIsWrittenWholeOrNotAtAll) {
