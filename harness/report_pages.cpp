@@ -13,6 +13,7 @@
 #include "core/atomic_file.h"
 #include "core/build_info.h"
 #include "core/errors.h"
+#include "harness/plot_styles.h"
 #include "harness/recommend_table.h"
 #include "harness/report_site_assets.h"
 #include "mesh/io.h"
@@ -346,17 +347,22 @@ std::string leaderboard_json(const std::vector<LeaderRow>& board) {
   return out.str();
 }
 
-// Accuracy against cost: per (mesh class, noise), the L2 error in H against microseconds per
-// vertex of every case of the sweeps and the field studies (each estimator and radius at each
-// level), one series per method, and the Pareto frontier (no other point both cheaper and more
-// accurate).
+// Accuracy against cost: per mesh and noise, the L2 error in H against microseconds per vertex of
+// every case of the sweeps and the field studies at the mesh's finest level (each estimator and
+// radius one point; a coarser level would only add points dominated by the finest), one series
+// per method, and the Pareto frontier (the cases no other case beats in both time and error).
 std::vector<report::Section> cost_sections(const std::vector<Experiment>& experiments,
                                            const std::string& dir) {
   struct P {
     double us, error;
-    std::string method, note;
+    std::string method, label, note;
   };
-  std::map<std::pair<std::string, std::string>, std::vector<P>> groups;
+  struct Group {
+    std::string title;
+    std::vector<P> points;
+  };
+  std::map<std::tuple<std::string, std::string, std::string>, Group> groups;
+  std::vector<std::tuple<std::string, std::string, std::string>> order;
   for (const Experiment& e : experiments) {
     const bool sweep = !e.sweep.empty();
     if (!sweep && e.name.rfind("field-", 0) != 0 && e.name != "hard-meshes") continue;
@@ -366,47 +372,65 @@ std::vector<report::Section> cost_sections(const std::vector<Experiment>& experi
     for (const TimingRow& t : read_timing_csv(tcsv))
       if (t.vertices > 0 && std::isfinite(t.seconds))
         us[{t.family, t.level, t.method}] = 1e6 * t.seconds / t.vertices;
-    for (const ErrorRow& r : read_error_csv(csv)) {
-      if (r.quantity != "H" || r.norm != "L2" || r.vertex_set != "all") continue;
+    const std::vector<ErrorRow> rows = read_error_csv(csv);
+    std::map<std::pair<std::string, std::string>, int> finest;  // (family, noise) -> level
+    for (const ErrorRow& r : rows) {
+      int& f = finest[{r.family, r.noise}];
+      f = std::max(f, r.level);
+    }
+    for (const ErrorRow& r : rows) {
+      if (r.quantity != "H" || r.norm != "L2" || r.vertex_set != "all" ||
+          r.level != finest[{r.family, r.noise}])
+        continue;
       const auto t = us.find({r.family, r.level, r.method});
       if (t == us.end() || !std::isfinite(r.error) || r.error <= 0) continue;
       std::string cls;
       for (const MeshClassRule& c : mesh_classes())
-        if (c.member(e.name, r.family, "none", "all")) {
-          cls = c.title;
+        if (c.member(e.name, r.family, r.noise, "all")) {
+          cls = c.title + ": ";
           break;
         }
-      if (cls.empty()) cls = r.family;
-      groups[{cls, r.noise}].push_back(
-          {t->second, r.error, r.method,
-           r.method + ", " + r.family + " level " + std::to_string(r.level) + " (" + e.name + ")"});
+      const auto key = std::make_tuple(e.name, r.family, r.noise);
+      auto [it, inserted] = groups.try_emplace(key);
+      if (inserted) {
+        order.push_back(key);
+        it->second.title = cls + r.family + " level " + std::to_string(r.level) + " (" +
+                           std::to_string(r.vertices) + " vertices), noise " + r.noise + ", " +
+                           e.name;
+      }
+      const std::string method = r.method.substr(0, r.method.find(' '));
+      it->second.points.push_back({t->second, r.error, method, r.method, r.method});
     }
   }
   std::vector<report::Section> out;
   int n = 0;
-  for (auto& [key, pts] : groups) {
+  for (const auto& key : order) {
+    const Group& g = groups[key];
     report::Section s;
     s.id = "cost-" + std::to_string(++n);
-    s.title = key.first + ", noise " + key.second;
+    s.title = g.title;
     report::Plot plot;
     plot.id = s.id;
-    plot.title = "L2 error in H against time per vertex: " + s.title;
+    plot.title = "L2 error in H against time per vertex: " + g.title;
     plot.x_label = "time per vertex (microseconds)";
     plot.y_label = "L2 error in H";
     plot.reverse_x = false;
     std::vector<std::string> methods;
-    for (const P& p : pts)
+    for (const P& p : g.points)
       if (std::find(methods.begin(), methods.end(), p.method) == methods.end())
         methods.push_back(p.method);
-    for (const std::string& m : methods) {
+    const std::vector<PlotStyle> styles = plot_styles(methods);
+    for (size_t i = 0; i < methods.size(); ++i) {
       report::Series se;
-      se.label = m;
+      se.label = methods[i];
+      se.color = styles[i].colour;
+      se.marker = styles[i].marker;
       se.points_only = true;
-      for (const P& p : pts)
-        if (p.method == m) se.points.push_back({p.us, p.error, p.note});
+      for (const P& p : g.points)
+        if (p.method == methods[i]) se.points.push_back({p.us, p.error, p.note});
       plot.series.push_back(std::move(se));
     }
-    std::vector<P> sorted = pts;
+    std::vector<P> sorted = g.points;
     std::sort(sorted.begin(), sorted.end(), [](const P& a, const P& b) {
       return a.us < b.us || (a.us == b.us && a.error < b.error);
     });
@@ -416,18 +440,20 @@ std::vector<report::Section> cost_sections(const std::vector<Experiment>& experi
     front.marker = 0;
     front.dash = 2;
     report::Table tab;
-    tab.caption = "The Pareto frontier: no other case is both cheaper and more accurate.";
+    tab.caption =
+        "The Pareto frontier, cheapest first: no other case is both cheaper and more "
+        "accurate.";
     tab.columns = {"case", "us/vertex", "L2 error in H"};
     double best = INFINITY;
     for (const P& p : sorted)
       if (p.error < best) {
         best = p.error;
         front.points.push_back({p.us, p.error, p.note});
-        tab.add({p.note, report::Cell::number(p.us, two_decimals(p.us)),
+        tab.add({p.label, report::Cell::number(p.us, two_decimals(p.us)),
                  report::Cell::number(p.error, scientific(p.error))});
       }
     plot.series.push_back(std::move(front));
-    s.text(std::to_string(pts.size()) + " cases.");
+    s.text(std::to_string(g.points.size()) + " cases (estimator and radius).");
     s.plot(std::move(plot));
     s.table(std::move(tab));
     out.push_back(std::move(s));
@@ -599,9 +625,10 @@ std::string write_site(const std::vector<Experiment>& experiments, const ReportC
       const std::vector<report::Section> cost = cost_sections(experiments, dir);
       write_page(kPages[2],
                  "<p class=\"lead\">The L2 error in H against the time per vertex of every "
-                 "estimator and radius of the sweeps and the field studies, at every level, per "
-                 "mesh class and noise. The dashed black line is the Pareto frontier: the cases "
-                 "that no other case beats in both time and error. Lower left is better.</p>\n" +
+                 "estimator and radius of the sweeps and the field studies, one chart per mesh "
+                 "(at its finest level) and noise, titled with the mesh's class. The dashed "
+                 "black line is the Pareto frontier: the cases that no other case beats in both "
+                 "time and error. Lower left is better; hover a point for its case.</p>\n" +
                      sections_html(cost),
                  cost);
     }

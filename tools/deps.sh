@@ -21,6 +21,8 @@ packages=(
   python3-vtk9             # VTK for /usr/bin/python3: the vtk-curvatures method of the field
                            # study (experiments/examples/vtk_curvatures.py; skipped without it)
   gnuplot-nox              # convergence plots (PNG and SVG)
+  libjs-chart.js           # the results site's charts (copied into results/site/, no CDN)
+  chromium chromium-driver python3-selenium  # the results site's browser test (ctest site.*)
   time                     # /usr/bin/time -v: peak memory in make bench
 )
 case "$mode" in

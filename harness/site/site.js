@@ -313,6 +313,23 @@
       });
       writeHash(state);
     }
+    // A link or the back button changing the hash: the view follows it.
+    function syncControls() {
+      ["q", "norm", "noise"].forEach(function (name) {
+        document.getElementById("lb-" + name).value = state[name];
+      });
+      ["hide", "classes"].forEach(function (name) {
+        var off = state[name].split(",");
+        document.querySelectorAll("#lb-" + name + " input").forEach(function (c) {
+          c.checked = off.indexOf(c.value) < 0;
+        });
+      });
+    }
+    window.addEventListener("hashchange", function () {
+      state = Object.assign({}, defaults, readHash());
+      syncControls();
+      render();
+    });
     render();
   }
 
