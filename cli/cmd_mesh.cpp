@@ -13,6 +13,7 @@
 #include "core/errors.h"
 #include "core/text.h"
 #include "harness/paper_tables.h"
+#include "harness/report.h"
 #include "mesh/io.h"
 #include "meshgen/generate.h"
 #include "meshgen/torus_isosurface.h"
@@ -109,37 +110,9 @@ std::string level_ranges() {
   return s;
 }
 
+// The Table 4 section of the report, rendered as markdown (one rendering of the table).
 int print_table4(int max_grid) {
-  const std::vector<Table4Row> rows = table4(max_grid);
-  std::printf(
-      "Table 4 reproduction: marching cubes of the torus SDF on [-1.5,1.5]^3 with n^3 samples,\n"
-      "vertex distances to the torus R=1, r=0.3 (docs/algorithms.md 10.1a). 'mean edge' is the\n"
-      "true mean edge length; the paper's column equals mean/2 (its h = sum of edge lengths / "
-      "3F).\n"
-      "Rates: log2(err(n/2) / err(n)). Paper values in brackets.\n\n");
-  std::printf("%5s %16s %10s %16s %21s %21s %13s %13s\n", "n", "verts [paper]", "mean edge",
-              "mean/2 [paper]", "L2 (RMS) [paper]", "Linf (max) [paper]", "rate L2", "rate Linf");
-  for (size_t i = 0; i < rows.size(); ++i) {
-    const Table4Row& r = rows[i];
-    const paper::Table4Row* p = nullptr;
-    for (const auto& pr : paper::kTable4)
-      if (pr.grid_points == r.grid_points) p = &pr;
-    char verts[32], half[32], l2[40], linf[40], rl2[32] = "-", rlinf[32] = "-";
-    std::snprintf(verts, sizeof verts, "%d [%d]", r.vertices, p ? p->vertices : 0);
-    std::snprintf(half, sizeof half, "%.4f [%.2g]", r.mean_edge_length / 2,
-                  p ? p->edge_column : NAN);
-    std::snprintf(l2, sizeof l2, "%.3e [%.2e]", r.rms_error, p ? p->l2 : NAN);
-    std::snprintf(linf, sizeof linf, "%.3e [%.2e]", r.max_error, p ? p->linf : NAN);
-    if (i > 0) {
-      const Table4Row& prev = rows[i - 1];
-      std::snprintf(rl2, sizeof rl2, "%.2f [%.2f]", std::log2(prev.rms_error / r.rms_error),
-                    p ? p->rate_l2 : NAN);
-      std::snprintf(rlinf, sizeof rlinf, "%.2f [%.2f]", std::log2(prev.max_error / r.max_error),
-                    p ? p->rate_linf : NAN);
-    }
-    std::printf("%5d %16s %10.4f %16s %21s %21s %13s %13s\n", r.grid_points, verts,
-                r.mean_edge_length, half, l2, linf, rl2, rlinf);
-  }
+  std::printf("%s", report::to_markdown(table4_section(table4(max_grid)), 1).c_str());
   return 0;
 }
 

@@ -305,49 +305,71 @@ report::Section table2_section(const std::string& dir) {
   return s.table(std::move(tab));
 }
 
-report::Section table4_section(const std::string& dir) {
+}  // namespace
+
+report::Section table4_section(const std::vector<Table4Row>& rows) {
   report::Section s{
       "table4", "Table 4. Input position errors of torus meshes extracted by marching cubes", {}};
-  const std::string csv = dir + "/table4.csv";
-  if (!fs::exists(csv)) return s;
-  const CsvTable t = read_csv_table(csv);
   s.text(
       "Signed distance function of the torus (R = 1, r = 0.3) sampled at n points per axis "
       "on [-1.5, 1.5]^3, one vertex per sign-changing grid edge (docs/algorithms.md §10.1(a))."
-      " The paper's \"average edge length\" column equals half the true mean edge length "
-      "(see the last two columns).");
+      " Rates: log2(e(n/2) / e(n)). The paper's \"average edge length\" column equals half "
+      "the true mean edge length (see the last two columns).");
   report::Table tab;
   tab.id = "table4";
   tab.columns = {"n",
                  "#verts (ours / paper)",
                  "L2 (ours / paper)",
                  "Linf (ours / paper)",
-                 "rate L2",
-                 "rate Linf",
+                 "rate L2 (ours / paper)",
+                 "rate Linf (ours / paper)",
                  "mean edge length",
                  "its half / paper's column"};
-  const size_t cg = t.col("grid_points"), cv = t.col("vertices"), ch = t.col("mean_edge_length"),
-               cr = t.col("rms_error"), cm = t.col("max_error");
-  for (size_t i = 0; i < t.rows.size(); ++i) {
-    const double h = t.number(i, ch), rms = t.number(i, cr), mx = t.number(i, cm);
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const Table4Row& r = rows[i];
+    const paper::Table4Row* p = nullptr;
+    for (const auto& pr : paper::kTable4)
+      if (pr.grid_points == r.grid_points) p = &pr;
+    const auto paper_rate = [&](double x) { return p && std::isfinite(x) ? two_decimals(x) : "-"; };
     report::Cell rate_l2("-"), rate_inf("-");
     if (i > 0) {
-      const double r2 = std::log2(t.number(i - 1, cr) / rms);
-      const double ri = std::log2(t.number(i - 1, cm) / mx);
-      rate_l2 = report::Cell::number(r2, two_decimals(r2));
-      rate_inf = report::Cell::number(ri, two_decimals(ri));
+      const double r2 = std::log2(rows[i - 1].rms_error / r.rms_error);
+      const double ri = std::log2(rows[i - 1].max_error / r.max_error);
+      rate_l2 = report::Cell::number(r2, two_decimals(r2) + " / " + paper_rate(p ? p->rate_l2 : 0));
+      rate_inf =
+          report::Cell::number(ri, two_decimals(ri) + " / " + paper_rate(p ? p->rate_linf : 0));
     }
-    const paper::Table4Row* p = i < paper::kTable4.size() ? &paper::kTable4[i] : nullptr;
-    tab.add({report::Cell::number(t.number(i, cg), t.text(i, cg) + "^3"),
-             report::Cell::number(t.number(i, cv),
-                                  t.text(i, cv) + " / " + (p ? std::to_string(p->vertices) : "-")),
-             report::Cell::number(rms, sci(rms) + " / " + (p ? paper_sci(p->l2) : "-")),
-             report::Cell::number(mx, sci(mx) + " / " + (p ? paper_sci(p->linf) : "-")), rate_l2,
-             rate_inf, report::Cell::number(h, sci(h, 3)),
-             report::Cell::number(0.5 * h,
-                                  sci(0.5 * h, 2) + " / " + (p ? paper_g(p->edge_column) : "-"))});
+    const double h = r.mean_edge_length;
+    tab.add(
+        {report::Cell::number(r.grid_points, std::to_string(r.grid_points) + "^3"),
+         report::Cell::number(r.vertices, std::to_string(r.vertices) + " / " +
+                                              (p ? std::to_string(p->vertices) : "-")),
+         report::Cell::number(r.rms_error, sci(r.rms_error) + " / " + (p ? paper_sci(p->l2) : "-")),
+         report::Cell::number(r.max_error,
+                              sci(r.max_error) + " / " + (p ? paper_sci(p->linf) : "-")),
+         rate_l2, rate_inf, report::Cell::number(h, sci(h, 3)),
+         report::Cell::number(0.5 * h,
+                              sci(0.5 * h, 2) + " / " + (p ? paper_g(p->edge_column) : "-"))});
   }
   return s.table(std::move(tab));
+}
+
+namespace {
+
+// Table 4 from results/table4.csv (write_table4_csv).
+report::Section table4_section(const std::string& dir) {
+  const std::string csv = dir + "/table4.csv";
+  if (!fs::exists(csv))
+    return {
+        "table4", "Table 4. Input position errors of torus meshes extracted by marching cubes", {}};
+  const CsvTable t = read_csv_table(csv);
+  const size_t cg = t.col("grid_points"), cv = t.col("vertices"), ch = t.col("mean_edge_length"),
+               cr = t.col("rms_error"), cm = t.col("max_error");
+  std::vector<Table4Row> rows;
+  for (size_t i = 0; i < t.rows.size(); ++i)
+    rows.push_back(
+        {t.integer(i, cg), t.integer(i, cv), t.number(i, ch), t.number(i, cr), t.number(i, cm)});
+  return table4_section(rows);
 }
 
 // A section still written as markdown by its own writer: one Text block.

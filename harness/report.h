@@ -16,6 +16,7 @@
 #include "harness/experiment.h"
 #include "harness/report_model.h"
 #include "harness/results_table.h"
+#include "meshgen/torus_isosurface.h"
 
 namespace curvbench {
 
@@ -30,6 +31,9 @@ struct ReportOptions {
 void write_table2_csv(const std::string& path);
 /// Writes results/table4.csv from the marching-cubes torus meshes up to max_grid_points.
 void write_table4_csv(const std::string& path, int max_grid_points);
+/// The paper's Table 4 beside ours: the one rendering of it (the report, `curvbench mesh
+/// --table4`).
+report::Section table4_section(const std::vector<Table4Row>& rows);
 
 /// Everything the report shows, as sections of the report model (report_model.h), built once
 /// and rendered to markdown (REPORT.md's details in results/report/) and to HTML (the site).
