@@ -1084,3 +1084,54 @@ TEST(Claims, SensitivityTableHasBothRateFormulas) {
 
 }  // namespace
 }  // namespace curvbench
+
+namespace curvbench {
+namespace {
+
+// D6's Why line runs D6's whole check with degree 4 one level finer (boundary ring from
+// diag-d6-level5, all vertices from diag-d5-level5): the levels are a cause only if that check is
+// reproduced; without LSCM-4's level-5 rows it cannot be, and the finding is tried.
+TEST(Claims, D6LevelsAreACauseOnlyIfTheWholeCheckHoldsOneLevelFiner) {
+  auto d6_levels = [](bool with_lscm) {
+    SyntheticSet s = ideal_set();
+    // LHF-4's boundary-ring H on the irregular bump at 2.3 over levels 1-4 (band [2.5, 3.7]).
+    s.set("fig13-14", "bump-irregular", "LHF-4", "H", "L2", 1.0, 2.3);
+    const std::vector<int> l15 = {1, 2, 3, 4, 5};
+    for (const std::string fam : {"bump-irregular", "bump-48"})
+      for (const std::string q : {"normal", "H", "K"}) {
+        const bool n = q == "normal";
+        s.add("diag-d6-level5", fam, l15, "LHF-4", "2.5", "none", "boundary-ring", q, "L2", 1.0,
+              n ? 4.0 : 3.0);
+        if (with_lscm)
+          s.add("diag-d6-level5", fam, l15, "LSCM-4", "2.5", "none", "boundary-ring", q, "L2", 1.5,
+                n ? 3.6 : 2.6);
+        s.add("diag-d5-level5", fam, l15, "LHF-4", "2.5", "none", "all", q, "L2", 1.0,
+              n ? 4.0 : 3.6);
+        s.add("diag-d5-level5", fam, l15, "LSCM-4", "2.5", "none", "all", q, "L2", 2.0,
+              n ? 3.5 : 2.5);
+      }
+    TempDir dir;
+    write_ideal(dir, s);
+    const auto results = evaluate_claims(dir.str());
+    EXPECT_EQ(claim(results, "D6").verdict, Verdict::not_reproduced)
+        << claim(results, "D6").evidence;
+    for (const auto& f : claim(results, "D6").why_findings)
+      if (f.text.find("diag-d6-level5") != std::string::npos) return f;
+    ADD_FAILURE() << claim(results, "D6").why;
+    return WhyFinding{};
+  };
+  const WhyFinding complete = d6_levels(true);
+  EXPECT_EQ(complete.kind, CauseKind::cause_removed_passes) << complete.text;
+  EXPECT_NE(complete.text.find("D6's check with degree 4 over levels 1-5 is reproduced"),
+            std::string::npos)
+      << complete.text;
+  const WhyFinding lhf_only = d6_levels(false);
+  EXPECT_EQ(lhf_only.kind, CauseKind::tried) << lhf_only.text;
+  EXPECT_NE(lhf_only.text.find("[missing] bump-irregular LSCM-4 normal L2: no rows of "
+                               "diag-d6-level5"),
+            std::string::npos)
+      << lhf_only.text;
+}
+
+}  // namespace
+}  // namespace curvbench
