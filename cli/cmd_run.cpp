@@ -81,6 +81,7 @@ struct RunArgs {
   std::string shard;  ///< "K/N"
   std::string cache;  ///< case store folder ("" = <output>/.cache)
   bool report_only = false;
+  bool claims_only = false;
   bool no_plots = false;
   bool no_readings = false;
   bool force = false;
@@ -134,6 +135,9 @@ Command add_run_command(CLI::App& app) {
                 "Compute nothing: write the experiment CSVs from the case store, then rates, "
                 "REPORT.md, plots and CLAIMS.md; fails naming the missing cases if the store is "
                 "incomplete (an experiment with no stored case keeps its existing CSV)");
+  sub->add_flag("--claims-only", args->claims_only,
+                "Compute nothing and rewrite nothing but <output>/CLAIMS.md, from the CSVs "
+                "already in <output> and <output>/readings/");
   sub->add_flag("--no-plots", args->no_plots, "Do not render plots");
   sub->add_flag("--no-readings", args->no_readings,
                 "Do not run the experiments under the alternative readings of the paper "
@@ -160,6 +164,21 @@ Command add_run_command(CLI::App& app) {
       "the outputs instead of the current time, so that two runs give byte-identical files.");
 
   return [args]() {
+    if (args->claims_only) {
+      if (args->report_only || !args->shard.empty() || !args->experiments.empty() || args->all)
+        throw UsageError("--claims-only takes no experiments, --all, --shard or --report-only");
+      int rep = 0, notrep = 0, na = 0;
+      for (const auto& c : write_claims(args->output)) {
+        rep += c.verdict == Verdict::reproduced;
+        notrep += c.verdict == Verdict::not_reproduced;
+        na += c.verdict == Verdict::not_applicable;
+      }
+      std::fprintf(stderr,
+                   "[run] wrote %s/CLAIMS.md: %d reproduced, %d not reproduced, %d not "
+                   "applicable\n",
+                   args->output.c_str(), rep, notrep, na);
+      return 0;
+    }
     auto available = load_experiments(args->experiments_dir, args->full);
     if (args->list) {
       for (const auto& e : available)

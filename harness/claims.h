@@ -61,6 +61,30 @@ struct Band {
 /// "reproduced", "not reproduced", "not applicable".
 const char* to_string(Verdict v);
 
+/// What one finding of a Why line establishes (docs/claims.md, "Why lines"). Only the first two
+/// kinds may be called a cause; the line says which kind each finding is.
+enum class CauseKind {
+  /// With it removed (another reading, a vertex subset, a finer level, another solver) the
+  /// claim's own check is reproduced.
+  cause_removed_passes,
+  /// A measured mechanism predicts the size of the miss.
+  mechanism_predicts,
+  /// Where the miss is (which quantities, vertices, levels), not why.
+  localised,
+  /// A diagnostic that was run and neither removes nor explains the miss.
+  tried,
+};
+bool is_cause(CauseKind kind);
+
+struct WhyFinding {
+  CauseKind kind = CauseKind::tried;
+  std::string text;  ///< what was measured, with its numbers; never says "cause" itself
+};
+
+/// The Why line of `findings`: the causes (each with its kind), then what was localised and what
+/// was tried; "No cause found." first when no finding is a cause.
+std::string why_text(const std::vector<WhyFinding>& findings);
+
 struct ClaimResult {
   std::string id;         ///< "A1" ... "G4"
   std::string statement;  ///< the paper's wording (docs/claims.md)
@@ -72,9 +96,11 @@ struct ClaimResult {
   /// outcome differs from `evidence` are in halving_evidence (empty if the verdicts agree).
   Verdict halving_verdict = Verdict::not_applicable;
   std::string halving_evidence;
-  /// For a claim not reproduced: the cause where one is measured (the rate formula, the mesh
-  /// shape: the same check on the jittered and structured tori, or an experiment named by the
-  /// registry entry), else "no cause found" with what was tried. Empty otherwise.
+  /// For a claim not reproduced: what its diagnostics establish (the rate formula, the mesh
+  /// shape: the same check on the jittered and structured tori, the experiments named by the
+  /// registry entry), each finding with its kind, and the line why_text makes of them (without
+  /// the readings, which claims_markdown adds). Empty otherwise.
+  std::vector<WhyFinding> why_findings;
   std::string why;
   /// A re-read band (claims_kit.h ClaimEntry::original_band): the band fixed in advance, the
   /// reason for the re-reading and the verdict and evidence under the original band.
@@ -106,6 +132,54 @@ struct ReadingResults {
 /// The claims under each alternative reading whose folder (readings.h reading_folder) holds
 /// CSVs, in the readings table's order.
 std::vector<ReadingResults> evaluate_readings(const std::string& results_dir);
+
+/// One choice of a reading (readings.h), or of the rate formula ("rate-formula": "measured-h",
+/// the adopted one, or "level-halving", the paper's).
+struct ReadingPick {
+  std::string reading, choice;
+  bool operator==(const ReadingPick&) const = default;
+};
+
+/// Two claims that no one consistent choice of readings reproduces together, each reproduced
+/// under some choice; `why` names the choices each needs, e.g. "E5 needs noise-alpha =
+/// uniform-0.1 or gaussian-0.033; E9 needs noise-alpha = gaussian-0.1".
+struct IncompatiblePair {
+  std::string a, b, why;
+  /// false when a choice that picks two alternatives touching one of the claims (never run
+  /// together, so its verdict is undetermined) might still reproduce both: a joint run would
+  /// decide the pair.
+  bool decided = true;
+};
+
+/// The summary counts of CLAIMS.md, for the report, the site and README's headline.
+struct ClaimCounts {
+  int total = 0;
+  /// Reproduced under the bands fixed in advance, the adopted readings and our rate formula.
+  int fixed_bands = 0;
+  /// The same with the re-read bands (ClaimResult::original_band); `reread` lists those claims.
+  int reread_bands = 0;
+  std::vector<std::string> reread;
+  /// Under the re-read bands and the adopted readings.
+  int not_reproduced = 0, not_applicable = 0;
+  /// The largest number reproduced (re-read bands) under one consistent choice: one choice per
+  /// reading that has alternatives in the results, and one rate formula. `best_choice` lists the
+  /// picks that differ from the adopted ones (empty: the adopted choice is best); gained and lost
+  /// are the claims whose verdict that choice changes against the adopted one. A claim touched
+  /// by two of the picked alternatives at once was never run under both together: it is not
+  /// counted and is listed in `undetermined`.
+  int best = 0;
+  std::vector<ReadingPick> best_choice;
+  std::vector<std::string> best_gained, best_lost, undetermined;
+  int choices_searched = 0;  ///< the number of consistent choices compared
+  std::vector<IncompatiblePair> incompatible;
+};
+
+/// The counts over `results` (adopted readings) and the alternatives' results
+/// (evaluate_readings). A claim's verdict under a choice is that of the one picked alternative
+/// whose evidence differs from the adopted one (with the picked rate formula); a conjunction's
+/// (G) is recomputed from its cited claims under the same choice.
+ClaimCounts claim_counts(const std::vector<ClaimResult>& results,
+                         const std::vector<ReadingResults>& alternatives);
 
 /// Markdown: title, header_line (build info and date), a count per verdict, a summary table,
 /// the readings' sensitivity table (if any alternatives), then one section "## <id>. ..." per

@@ -46,6 +46,8 @@ class Check {
   void missing(const std::string& text);
   Verdict verdict() const;
   std::string evidence() const;
+  /// The lines so far, tagged ("[ok] ...", "[FAIL] ...", "[missing] ...", "[info] ...").
+  const std::vector<std::string>& lines() const { return lines_; }
 
  private:
   std::vector<std::string> lines_;
@@ -206,10 +208,11 @@ struct ClaimEntry {
   std::map<std::string, Band> bands;
   std::function<void(const Data&, Check&)> check;
   std::vector<std::string> all_of;
-  /// A measured cause of a miss from a diagnostic experiment in the CSVs (e.g. another solver),
-  /// for the "Why" line when the claim is not reproduced; returns "" when there is none, or
-  /// "tried ..." for a diagnostic that was run and does not explain the miss.
-  std::function<std::string(const Data&)> why = nullptr;
+  /// The findings of the entry's diagnostics in the CSVs (e.g. another solver, a finer level),
+  /// for the "Why" line when the claim is not reproduced, each with its kind (claims.h
+  /// CauseKind: a cause only when the claim's check is reproduced with it removed, or when a
+  /// measured mechanism predicts the size of the miss); empty when the diagnostics were not run.
+  std::function<std::vector<WhyFinding>(const Data&)> why = nullptr;
   /// A band re-read (docs/claims.md, "Bands re-read"): the band fixed in advance, its check and
   /// why it misread the sentence (the paper's printed precision, a quantity it did not
   /// measure). CLAIMS.md gives the verdict under both; `band` and `check` are the re-read ones.
@@ -217,6 +220,12 @@ struct ClaimEntry {
   std::function<void(const Data&, Check&)> original_check = nullptr;
   std::string reread_reason = {};
 };
+
+/// One finding of `kind` (none if `text` is empty).
+inline std::vector<WhyFinding> finding(CauseKind kind, std::string text) {
+  if (text.empty()) return {};
+  return {{kind, std::move(text)}};
+}
 
 // One function per paper section, each returning its entries in order.
 std::vector<ClaimEntry> exact_claims();       // A1-A5  (claims_exact.cpp)

@@ -59,9 +59,9 @@ std::string ratio_list(const Series& a, const Series& b, double& max_ratio) {
   return join(values, ", ");
 }
 
-// D1's measured cause: the K spread of the degree-2 fits split into the interior vertices
+// D1's Why line (localised): the K spread of the degree-2 fits split into the interior vertices
 // (diag-d-bump-interior) and the boundary ring (fig13-14), and the LSCM map's solver.
-std::string why_d1(const Data& d, const Band& band) {
+std::vector<WhyFinding> why_d1(const Data& d, const Band& band) {
   std::vector<std::string> parts;
   bool interior_outside = false, ring_inside = true;
   for (const auto& fam : bumps()) {
@@ -72,7 +72,7 @@ std::string why_d1(const Data& d, const Band& band) {
     const Series* fast = interior(d, scratch, fam, "LSCM-fast-2", "K");
     const Series* lhf_ring = boundary_ring(d, scratch, fam, "LHF-2", "K");
     const Series* lscm_ring = boundary_ring(d, scratch, fam, "LSCM-2", "K");
-    if (!lhf || !lop || !lscm || !fast || !lhf_ring || !lscm_ring) return "";
+    if (!lhf || !lop || !lscm || !fast || !lhf_ring || !lscm_ring) return {};
     double m_in = 0.0, m_ring = 0.0, m_lop = 0.0, m_fast = 0.0;
     const std::string in = ratio_list(*lscm, *lhf, m_in);
     const std::string ring = ratio_list(*lscm_ring, *lhf_ring, m_ring);
@@ -87,24 +87,26 @@ std::string why_d1(const Data& d, const Band& band) {
   const std::string numbers =
       "diagnostic diag-d-bump-interior (REPORT.md), K L2 of LSCM-2 / LHF-2 at levels 1-4: " +
       join(parts, "; ");
-  if (!(interior_outside && ring_inside)) return "tried " + numbers;
-  return "the LSCM map on the interior: " + numbers +
-         ". The three fits agree on the boundary ring; the spread is LSCM-2's Gaussian curvature "
-         "at the interior vertices, the same with the fast solve of the same map, so it comes "
-         "from the conformal parameterization, not from the solver or the boundary";
+  if (!(interior_outside && ring_inside)) return finding(CauseKind::tried, numbers);
+  return finding(CauseKind::localised,
+                 "the LSCM map on the interior: " + numbers +
+                     "; the three fits agree on the boundary ring, and the spread is LSCM-2's "
+                     "Gaussian curvature at the interior vertices, the same with the fast solve "
+                     "of the same map: in the conformal parameterization, not in the solver or "
+                     "at the boundary");
 }
 
-// D2's measured cause: the degree-2 H rates over the interior (diag-d-bump-interior), over the
-// boundary ring (fig13-14) and over all vertices (fig09-10), against the tori's: how much the
+// D2's Why line (localised): the degree-2 H rates over the interior (diag-d-bump-interior), over
+// the boundary ring (fig13-14) and over all vertices (fig09-10), against the tori's: how much the
 // boundary lowers each bump's rate, and where the interior itself sets it.
-std::string why_d2(const Data& d, const std::vector<std::string>& tori, double gap) {
+std::vector<WhyFinding> why_d2(const Data& d, const std::vector<std::string>& tori, double gap) {
   std::vector<std::string> parts;
   for (const auto& fam : bumps()) {
     Check scratch;
     const Series* in = interior(d, scratch, fam, "LHF-2", "H");
     const Series* ring = boundary_ring(d, scratch, fam, "LHF-2", "H");
     const Series* all = bump(d, scratch, fam, "LHF-2", "H", "L2");
-    if (!in || !ring || !all) return "";
+    if (!in || !ring || !all) return {};
     const double loss = in->rate() - all->rate();
     parts.push_back(
         fam + ": interior " + f2(in->rate()) + ", boundary ring " + f2(ring->rate()) +
@@ -119,20 +121,23 @@ std::string why_d2(const Data& d, const std::vector<std::string>& tori, double g
     if (const Series* t = torus2(d, scratch, tor, "LHF-2", "H", "L2"))
       torus_rates.push_back(tor + " " + f2(t->rate()));
   }
-  return "the rates split by vertex set (diagnostic diag-d-bump-interior, REPORT.md), LHF-2 H "
-         "L2: " +
-         join(parts, "; ") + "; the tori the bump is compared with converge at " +
-         join(torus_rates, ", ") +
-         ", below the symmetric-stencil rate 2 themselves, so a bump whose interior is as "
-         "symmetric as the 4-8 mesh's ends level with them";
+  return finding(CauseKind::localised,
+                 "the rates split by vertex set (diagnostic diag-d-bump-interior, REPORT.md), "
+                 "LHF-2 H L2: " +
+                     join(parts, "; ") + "; the tori the bump is compared with converge at " +
+                     join(torus_rates, ", ") +
+                     ", below the symmetric-stencil rate 2 themselves, so a bump whose interior "
+                     "is as symmetric as the 4-8 mesh's ends level with them");
 }
 
-// One diagnostic of D5: a cause (the rate gap holds on every bump under it, or for the levels the
-// order loss of LSCM-4 shows) or one more thing tried; `text` says what was measured.
+// One diagnostic of D5: a cause when the rate gap holds on every bump under it (D5's check is
+// reproduced with the diagnostic's change), else localised or tried; `text` says what was
+// measured.
 struct D5Finding {
-  bool cause = false;
+  bool cause = false;  ///< the gap holds on every bump
   std::string text;
   std::vector<std::string> short_of;  ///< the bumps where the gap misses the band
+  bool localised = false;             ///< not a cause, but where the miss starts
 };
 
 // rate(LHF-4) - rate(<lscm>) for normals and H (L2) on each bump, from `series(family, method, q)`;
@@ -241,59 +246,101 @@ D5Finding d5_levels(const Data& d, const Band& band) {
                               "; rate(LHF-4) - rate(LSCM-4) from level 4 to 5 is " + f.text;
   if (f.cause || !falls_everywhere) {
     f.text =
-        "the levels: one level finer than the paper's four (diagnostic diag-d5-level5, "
-        "REPORT.md), " +
-        numbers;
+        "one level finer than the paper's four (diagnostic diag-d5-level5, REPORT.md), " + numbers;
     return f;
   }
-  f.cause = true;
+  // The fall is where the miss is, not a cause: the gap is still short one level finer.
+  f.localised = true;
   f.text =
-      "the levels: LSCM-4 starts to lose its order on the bump only at level 5 (diagnostic "
-      "diag-d5-level5, REPORT.md): its H rate from level 4 to 5 falls below its earlier "
-      "level-to-level rates by " +
-      join(drops, ", ") + ", the start of the order the tori lose from level 1 (claim C5); " +
-      numbers + "; where the gap is still short, LHF-4's H rate from level 4 to 5 is " +
-      join(at_theory, ", ") +
+      "one level finer than the paper's four (diagnostic diag-d5-level5, REPORT.md), LSCM-4's "
+      "H rate from level 4 to 5 falls below its earlier level-to-level rates by " +
+      join(drops, ", ") +
+      ", as the tori's does from level 1 (claim C5), but the gap is still short there: " + numbers +
+      "; where it is short, LHF-4's H rate from level 4 to 5 is " + join(at_theory, ", ") +
       (lhf_at_theory ? ", its theoretical d - 1 = 3, so the gap reaches 1.0 only once LSCM-4 "
-                       "has lost a whole order"
+                       "has lost a whole order, which levels 1-5 do not show"
                      : "");
   return f;
 }
 
-// D5's Why line from its three diagnostics: the causes first, then what was tried.
-std::string why_d5(const Data& d, const Band& band) {
-  std::vector<std::string> causes, tried;
+// D5's Why line from its three diagnostics.
+std::vector<WhyFinding> why_d5(const Data& d, const Band& band) {
+  std::vector<WhyFinding> out;
   for (const D5Finding& f : {d5_levels(d, band), d5_interior(d, band), d5_solver(d, band)}) {
     if (f.text.empty()) continue;
-    (f.cause ? causes : tried).push_back(f.text);
+    out.push_back({f.cause       ? CauseKind::cause_removed_passes
+                   : f.localised ? CauseKind::localised
+                                 : CauseKind::tried,
+                   f.text});
   }
-  if (causes.empty()) return tried.empty() ? "" : "tried " + join(tried, "; ");
-  return join(causes, "; ") + (tried.empty() ? "" : "; also tried " + join(tried, "; "));
+  return out;
 }
 
-// D6's measured cause: LHF-4 on the boundary ring one level finer (diag-d6-level5).
-std::string why_d6(const Data& d, const Band& curvature_offset) {
+// D6's check: LHF-d and LSCM-d (d = 2, 3, 4) over the boundary ring of both bumps (fig13-14),
+// each rate in its band and <= the all-vertex rate + margin. With `finer`, degree 4 is read one
+// level finer: the boundary ring from diag-d6-level5 and all vertices from diag-d5-level5.
+void claim_d6(const Data& d, Check& c, const Band& normal_offset, const Band& curvature_offset,
+              double margin, bool finer) {
+  for (const auto& fam : bumps())
+    for (const char* method : {"LHF", "LSCM"})
+      for (int deg : {2, 3, 4}) {
+        const std::string m = std::string(method) + "-" + std::to_string(deg);
+        const bool level5 = finer && deg == 4;
+        for (const char* q : {"normal", "H", "K"}) {
+          const Series* s =
+              level5 ? d.find(c, query(kLevel5Diag, fam, m, q, "L2", "none", 0.0, "boundary-ring"))
+                     : boundary_ring(d, c, fam, m, q);
+          const Series* all = level5 ? d.find(c, query(kD5Level5Diag, fam, m, q, "L2"))
+                                     : bump(d, c, fam, m, q, "L2");
+          // One level finer means the diagnostics' own rows (find falls back to other
+          // experiments' rows of the same configuration).
+          for (auto [series, experiment] : {std::pair{&s, kLevel5Diag}, {&all, kD5Level5Diag}})
+            if (level5 && *series && (*series)->experiment != experiment) {
+              c.missing(fam + " " + m + " " + q + " L2: no rows of " + experiment +
+                        " (make experiments)");
+              *series = nullptr;
+            }
+          if (!s) continue;
+          const Band& off = std::string(q) == "normal" ? normal_offset : curvature_offset;
+          require_rate(c, *s, Band::in(deg + off.lo, deg + off.hi, 2), "boundary-ring ");
+          if (all)
+            c.require(s->rate() <= all->rate() + margin,
+                      fam + " " + m + " " + q + " L2: boundary-ring rate " + f2(s->rate()) +
+                          " <= all-vertex rate " + f2(all->rate()) + " + " + num(margin));
+        }
+      }
+}
+
+// D6's findings one level finer: D6's check with degree 4 over levels 1-5 (a cause only if it
+// is reproduced there), with LHF-4's boundary-ring rates over levels 1-5 (diag-d6-level5).
+std::vector<WhyFinding> why_d6_levels(const Data& d, const Band& normal_offset,
+                                      const Band& curvature_offset, double margin) {
   const Band band = Band::in(4 + curvature_offset.lo, 4 + curvature_offset.hi, 2);
   std::vector<std::string> parts;
-  bool all_inside = true;
   for (const auto& fam : bumps())
     for (const char* q : {"H", "K"}) {
       Check scratch;
       const Series* s =
-          d.find(scratch, query(kLevel5Diag, fam, "LHF-4", q, "L2", "none", 2.5, "boundary-ring"));
-      if (!s || s->points.size() < 5) return "";
-      all_inside = all_inside && band.holds(s->rate());
+          d.find(scratch, query(kLevel5Diag, fam, "LHF-4", q, "L2", "none", 0.0, "boundary-ring"));
+      if (!s || s->points.size() < 5) return {};
       parts.push_back(fam + " " + q + " rate over levels 1-" + std::to_string(s->last().level) +
                       " " + f2(s->rate()) + " (" +
                       s->detail().substr(s->detail().find("level-to-level")) + ")");
     }
-  return std::string(all_inside ? "the levels: " : "tried ") +
-         "one level finer than the paper's four (diagnostic diag-d6-level5, REPORT.md), LHF-4 "
-         "boundary ring: " +
-         join(parts, "; ") + " (band " + band.text() + ")" +
-         (all_inside ? "; the level-4-to-5 rates approach the theoretical d - 1 = 3, so the "
-                       "rates over levels 1-4 are still pre-asymptotic at the boundary"
-                     : "");
+  Check finer;
+  claim_d6(d, finer, normal_offset, curvature_offset, margin, true);
+  std::vector<std::string> open;  // what keeps the finer check from being reproduced
+  for (const std::string& line : finer.lines())
+    if (line.rfind("[FAIL]", 0) == 0 || line.rfind("[missing]", 0) == 0)
+      open.push_back(line.substr(0, line.find("; errors at")));
+  const std::string numbers =
+      "one level finer than the paper's four (diagnostics diag-d6-level5 and diag-d5-level5, "
+      "REPORT.md), LHF-4 boundary ring: " +
+      join(parts, "; ") + " (band " + band.text() + "); D6's check with degree 4 over levels " +
+      "1-5 is " + to_string(finer.verdict());
+  if (finer.verdict() == Verdict::reproduced)
+    return finding(CauseKind::cause_removed_passes, "the levels: " + numbers);
+  return finding(CauseKind::tried, numbers + (open.empty() ? "" : ": " + join(open, "; ")));
 }
 
 }  // namespace
@@ -422,7 +469,7 @@ std::vector<ClaimEntry> section5_2_claims() {
                    }
                  },
                  {},
-                 // Measured causes: one level finer (diag-d5-level5), the interior vertices
+                 // Diagnostics: one level finer (diag-d5-level5), the interior vertices
                  // (diag-d-bump-interior), the LSCM map's solver (lscm-cg-4).
                  [=](const Data& d) { return why_d5(d, d5); }});
 
@@ -434,51 +481,33 @@ std::vector<ClaimEntry> section5_2_claims() {
        "Boundary vertices: rates close to theory",
        "Boundary vertices plus their 1-ring neighbours (LHF, LSCM): rates are somewhat lower than "
        "for interior vertices but \"very close to the theoretical analysis\".",
-       "LHF-d (d = 2, 3, 4), boundary-ring L2 rates: normals in " + degree_band_text(d6_normal) +
-           "; H and K in " + degree_band_text(d6_curvature) +
+       "LHF-d and LSCM-d (d = 2, 3, 4), boundary-ring L2 rates: normals in " +
+           degree_band_text(d6_normal) + "; H and K in " + degree_band_text(d6_curvature) +
            "; each <= the corresponding all-vertex rate + " + num(d6_margin) + "; both bump meshes",
        {{"normal_rate_minus_degree", d6_normal}, {"curvature_rate_minus_degree", d6_curvature}},
-       [=](const Data& d, Check& c) {
-         for (const auto& fam : bumps())
-           for (int deg : {2, 3, 4}) {
-             const std::string m = "LHF-" + std::to_string(deg);
-             for (const char* q : {"normal", "H", "K"}) {
-               const Series* s =
-                   d.find(c, query("fig13-14", fam, m, q, "L2", "none", 0.0, "boundary-ring"));
-               const Series* all = bump(d, c, fam, m, q, "L2");
-               if (!s) continue;
-               const Band& off = std::string(q) == "normal" ? d6_normal : d6_curvature;
-               require_rate(c, *s, Band::in(deg + off.lo, deg + off.hi, 2), "boundary-ring ");
-               if (all)
-                 c.require(s->rate() <= all->rate() + d6_margin,
-                           fam + " " + m + " " + q + " L2: boundary-ring rate " + f2(s->rate()) +
-                               " <= all-vertex rate " + f2(all->rate()) + " + " + num(d6_margin));
-             }
-           }
-       },
+       [=](const Data& d, Check& c) { claim_d6(d, c, d6_normal, d6_curvature, d6_margin, false); },
        {},
-       // Measured cause: one level finer (diag-d6-level5); also how the safeguard's condition
+       // One level finer (diag-d6-level5, diag-d5-level5); and how the safeguard's condition
        // test changes the 4-8 boundary stencils of LHF-4 (docs/claims.md, "The safeguard on
        // near-degenerate stencils").
-       [=](const Data& d) -> std::string {
+       [=](const Data& d) -> std::vector<WhyFinding> {
+         std::vector<WhyFinding> found = why_d6_levels(d, d6_normal, d6_curvature, d6_margin);
          std::vector<std::string> parts;
          for (const char* q : {"normal", "H", "K"}) {
            Check scratch;
            const Series* s = boundary_ring(d, scratch, kBump48, "LHF-4", q);
-           if (!s) return "";
+           if (!s) return found;
            parts.push_back(std::string(q) + " " +
                            s->detail().substr(s->detail().find("level-to-level")));
          }
-         const std::string safeguard =
-             "the safeguard's condition test on the degree-4 stencils of the 4-8 mesh's "
-             "boundary, which lie on four grid lines (docs/claims.md): with the tolerance fixed "
-             "at 1e-3 it drops their quartic block from level 4 on only, so the bump-48 LHF-4 "
-             "boundary-ring rates mix two stencils (" +
-             join(parts, "; ") + ")";
-         const std::string levels = why_d6(d, d6_curvature);
-         if (levels.empty() || levels.rfind("tried ", 0) == 0)
-           return "tried " + safeguard + (levels.empty() ? "" : "; " + levels.substr(6));
-         return levels + "; and on bump-48 " + safeguard;
+         found.push_back(
+             {CauseKind::localised,
+              "on bump-48, the safeguard's condition test on the degree-4 stencils of the 4-8 "
+              "mesh's boundary, which lie on four grid lines (docs/claims.md): with the "
+              "tolerance fixed at 1e-3 it drops their quartic block from level 4 on only, so "
+              "the bump-48 LHF-4 boundary-ring rates mix two stencils (" +
+                  join(parts, "; ") + ")"});
+         return found;
        }});
   return out;
 }

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "harness/claims.h"
 #include "harness/experiment.h"
 #include "harness/runner.h"
 
@@ -88,6 +89,12 @@ struct RenderResult {
 /// results site from the CSVs in options.output. Throws InputError naming a CSV that is missing
 /// (with require_all), truncated or written by another version (a missing column).
 RenderResult render_results(const RenderOptions& options);
+
+/// Writes <results_dir>/CLAIMS.md from the CSVs already in results_dir and its readings/ folders
+/// (claims.h evaluate_claims, evaluate_readings), computing and rewriting nothing else; returns
+/// the claims under the adopted readings. `curvbench run --claims-only`, and the last step of a
+/// full or report-only run.
+std::vector<ClaimResult> write_claims(const std::string& results_dir);
 
 /// The stable ids (case_store.h case_id) of the cases of the experiments, in case order; with
 /// shard_count > 1 only those of shard `shard`.

@@ -93,6 +93,16 @@ TEST(CliRun, TinyExperimentProducesEveryOutput) {
   // No temporary files are left behind.
   for (const auto& entry : fs::recursive_directory_iterator(out))
     EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();
+
+  // --claims-only rewrites CLAIMS.md from the CSVs there and nothing else.
+  fs::remove(out / "CLAIMS.md");
+  fs::remove(out / "REPORT.md");
+  const auto only = run_cli("run --claims-only --output " + out.string());
+  ASSERT_EQ(only.exit_code, 0) << only.output;
+  EXPECT_NE(slurp(out / "CLAIMS.md").find("**Summary:** "), std::string::npos);
+  EXPECT_FALSE(fs::exists(out / "REPORT.md"));
+  EXPECT_NE(only.output.find("/CLAIMS.md: "), std::string::npos) << only.output;
+  EXPECT_EQ(run_cli("run tiny --claims-only --output " + out.string()).exit_code, 2);
 }
 
 TEST(CliRun, ListAndBadUsage) {

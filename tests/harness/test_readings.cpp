@@ -143,6 +143,36 @@ TEST(Readings, NoiseAlphaSetsTheModelOfNoisyExperimentsOnly) {
                   .empty());
 }
 
+// noise-h=half-mean-edge: alpha (h/2)^k, i.e. alpha's scale over 2^k for each noisy mesh of the
+// paper's sections (the mesh lines keep their order and the distribution the experiment sets);
+// noise-free meshes and the studies beyond the paper are left alone.
+TEST(Readings, NoiseHHalvesTheEdgeLengthOfTheControlledNoise) {
+  const Experiment e = parse(
+      "noise order=3 seed=5 alpha=uniform scale=0.1\nmesh bump-48 levels=1\n"
+      "mesh bump-irregular levels=1 noise-order=2\nmesh bump-irregular levels=2 noise-order=0\n"
+      "method lhf-2\n");
+  const auto half = apply_reading({e}, choice("noise-h", "half-mean-edge"));
+  ASSERT_EQ(half.size(), 1u);
+  ASSERT_EQ(half[0].meshes.size(), 2u);  // the noise-free line keeps the adopted run's rows
+  for (const auto& m : half[0].meshes) {
+    const int k = half[0].noise_order_of(m);
+    const NoiseModel model = half[0].noise_model_of(m);
+    EXPECT_EQ(model.distribution, NoiseDistribution::uniform);
+    EXPECT_DOUBLE_EQ(model.scale, k == 3 ? 0.1 / 8 : 0.1 / 4) << m.family;
+    // The results' noise column (and so the claims' queries) stays "h^k".
+    EXPECT_EQ(noise_label(k, model), "h^" + std::to_string(k));
+  }
+  EXPECT_EQ(half[0].noise_order_of(half[0].meshes[0]), 3);
+  EXPECT_EQ(half[0].noise_order_of(half[0].meshes[1]), 2);
+  EXPECT_TRUE(apply_reading({parse("mesh bump-48 levels=1\nmethod lhf-2\n")},
+                            choice("noise-h", "half-mean-edge"))
+                  .empty());
+  EXPECT_TRUE(apply_reading(
+                  {parse("noise order=2 seed=5\nmesh bump-48 levels=1\nmethod lhf-2\n", "beyond")},
+                  choice("noise-h", "half-mean-edge"))
+                  .empty());
+}
+
 // radius-scaling alpha=0.5 c=0.44: n = 0.44 h^(-1/2) edge lengths; at h = 0.0121 (n = 4.0) the
 // fits take 4 rings, at h = 0.0484 (n = 2.0) 2, at h = 0.02 (n = 3.11) 3; the quadric whole
 // rings, the normal cycle the ball factor itself, Meyer and Xu nothing.
