@@ -623,8 +623,9 @@ std::string picks_text(const std::vector<ReadingPick>& picks) {
   return out.empty() ? "the adopted one" : claims::join(out, ", ");
 }
 
-// The summary line and the counts behind it.
-std::string counts_markdown(const ClaimCounts& n) {
+}  // namespace
+
+std::string claim_counts_markdown(const ClaimCounts& n) {
   const std::string reread =
       n.reread.empty() ? "no band re-read" : "re-read: " + claims::join(n.reread, ", ");
   const auto undecided = std::count_if(n.incompatible.begin(), n.incompatible.end(),
@@ -675,8 +676,6 @@ std::string counts_markdown(const ClaimCounts& n) {
   return md.str();
 }
 
-}  // namespace
-
 std::string claims_markdown(const std::vector<ClaimResult>& results, const std::string& header_line,
                             const std::vector<ReadingResults>& alternatives) {
   std::ostringstream md;
@@ -692,7 +691,7 @@ std::string claims_markdown(const std::vector<ClaimResult>& results, const std::
         "with both, and a claim whose verdict differs is flagged. \"levels 1-4: a, b, c, d\" "
         "lists a value per mesh level. "
         "Evidence lines are tagged [ok], [FAIL], [missing] or [info].\n\n"
-     << counts_markdown(claim_counts(results, alternatives))
+     << claim_counts_markdown(claim_counts(results, alternatives))
      << readings_markdown(results, alternatives)
      << "| claim | verdict | subject |\n|---|---|---|\n";
   for (const auto& r : results) {

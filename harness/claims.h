@@ -181,6 +181,9 @@ struct ClaimCounts {
 ClaimCounts claim_counts(const std::vector<ClaimResult>& results,
                          const std::vector<ReadingResults>& alternatives);
 
+/// The summary line and the counts behind it, as CLAIMS.md, REPORT.md and the site show them.
+std::string claim_counts_markdown(const ClaimCounts& counts);
+
 /// Markdown: title, header_line (build info and date), a count per verdict, a summary table,
 /// the readings' sensitivity table (if any alternatives), then one section "## <id>. ..." per
 /// claim with the wording, band, verdict, its verdict under each alternative reading that

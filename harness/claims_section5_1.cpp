@@ -203,7 +203,8 @@ std::vector<ClaimEntry> section5_1_claims() {
              parts.push_back(std::string(set) + " " + q + " " + join(values, ", "));
            }
          std::string why =
-             "diagnostic diag-b4-valence (REPORT.md), L2 error of Xu-2 / LHF-2 at levels 1-4 "
+             "diagnostic diag-b4-valence (report/diag-b4-valence.md), L2 error of Xu-2 / LHF-2 at "
+             "levels 1-4 "
              "over the vertices of each valence class: " +
              join(parts, "; ");
          if (low_worse && rest_better)
@@ -315,15 +316,16 @@ std::vector<ClaimEntry> section5_1_claims() {
            }
          if (ratios.empty()) return {};
          std::sort(ratios.begin(), ratios.end());
-         return finding(
-             CauseKind::localised,
-             "the size, not the direction (experiment fig06-07, REPORT.md): LSCM-3 is more "
-             "accurate than LHF-3 in " +
-                 std::to_string(better) + " of " + std::to_string(ratios.size()) +
-                 " combinations, by a factor 1/ratio of " + f2(1.0 / ratios.back()) + " to " +
-                 f2(1.0 / ratios.front()) + " (median " + f2(1.0 / ratios[ratios.size() / 2]) +
-                 "), more than the band's reading of \"slightly\" (ratio " + c1_ratio.text() +
-                 ") allows");
+         return finding(CauseKind::localised,
+                        "the size, not the direction (experiment fig06-07, report/fig06-07.md): "
+                        "LSCM-3 is more "
+                        "accurate than LHF-3 in " +
+                            std::to_string(better) + " of " + std::to_string(ratios.size()) +
+                            " combinations, by a factor 1/ratio of " + f2(1.0 / ratios.back()) +
+                            " to " + f2(1.0 / ratios.front()) + " (median " +
+                            f2(1.0 / ratios[ratios.size() / 2]) +
+                            "), more than the band's reading of \"slightly\" (ratio " +
+                            c1_ratio.text() + ") allows");
        }});
 
   const Band c2 = Band::at_least(2.0);
@@ -351,44 +353,45 @@ std::vector<ClaimEntry> section5_1_claims() {
                  {}});
 
   const Band c3_normal = Band::at_least(4.6, 2), c3_curvature = Band::at_least(3.6, 2);
-  out.push_back({"C3",
-                 "LHF-4 nearly an order higher than theory",
-                 "LHF-4 rates are nearly an order higher than theory, in all cases (statistical "
-                 "cancellation).",
-                 "L2 rate for normals " + c3_normal.text(-1) + " (theory 4); for H and K " +
-                     c3_curvature.text(-1) + " (theory 3); both torus mesh types",
-                 {{"normal_rate", c3_normal}, {"curvature_rate", c3_curvature}},
-                 [=](const Data& d, Check& c) {
-                   for (const auto& fam : tori())
-                     for (const char* q : {"normal", "H", "K"})
-                       if (const Series* s = torus34(d, c, fam, "LHF-4", q))
-                         require_rate(c, *s, std::string(q) == "normal" ? c3_normal : c3_curvature);
-                 },
-                 {},
-                 // Localised: which quantities gain the order.
-                 [=](const Data& d) -> std::vector<WhyFinding> {
-                   std::vector<std::string> gain, theory;
-                   for (const auto& fam : tori())
-                     for (const char* q : {"normal", "H", "K"}) {
-                       Check scratch;
-                       const Series* s = torus34(d, scratch, fam, "LHF-4", q);
-                       if (!s) continue;
-                       const bool normal = std::string(q) == "normal";
-                       const Band& b = normal ? c3_normal : c3_curvature;
-                       (b.holds(s->rate()) ? gain : theory)
-                           .push_back(fam + " " + q + " " + f2(s->rate()) + " (theory " +
-                                      (normal ? "4" : "3") + ")");
-                     }
-                   if (gain.empty() || theory.empty()) return {};
-                   return finding(
-                       CauseKind::localised,
-                       "the gain is not in every quantity (experiment fig06-07, REPORT.md): "
-                       "nearly an order above theory for " +
-                           join(gain, ", ") + "; at theory for " + join(theory, ", ") +
-                           " (consistent with the symmetric cancellation of an even degree "
-                           "raising the even derivatives, H and K, and not the first, the "
-                           "normals)");
-                 }});
+  out.push_back(
+      {"C3",
+       "LHF-4 nearly an order higher than theory",
+       "LHF-4 rates are nearly an order higher than theory, in all cases (statistical "
+       "cancellation).",
+       "L2 rate for normals " + c3_normal.text(-1) + " (theory 4); for H and K " +
+           c3_curvature.text(-1) + " (theory 3); both torus mesh types",
+       {{"normal_rate", c3_normal}, {"curvature_rate", c3_curvature}},
+       [=](const Data& d, Check& c) {
+         for (const auto& fam : tori())
+           for (const char* q : {"normal", "H", "K"})
+             if (const Series* s = torus34(d, c, fam, "LHF-4", q))
+               require_rate(c, *s, std::string(q) == "normal" ? c3_normal : c3_curvature);
+       },
+       {},
+       // Localised: which quantities gain the order.
+       [=](const Data& d) -> std::vector<WhyFinding> {
+         std::vector<std::string> gain, theory;
+         for (const auto& fam : tori())
+           for (const char* q : {"normal", "H", "K"}) {
+             Check scratch;
+             const Series* s = torus34(d, scratch, fam, "LHF-4", q);
+             if (!s) continue;
+             const bool normal = std::string(q) == "normal";
+             const Band& b = normal ? c3_normal : c3_curvature;
+             (b.holds(s->rate()) ? gain : theory)
+                 .push_back(fam + " " + q + " " + f2(s->rate()) + " (theory " +
+                            (normal ? "4" : "3") + ")");
+           }
+         if (gain.empty() || theory.empty()) return {};
+         return finding(
+             CauseKind::localised,
+             "the gain is not in every quantity (experiment fig06-07, report/fig06-07.md): "
+             "nearly an order above theory for " +
+                 join(gain, ", ") + "; at theory for " + join(theory, ", ") +
+                 " (consistent with the symmetric cancellation of an even degree "
+                 "raising the even derivatives, H and K, and not the first, the "
+                 "normals)");
+       }});
 
   const Band c4_normal = Band::at_most(3.5, 2), c4_h = Band::at_most(2.5, 2);
   out.push_back(
@@ -429,7 +432,7 @@ std::vector<ClaimEntry> section5_1_claims() {
          const std::string text =
              "the LSCM solver: the same check with the map solved by conjugate gradients to 1e-6 "
              "(lscm-cg, as CGAL does without Eigen, most likely the paper's; experiment "
-             "fig06-07's LSCM-CG-4 rows, REPORT.md) is " +
+             "fig06-07's LSCM-CG-4 rows, report/fig06-07.md) is " +
              std::string(to_string(cg.verdict())) + ": " + join(lines, "; ");
          return finding(cg.verdict() == Verdict::reproduced ? CauseKind::cause_removed_passes
                                                             : CauseKind::tried,

@@ -85,7 +85,8 @@ std::vector<WhyFinding> why_d1(const Data& d, const Band& band) {
                     ", LSCM-fast-2 / LSCM-2 at most " + f2(m_fast) + ")");
   }
   const std::string numbers =
-      "diagnostic diag-d-bump-interior (REPORT.md), K L2 of LSCM-2 / LHF-2 at levels 1-4: " +
+      "diagnostic diag-d-bump-interior (report/diag-d-bump-interior.md), K L2 of LSCM-2 / LHF-2 at "
+      "levels 1-4: " +
       join(parts, "; ");
   if (!(interior_outside && ring_inside)) return finding(CauseKind::tried, numbers);
   return finding(CauseKind::localised,
@@ -122,7 +123,8 @@ std::vector<WhyFinding> why_d2(const Data& d, const std::vector<std::string>& to
       torus_rates.push_back(tor + " " + f2(t->rate()));
   }
   return finding(CauseKind::localised,
-                 "the rates split by vertex set (diagnostic diag-d-bump-interior, REPORT.md), "
+                 "the rates split by vertex set (diagnostic diag-d-bump-interior, "
+                 "report/diag-d-bump-interior.md), "
                  "LHF-2 H L2: " +
                      join(parts, "; ") + "; the tori the bump is compared with converge at " +
                      join(torus_rates, ", ") +
@@ -200,9 +202,10 @@ D5Finding d5_interior(const Data& d, const Band& band) {
         return rate_of(interior(d, scratch, fam, m, q));
       },
       true);
-  return prefixed(std::move(f),
-                  "the boundary ring: over the interior vertices alone (diagnostic "
-                  "diag-d-bump-interior, REPORT.md), rate(LHF-4) - rate(LSCM-4) is ");
+  return prefixed(
+      std::move(f),
+      "the boundary ring: over the interior vertices alone (diagnostic "
+      "diag-d-bump-interior, report/diag-d-bump-interior.md), rate(LHF-4) - rate(LSCM-4) is ");
 }
 
 // The gap between the rates of the finest pair of levels, one level finer than the paper's four
@@ -246,13 +249,16 @@ D5Finding d5_levels(const Data& d, const Band& band) {
                               "; rate(LHF-4) - rate(LSCM-4) from level 4 to 5 is " + f.text;
   if (f.cause || !falls_everywhere) {
     f.text =
-        "one level finer than the paper's four (diagnostic diag-d5-level5, REPORT.md), " + numbers;
+        "one level finer than the paper's four (diagnostic diag-d5-level5, "
+        "report/diag-d5-level5.md), " +
+        numbers;
     return f;
   }
   // The fall is where the miss is, not a cause: the gap is still short one level finer.
   f.localised = true;
   f.text =
-      "one level finer than the paper's four (diagnostic diag-d5-level5, REPORT.md), LSCM-4's "
+      "one level finer than the paper's four (diagnostic diag-d5-level5, "
+      "report/diag-d5-level5.md), LSCM-4's "
       "H rate from level 4 to 5 falls below its earlier level-to-level rates by " +
       join(drops, ", ") +
       ", as the tori's does from level 1 (claim C5), but the gap is still short there: " + numbers +
@@ -335,7 +341,7 @@ std::vector<WhyFinding> why_d6_levels(const Data& d, const Band& normal_offset,
       open.push_back(line.substr(0, line.find("; errors at")));
   const std::string numbers =
       "one level finer than the paper's four (diagnostics diag-d6-level5 and diag-d5-level5, "
-      "REPORT.md), LHF-4 boundary ring: " +
+      "report/diag-d6-level5.md and report/diag-d5-level5.md), LHF-4 boundary ring: " +
       join(parts, "; ") + " (band " + band.text() + "); D6's check with degree 4 over levels " +
       "1-5 is " + to_string(finer.verdict());
   if (finer.verdict() == Verdict::reproduced)

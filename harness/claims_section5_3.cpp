@@ -39,7 +39,8 @@ std::vector<WhyFinding> e3_ring_scan(const Data& d) {
     parts.push_back(std::string(q) + ": " + join(rings, "; "));
   }
   std::string out =
-      "diagnostic diag-e3-rings (LHF-2 on the noisy torus at fixed rings, REPORT.md): " +
+      "diagnostic diag-e3-rings (LHF-2 on the noisy torus at fixed rings, "
+      "report/diag-e3-rings.md): " +
       join(parts, " | ");
   // The same fit with a radius shrinking like h^(1/2) (diag-e3-radius), if it was run.
   std::vector<std::string> growing;
@@ -121,11 +122,12 @@ std::vector<ClaimEntry> section5_3_claims() {
                .push_back(q + " " + norm + " " + f2(r.back().value));
          }
          if (reach.empty() || below.empty()) return {};
-         std::vector<WhyFinding> found = finding(
-             CauseKind::localised,
-             "the sentence holds for some quantities only (experiment fig15-16, REPORT.md): Xu-2 "
-             "/ best other at the finest level reaches " +
-                 e1.text() + " for " + join(reach, ", ") + ", not for " + join(below, ", "));
+         std::vector<WhyFinding> found = finding(CauseKind::localised,
+                                                 "the sentence holds for some quantities only "
+                                                 "(experiment fig15-16, report/fig15-16.md): Xu-2 "
+                                                 "/ best other at the finest level reaches " +
+                                                     e1.text() + " for " + join(reach, ", ") +
+                                                     ", not for " + join(below, ", "));
          // The denominator: LHF-2's H error at the experiment's 2 rings and at wider ones
          // (diag-e3-rings), against Xu-2's at the finest level.
          Check scratch;
@@ -142,14 +144,15 @@ std::vector<ClaimEntry> section5_3_claims() {
                            ", Xu-2 / LHF-2 at level " + std::to_string(ratio.back().level) + " " +
                            f2(ratio.back().value));
          }
-         found.push_back({CauseKind::localised,
-                          "the denominator: at the experiment's 2 rings LHF-2's H error on the "
-                          "noisy torus converges slower than first order (claim E3), which keeps "
-                          "the ratio down; the ring scan (diagnostic diag-e3-rings, REPORT.md) "
-                          "gives " +
-                              join(rings, "; ") +
-                              " (a mechanism measured for H, not a prediction of the miss: the "
-                              "band's K ratio is not covered)"});
+         found.push_back(
+             {CauseKind::localised,
+              "the denominator: at the experiment's 2 rings LHF-2's H error on the "
+              "noisy torus converges slower than first order (claim E3), which keeps "
+              "the ratio down; the ring scan (diagnostic diag-e3-rings, report/diag-e3-rings.md) "
+              "gives " +
+                  join(rings, "; ") +
+                  " (a mechanism measured for H, not a prediction of the miss: the "
+                  "band's K ratio is not covered)"});
          return found;
        }});
 
@@ -189,7 +192,8 @@ std::vector<ClaimEntry> section5_3_claims() {
            parts.push_back("radius 0.44 h^(1/2) " + f2(s->rate()));
          if (parts.empty()) return {};
          return finding(CauseKind::tried,
-                        "diagnostics diag-e3-rings and diag-e3-radius (REPORT.md), LHF-2 normal "
+                        "diagnostics diag-e3-rings and diag-e3-radius (report/diag-e3-rings.md, "
+                        "report/diag-e3-radius.md), LHF-2 normal "
                         "L2 rates on the noisy torus: " +
                             join(parts, "; ") +
                             "; for O(h^2) input the paper's error analysis (§3) gives normals of "

@@ -29,11 +29,19 @@ namespace curvbench {
 /// sits above both).
 struct ClaimView {
   std::string id, statement, band, verdict;  ///< verdict: "reproduced", "not reproduced", ...
+  /// Where the band was re-read (docs/claims.md): the band fixed in advance and its verdict.
+  std::string original_band, original_verdict;
   std::string halving_verdict;               ///< under the paper's rate formula
   std::string why;                           ///< cause of a miss ("" when reproduced)
   /// The verdict under each alternative reading: ("noise-alpha=uniform-0.1", "reproduced").
   std::vector<std::pair<std::string, std::string>> readings;
   std::vector<std::string> experiments;  ///< experiments whose numbers decide it
+};
+
+/// The claims as the report shows them: the counts (claims.h claim_counts_markdown) and each claim.
+struct ClaimsView {
+  std::string counts_markdown;
+  std::vector<ClaimView> claims;
 };
 
 struct ReportFiles {
@@ -48,17 +56,17 @@ struct ReportFiles {
 /// The summary: which estimator wins where, what of the paper holds, speed against CGAL's jet,
 /// links to the details. Markdown, at most about 150 lines.
 std::string summary_markdown(const ReportContent& content, const std::vector<LeaderRow>& board,
-                             const std::vector<ClaimView>& claims, const std::string& results_dir);
+                             const ClaimsView& claims, const std::string& results_dir);
 
 /// Writes REPORT.md and results/report/*.md (each atomically). Returns REPORT.md's path.
 std::string write_markdown_report(const ReportContent& content, const std::vector<LeaderRow>& board,
-                                  const std::vector<ClaimView>& claims, const ReportFiles& files);
+                                  const ClaimsView& claims, const ReportFiles& files);
 
 /// Writes the site into a temporary folder next to it, then renames it into place (nothing half
 /// written is left). Throws InputError naming the file when an input is missing or unreadable
 /// (Chart.js included). Returns the path of index.html.
 std::string write_site(const std::vector<Experiment>& experiments, const ReportContent& content,
-                       const std::vector<LeaderRow>& board, const std::vector<ClaimView>& claims,
+                       const std::vector<LeaderRow>& board, const ClaimsView& claims,
                        const ReportFiles& files);
 
 }  // namespace curvbench

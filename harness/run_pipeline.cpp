@@ -322,10 +322,11 @@ namespace {
 
 // A claim as the report shows it: its verdicts under each reading, and the experiments its
 // evidence and Why line name (their pages hold its numbers).
-std::vector<ClaimView> claim_views(const std::vector<ClaimResult>& claims,
-                                   const std::vector<ReadingResults>& readings,
-                                   const std::vector<Experiment>& experiments) {
-  std::vector<ClaimView> out;
+ClaimsView claim_views(const std::vector<ClaimResult>& claims,
+                       const std::vector<ReadingResults>& readings,
+                       const std::vector<Experiment>& experiments) {
+  ClaimsView out;
+  out.counts_markdown = claim_counts_markdown(claim_counts(claims, readings));
   for (const ClaimResult& c : claims) {
     ClaimView v;
     v.id = c.id;
@@ -334,6 +335,10 @@ std::vector<ClaimView> claim_views(const std::vector<ClaimResult>& claims,
     v.verdict = to_string(c.verdict);
     v.halving_verdict = to_string(c.halving_verdict);
     v.why = c.why;
+    if (!c.original_band.empty()) {
+      v.original_band = c.original_band;
+      v.original_verdict = to_string(c.original_verdict);
+    }
     for (const ReadingResults& r : readings)
       for (const ClaimResult& rc : r.results)
         if (rc.id == c.id)
@@ -342,7 +347,7 @@ std::vector<ClaimView> claim_views(const std::vector<ClaimResult>& claims,
     for (const Experiment& e : experiments)
       if (e.sweep.empty() && text.find(e.name) != std::string::npos)
         v.experiments.push_back(e.name);
-    out.push_back(std::move(v));
+    out.claims.push_back(std::move(v));
   }
   return out;
 }
@@ -365,7 +370,7 @@ RenderResult render_results(const RenderOptions& o) {
     }
   const auto claims = evaluate_claims(o.output);
   const auto readings = evaluate_readings(o.output);
-  const std::vector<ClaimView> views = claim_views(claims, readings, o.experiments);
+  const ClaimsView views = claim_views(claims, readings, o.experiments);
   for (const auto& c : claims) {
     result.reproduced += c.verdict == Verdict::reproduced;
     result.not_reproduced += c.verdict == Verdict::not_reproduced;

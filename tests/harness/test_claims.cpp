@@ -798,10 +798,11 @@ TEST(Claims, D5WhyLineReadsTheLevelFiveDiagnostic) {
   // Gap 1.2 from level 4 to 5 on both bumps: D5's check holds one level finer, a cause.
   const ClaimResult holds = why_with_finest_lscm_h_rate(1.8);
   EXPECT_EQ(level5(holds).kind, CauseKind::cause_removed_passes) << holds.why;
-  EXPECT_EQ(holds.why.rfind("Cause (the claim is reproduced with it removed): one level finer "
-                            "than the paper's four (diagnostic diag-d5-level5, REPORT.md)",
-                            0),
-            0u)
+  EXPECT_EQ(
+      holds.why.rfind("Cause (the claim is reproduced with it removed): one level finer "
+                      "than the paper's four (diagnostic diag-d5-level5, report/diag-d5-level5.md)",
+                      0),
+      0u)
       << holds.why;
   EXPECT_NE(holds.why.find("H 3.00 - 1.80 = 1.20"), std::string::npos) << holds.why;
 
@@ -809,12 +810,14 @@ TEST(Claims, D5WhyLineReadsTheLevelFiveDiagnostic) {
   // so the fall localises the miss and is no cause.
   const ClaimResult falls = why_with_finest_lscm_h_rate(2.1);
   EXPECT_EQ(level5(falls).kind, CauseKind::localised) << falls.why;
-  EXPECT_EQ(falls.why.rfind("No cause found. Localised (where the miss is, not why): one level "
-                            "finer than the paper's four (diagnostic diag-d5-level5, REPORT.md), "
-                            "LSCM-4's H rate from level 4 to 5 falls below its earlier "
-                            "level-to-level rates by bump-irregular 0.40, bump-48 0.40",
-                            0),
-            0u)
+  EXPECT_EQ(
+      falls.why.rfind(
+          "No cause found. Localised (where the miss is, not why): one level "
+          "finer than the paper's four (diagnostic diag-d5-level5, report/diag-d5-level5.md), "
+          "LSCM-4's H rate from level 4 to 5 falls below its earlier "
+          "level-to-level rates by bump-irregular 0.40, bump-48 0.40",
+          0),
+      0u)
       << falls.why;
   EXPECT_NE(falls.why.find("H 3.00 - 2.10 = 0.90"), std::string::npos) << falls.why;
   EXPECT_NE(falls.why.find("LHF-4's H rate from level 4 to 5 is bump-irregular 3.00, bump-48 "

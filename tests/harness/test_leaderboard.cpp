@@ -89,14 +89,18 @@ TEST(Leaderboard, TheSummaryNamesEachClassWinner) {
   miss.id = "B1";
   miss.statement = "LHF-2 converges at rate 2.";
   miss.verdict = "not reproduced";
-  miss.why = "The structured torus converges at 1.0. More words follow.";
-  const std::string md = summary_markdown({}, rows, {miss}, dir.string());
+  miss.why =
+      "No cause found. Localised (where the miss is, not why): the structured torus "
+      "(experiment fig03-05): 1.0. Tried: more.";
+  const std::string md = summary_markdown({}, rows, {"**Summary:** counts.", {miss}}, dir.string());
   EXPECT_NE(md.find("| well-shaped | - | [LHF-2 1.00e-02 (1.00)](report/field-test.md) | - | - |"),
             std::string::npos)
       << md;
-  EXPECT_NE(md.find("- **B1** LHF-2 converges at rate 2. The structured torus converges at 1.0.\n"),
-            std::string::npos)
-      << "one line per miss, its cause's first sentence";
+  EXPECT_NE(md.find("**Summary:** counts."), std::string::npos);
+  EXPECT_NE(
+      md.find("- **B1** LHF-2 converges at rate 2. localised, no cause: the structured torus.\n"),
+      std::string::npos)
+      << "one line per miss, its Why line's verdict on the cause";
   EXPECT_LT(std::count(md.begin(), md.end(), '\n'), 150);
 }
 
