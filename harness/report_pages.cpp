@@ -196,8 +196,8 @@ std::string summary_markdown(const ReportContent& content, const std::vector<Lea
   paper.text(claims.counts_markdown);
   paper.text(
       "Every claim with its band, evidence and verdict under each alternative reading: "
-      "[CLAIMS.md](CLAIMS.md). The misses under the adopted readings, each with the first "
-      "verdict of its Why line on the cause:");
+      "[CLAIMS.md](CLAIMS.md). The misses under the adopted readings, each with its Why line "
+      "in one line (a cause only where removing it reproduces the claim):");
   std::string misses;
   for (const ClaimView& c : claims.claims)
     if (c.verdict == "not reproduced")
