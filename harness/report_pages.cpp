@@ -674,7 +674,17 @@ std::string write_site(const std::vector<Experiment>& experiments, const ReportC
       const std::string md_path = dir + "/REAL_MESHES.md";
       std::string body = "<p>Not run yet: <code>make realmeshes</code>.</p>\n";
       if (fs::exists(md_path)) {
-        body = report::markdown_to_html(read_file(md_path), &site_link);
+        // The corpus's robustness tables first (between REAL_MESHES.md's corpus markers), then
+        // the per-mesh sections with their pictures; the file's own title is the page's.
+        std::string md = read_file(md_path);
+        if (md.rfind("# ", 0) == 0) md = md.substr(md.find('\n') + 1);
+        const std::string begin = "<!-- corpus: begin -->", end = "<!-- corpus: end -->";
+        const size_t b = md.find(begin), e = md.find(end);
+        if (b != std::string::npos && e != std::string::npos && b < e) {
+          const std::string corpus = md.substr(b + begin.size(), e - b - begin.size());
+          md = corpus + "\n" + md.substr(0, b) + md.substr(e + end.size());
+        }
+        body = report::markdown_to_html(md, &site_link);
         if (fs::exists(fs::path(dir) / "realmeshes")) {
           fs::create_directories(tmp / "realmeshes");
           for (const auto& f : fs::directory_iterator(fs::path(dir) / "realmeshes"))
