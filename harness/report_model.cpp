@@ -225,15 +225,26 @@ std::string markdown_to_html(const std::string& markdown, std::string (*link)(co
           << level << ">\n";
       ++i;
     } else if (starts(l, "- ") || starts(l, "* ")) {
+      // A list; items indented by two spaces and starting "- " form a nested list of the item
+      // before them (one level, as the report writes them); other indented lines continue it.
       out << "<ul>\n";
+      bool nested = false;
       while (i < lines.size() &&
              (starts(lines[i], "- ") || starts(lines[i], "* ") || starts(lines[i], "  "))) {
-        std::string item = lines[i].substr(2);
+        const bool sub = starts(lines[i], "  - ");
+        std::string item = lines[i].substr(sub ? 4 : 2);
         ++i;
         while (i < lines.size() && starts(lines[i], "  ") && !starts(lines[i], "  - "))
-          item.append(" ").append(lines[i++], 2);
-        out << "<li>" << inline_html(item, link) << "</li>\n";
+          item.append(" ").append(lines[i++], sub ? 4 : 2);
+        if (sub && !nested) out << "<ul>\n";
+        if (!sub && nested) out << "</ul></li>\n";
+        nested = sub;
+        out << "<li>" << inline_html(item, link);
+        // An item closes at once unless a nested list follows it.
+        const bool opens = !sub && i < lines.size() && starts(lines[i], "  - ");
+        out << (opens ? "\n" : "</li>\n");
       }
+      if (nested) out << "</ul></li>\n";
       out << "</ul>\n";
     } else if (starts(l, "|")) {
       std::vector<std::vector<std::string>> rows;

@@ -498,12 +498,20 @@ std::vector<report::Section> claims_sections(const ClaimsView& view) {
   tab.id = "claims-table";
   tab.sortable = true;
   tab.numeric = std::vector<bool>(7, false);
-  tab.columns = {"claim",          "verdict", "band",   "paper's rate formula",
-                 "other readings", "why",     "numbers"};
+  tab.columns = {"claim",
+                 "verdict",
+                 "band",
+                 "paper's rate formula",
+                 "readings that change its evidence (adopted; others)",
+                 "why",
+                 "numbers"};
   for (const ClaimView& c : view.claims) {
     std::string readings;
-    for (const auto& [name, verdict] : c.readings)
-      if (verdict != c.verdict) readings += (readings.empty() ? "" : "; ") + name + ": " + verdict;
+    for (const ClaimView::Reading& r : c.readings) {
+      readings += (readings.empty() ? "" : "; ") + r.id + ": " + r.adopted + " (adopted)";
+      for (const auto& [choice, verdict] : r.alternatives)
+        readings += ", " + choice + " " + verdict;
+    }
     std::string links;
     for (const std::string& e : c.experiments)
       links += (links.empty() ? "" : ", ") + std::string("[") + e + "](report/" + e + ".md)";
@@ -513,7 +521,7 @@ std::vector<report::Section> claims_sections(const ClaimsView& view) {
       verdict += " (fixed band: " + c.original_verdict + ")";
     }
     tab.add({"**" + c.id + "** " + c.statement, verdict, band, c.halving_verdict,
-             readings.empty() ? "same under every reading" : readings, c.why, links});
+             readings.empty() ? "none" : readings, c.why, links});
   }
   s.table(std::move(tab));
   return {s};

@@ -31,10 +31,15 @@ struct ClaimView {
   std::string id, statement, band, verdict;  ///< verdict: "reproduced", "not reproduced", ...
   /// Where the band was re-read (docs/claims.md): the band fixed in advance and its verdict.
   std::string original_band, original_verdict;
-  std::string halving_verdict;               ///< under the paper's rate formula
-  std::string why;                           ///< cause of a miss ("" when reproduced)
-  /// The verdict under each alternative reading: ("noise-alpha=uniform-0.1", "reproduced").
-  std::vector<std::pair<std::string, std::string>> readings;
+  std::string halving_verdict;  ///< under the paper's rate formula
+  std::string why;              ///< cause of a miss ("" when reproduced)
+  /// The readings whose alternatives change its evidence: the reading, its adopted choice, and
+  /// each alternative's verdict ("uniform-0.1", "reproduced").
+  struct Reading {
+    std::string id, adopted;
+    std::vector<std::pair<std::string, std::string>> alternatives;
+  };
+  std::vector<Reading> readings;
   std::vector<std::string> experiments;  ///< experiments whose numbers decide it
 };
 

@@ -340,9 +340,19 @@ ClaimsView claim_views(const std::vector<ClaimResult>& claims,
       v.original_verdict = to_string(c.original_verdict);
     }
     for (const ReadingResults& r : readings)
-      for (const ClaimResult& rc : r.results)
-        if (rc.id == c.id)
-          v.readings.push_back({r.reading + "=" + r.choice, to_string(rc.verdict)});
+      for (const ClaimResult& rc : r.results) {
+        if (rc.id != c.id || rc.evidence == c.evidence) continue;
+        auto it = std::find_if(v.readings.begin(), v.readings.end(),
+                               [&](const ClaimView::Reading& x) { return x.id == r.reading; });
+        if (it == v.readings.end()) {
+          std::string adopted;
+          for (const Reading& def : curvbench::readings())
+            if (def.id == r.reading && !def.choices.empty()) adopted = def.choices.front().name;
+          v.readings.push_back({r.reading, adopted, {}});
+          it = std::prev(v.readings.end());
+        }
+        it->alternatives.push_back({r.choice, to_string(rc.verdict)});
+      }
     const std::string text = c.evidence + "\n" + c.why;
     for (const Experiment& e : experiments)
       if (e.sweep.empty() && text.find(e.name) != std::string::npos)

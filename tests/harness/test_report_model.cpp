@@ -81,6 +81,13 @@ TEST(ReportModel, MarkdownTablesInTextBecomeHtmlTables) {
   EXPECT_NE(html.find("<tr><td>x</td><td class=\"num\">1</td></tr>"), std::string::npos);
 }
 
+TEST(ReportModel, NestedListsNest) {
+  const std::string html = markdown_to_html("- a\n- b:\n  - b1\n  - b2\n- c\n");
+  EXPECT_EQ(html,
+            "<ul>\n<li>a</li>\n<li>b:\n<ul>\n<li>b1</li>\n<li>b2</li>\n</ul></li>\n"
+            "<li>c</li>\n</ul>\n");
+}
+
 TEST(ReportModel, JsonOfPlots) {
   EXPECT_EQ(json_number(0.1), "0.1");
   EXPECT_EQ(json_number(1e-300), "1e-300");
