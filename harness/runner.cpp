@@ -105,16 +105,23 @@ const ScoredMesh& MeshCache::get(const std::string& family, int level, int noise
 }
 
 // radius-scaling (experiment.h): the neighbourhood of radius c h^alpha as the method's own
-// parameter, n = c h^(alpha - 1) edge lengths: half rings for the fits (Jet included), whole rings
-// for the quadric, the ball factor of the normal cycle; the others keep their 1-ring.
+// size parameter (its registry line's NeighbourhoodSize), n = c h^(alpha - 1) edge lengths: half
+// rings, whole rings or the ball factor; a fixed 1-ring stays.
 void scale_radius(const Experiment& e, const Estimator& est, double h, EstimatorOptions& opt) {
   const double n = e.radius_c * std::pow(h, e.radius_alpha - 1.0);
-  if (est.takes_degree() && est.name() != "xu")
-    opt.rings = std::max(1.0, std::round(2.0 * n) / 2.0);
-  else if (est.name() == "quadric")
-    opt.rings = std::max(1.0, std::round(n));
-  else if (est.name() == "normal-cycle" || est.name() == "icc")
-    opt.ball_factor = n;
+  switch (method_info(est.name()).radius) {
+    case NeighbourhoodSize::half_rings:
+      opt.rings = std::max(1.0, std::round(2.0 * n) / 2.0);
+      break;
+    case NeighbourhoodSize::whole_rings:
+      opt.rings = std::max(1.0, std::round(n));
+      break;
+    case NeighbourhoodSize::ball_factor:
+      opt.ball_factor = n;
+      break;
+    case NeighbourhoodSize::fixed:
+      break;
+  }
 }
 
 std::vector<RunCase> expand_cases(const std::vector<Experiment>& experiments) {

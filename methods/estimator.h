@@ -211,6 +211,15 @@ enum class MethodGroup {
 /// "paper fits", "jets", "discrete operators", "outside estimators".
 const char* to_string(MethodGroup g);
 
+/// What a method's neighbourhood size is, declared on its registry line: the runner's radius
+/// scaling, the sweeps and the advice read it instead of the method's name.
+enum class NeighbourhoodSize {
+  fixed,        ///< one 1-ring, nothing to size (Xu, Meyer, Taubin, ...)
+  half_rings,   ///< option `rings`, in steps of 1/2 (the polynomial fits, the jet)
+  whole_rings,  ///< option `rings`, whole rings (the quadric)
+  ball_factor,  ///< option `ball-factor`: a ball of radius C h (normal cycle, ICC)
+};
+
 /// One line of the registry (methods/registry.cpp): what the rest of the project needs to know
 /// of a method besides its estimator.
 struct MethodInfo {
@@ -220,9 +229,14 @@ struct MethodInfo {
   std::vector<int> bench_degrees;  ///< make bench's rows (0: a degree-free operator, once)
   double cost = 1.0;               ///< seconds per vertex relative to LHF-2 (shard balance)
   std::string summary;             ///< one line for --help
-  MethodGroup group = MethodGroup::discrete;  ///< its family on the results site
+  MethodGroup group = MethodGroup::discrete;            ///< its family on the results site
+  NeighbourhoodSize radius = NeighbourhoodSize::fixed;  ///< what its neighbourhood size is
   bool is_fit() const { return max_degree > 0; }
 };
+
+/// The registry line of a method name or label ("lhf", "LHF-2", "Meyer"); throws UsageError for
+/// a name no registered method has.
+const MethodInfo& method_info(const std::string& name_or_label);
 
 /// The group of a method label as the result CSVs spell it ("LHF-2", "Meyer", "LSCM-fast-4",
 /// case-insensitive, a trailing degree ignored); MethodGroup::outside when no registered

@@ -1,7 +1,7 @@
 // The estimator registry: make_estimator() and estimator_names() of estimator.h.
 //
 // Every method is ONE line of CURVBENCH_ESTIMATORS below:
-//   X(name, min_degree, max_degree, bench, cost, group, factory, summary)
+//   X(name, min_degree, max_degree, bench, cost, group, radius, factory, summary)
 // name      the --method name; a fit's label adds the degree ("LHF-2")
 // min_degree, max_degree  the degrees a fit supports; 0, 0 for a degree-free discrete operator
 // bench     the degrees make bench times it at: "2-4", "2", "once" (an operator), or "none"
@@ -10,6 +10,9 @@
 // group     the family the results site files it under (MethodGroup): paper_fit (the paper's
 //           parameterization-based fits), jet (CGAL's osculating jet), discrete (an operator
 //           on the 1-ring or a ball)
+// radius    what its neighbourhood size is (NeighbourhoodSize): half_rings (option rings, in
+//           steps of 1/2: the fits), whole_rings (option rings, whole: the quadric), ball_factor
+//           (option ball-factor: a ball of radius C h), fixed (one 1-ring, nothing to size)
 // factory   a function `std::unique_ptr<Estimator> factory(EstimatorOptions)` defined in the
 //           method's own .cpp (in namespace curvbench); the line declares it too
 // summary   one line for --help and `curvbench methods`
@@ -26,41 +29,41 @@
 #include "methods/option_schema.h"
 
 // clang-format off
-//  X(name,          degrees, bench, cost, group,    factory,                     summary)
-#define CURVBENCH_ESTIMATORS(X)                                                                   \
-  X("lhf",           1, 6, "2-4", 1.0,  paper_fit, make_lhf_estimator,                                       \
-    "local height function fit of degree d (Wang, Jiao et al. 2009, section 2.2)")                \
-  X("lop",           1, 6, "2",   1.15, paper_fit, make_lop_estimator,                                       \
-    "local orthogonal projection fit of degree d (Wang, Jiao et al. 2009, section 4.2.2)")          \
-  X("xu",            2, 2, "2",   2.4,  paper_fit, make_xu_estimator,                                        \
-    "quadratic fit over Xu's flattened 1-ring (Wang, Jiao et al. 2009, section 4.2.1)")                                  \
-  X("lscm",          1, 6, "2-4", 22.0, paper_fit, make_lscm_estimator,                                      \
-    "fit over a local least-squares conformal map (CGAL's LSCM; section 4.2.3)")                    \
-  X("lscm-fast",     1, 6, "2-4", 2.9,  paper_fit, make_lscm_fast_estimator,                                 \
-    "the same conformal map computed in-house (dense solve on the small patch)")                                         \
-  X("lscm-cg",       1, 6, "none", 22.0, paper_fit, make_lscm_cg_estimator,                                  \
-    "CGAL's LSCM solved by OpenNL conjugate gradients")                                                 \
-  X("jet",           2, 4, "2-4", 11.4, jet      , make_jet_estimator,                                       \
-    "CGAL's Jet_fitting_3 osculating jet (Cazals and Pouget 2005)")                               \
-  X("meyer",         0, 0, "once", 1.1, discrete , make_meyer_estimator,                                     \
-    "cotangent mean curvature, angle-deficit Gaussian curvature (Meyer et al. 2003; libigl)")     \
-  X("taubin",        0, 0, "once", 0.5, discrete , make_taubin_estimator,                                    \
-    "Taubin's curvature tensor from directional curvatures (Taubin 1995)")                        \
-  X("rusinkiewicz",  0, 0, "once", 1.5, discrete , make_rusinkiewicz_estimator,                              \
-    "per-face second fundamental form averaged at vertices (Rusinkiewicz 2004; trimesh2)")        \
-  X("quadric",       0, 0, "once", 7.0, discrete , make_quadric_estimator,                                   \
-    "quadric fit over a k-ring (libigl's principal_curvature; Panozzo et al. 2010)")                                   \
-  X("goldfeather",   0, 0, "once", 1.9, discrete , make_goldfeather_estimator,                               \
-    "adjacent-normal cubic fit over the 1-ring (Goldfeather and Interrante 2004)")       \
-  X("normal-cycle",  0, 0, "once", 1.5, discrete , make_normal_cycle_estimator,                              \
-    "normal cycle curvature tensor over the 1-ring or a ball (Cohen-Steiner and Morvan 2003)")  \
-  X("icc",           0, 0, "once", 0.5, discrete , make_icc_estimator,                                       \
+//  X(name,          degrees, bench, cost, group,    radius,      factory,          summary)
+#define CURVBENCH_ESTIMATORS(X)                                                                               \
+  X("lhf",           1, 6, "2-4", 1.0,  paper_fit, half_rings , make_lhf_estimator,                           \
+    "local height function fit of degree d (Wang, Jiao et al. 2009, section 2.2)")                            \
+  X("lop",           1, 6, "2",   1.15, paper_fit, half_rings , make_lop_estimator,                           \
+    "local orthogonal projection fit of degree d (Wang, Jiao et al. 2009, section 4.2.2)")                    \
+  X("xu",            2, 2, "2",   2.4,  paper_fit, fixed      , make_xu_estimator,                            \
+    "quadratic fit over Xu's flattened 1-ring (Wang, Jiao et al. 2009, section 4.2.1)")                       \
+  X("lscm",          1, 6, "2-4", 22.0, paper_fit, half_rings , make_lscm_estimator,                          \
+    "fit over a local least-squares conformal map (CGAL's LSCM; section 4.2.3)")                              \
+  X("lscm-fast",     1, 6, "2-4", 2.9,  paper_fit, half_rings , make_lscm_fast_estimator,                     \
+    "the same conformal map computed in-house (dense solve on the small patch)")                              \
+  X("lscm-cg",       1, 6, "none", 22.0, paper_fit, half_rings , make_lscm_cg_estimator,                      \
+    "CGAL's LSCM solved by OpenNL conjugate gradients")                                                       \
+  X("jet",           2, 4, "2-4", 11.4, jet      , half_rings , make_jet_estimator,                           \
+    "CGAL's Jet_fitting_3 osculating jet (Cazals and Pouget 2005)")                                           \
+  X("meyer",         0, 0, "once", 1.1, discrete , fixed      , make_meyer_estimator,                         \
+    "cotangent mean curvature, angle-deficit Gaussian curvature (Meyer et al. 2003; libigl)")                 \
+  X("taubin",        0, 0, "once", 0.5, discrete , fixed      , make_taubin_estimator,                        \
+    "Taubin's curvature tensor from directional curvatures (Taubin 1995)")                                    \
+  X("rusinkiewicz",  0, 0, "once", 1.5, discrete , fixed      , make_rusinkiewicz_estimator,                  \
+    "per-face second fundamental form averaged at vertices (Rusinkiewicz 2004; trimesh2)")                    \
+  X("quadric",       0, 0, "once", 7.0, discrete , whole_rings, make_quadric_estimator,                       \
+    "quadric fit over a k-ring (libigl's principal_curvature; Panozzo et al. 2010)")                          \
+  X("goldfeather",   0, 0, "once", 1.9, discrete , fixed      , make_goldfeather_estimator,                   \
+    "adjacent-normal cubic fit over the 1-ring (Goldfeather and Interrante 2004)")                            \
+  X("normal-cycle",  0, 0, "once", 1.5, discrete , ball_factor, make_normal_cycle_estimator,                  \
+    "normal cycle curvature tensor over the 1-ring or a ball (Cohen-Steiner and Morvan 2003)")                \
+  X("icc",           0, 0, "once", 0.5, discrete , ball_factor, make_icc_estimator,                           \
     "interpolated corrected curvature measures, 1-ring or ball (Lachaud et al. 2020)")
 // clang-format on
 
 namespace curvbench {
 
-#define CURVBENCH_DECLARE_FACTORY(name, lo, hi, bench, cost, group, factory, summary) \
+#define CURVBENCH_DECLARE_FACTORY(name, lo, hi, bench, cost, group, radius, factory, summary) \
   std::unique_ptr<Estimator> factory(EstimatorOptions options);
 CURVBENCH_ESTIMATORS(CURVBENCH_DECLARE_FACTORY)
 #undef CURVBENCH_DECLARE_FACTORY
@@ -85,8 +88,11 @@ struct Registration {
 
 // The registry: the lines of CURVBENCH_ESTIMATORS, then any register_estimator() additions.
 std::vector<Registration>& registry() {
-#define CURVBENCH_REGISTER(name, lo, hi, bench, cost, group, factory, summary) \
-  Registration{{name, lo, hi, bench_degrees(bench), cost, summary, MethodGroup::group}, &factory},
+#define CURVBENCH_REGISTER(name, lo, hi, bench, cost, group, radius, factory, summary) \
+  Registration{                                                                    \
+      {name, lo, hi, bench_degrees(bench), cost, summary, MethodGroup::group,        \
+       NeighbourhoodSize::radius},                                                   \
+      &factory},
   static std::vector<Registration> table = {CURVBENCH_ESTIMATORS(CURVBENCH_REGISTER)};
 #undef CURVBENCH_REGISTER
   return table;
@@ -197,15 +203,30 @@ const char* to_string(MethodGroup g) {
   return "outside estimators";
 }
 
-MethodGroup method_group(const std::string& label) {
-  std::string base = lower(label);
-  if (const Registration* r = find(base)) return r->info.group;
+namespace {
+
+// The registration of a name or of a fit's label "<name>-<degree>"; nullptr when none.
+const Registration* find_label(const std::string& label) {
+  const std::string base = lower(label);
+  if (const Registration* r = find(base)) return r;
   const size_t dash = base.rfind('-');
   if (dash != std::string::npos && dash + 1 < base.size() &&
       std::all_of(base.begin() + static_cast<std::ptrdiff_t>(dash + 1), base.end(),
                   [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }))
-    if (const Registration* r = find(base.substr(0, dash))) return r->info.group;
-  return MethodGroup::outside;
+    return find(base.substr(0, dash));
+  return nullptr;
+}
+
+}  // namespace
+
+const MethodInfo& method_info(const std::string& name_or_label) {
+  if (const Registration* r = find_label(name_or_label)) return r->info;
+  throw UsageError("unknown method '" + name_or_label + "' (valid: " + valid_names() + ")");
+}
+
+MethodGroup method_group(const std::string& label) {
+  const Registration* r = find_label(label);
+  return r == nullptr ? MethodGroup::outside : r->info.group;
 }
 
 std::vector<MethodInfo> method_table() {
