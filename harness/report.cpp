@@ -487,10 +487,9 @@ std::optional<ReportContent> build_report(const std::vector<Experiment>& experim
     if (!experiment_section(*e, options, missing_plots, s)) return std::nullopt;
     out.experiments.push_back(std::move(s));
   }
-  std::ostringstream field;
-  if (!append_field_estimators_section(field, experiments, options, missing_plots))
-    return std::nullopt;
-  out.studies.push_back(markdown_section("field-studies", field.str()));
+  report::Section field{"field-studies", "", {}};
+  if (!field_sections(experiments, options, missing_plots, field)) return std::nullopt;
+  out.studies.push_back(std::move(field));
   std::ostringstream scaling;
   append_radius_scaling_section(scaling, experiments, options);
   out.studies.push_back(markdown_section("radius-scaling", scaling.str()));
