@@ -493,9 +493,9 @@ std::optional<ReportContent> build_report(const std::vector<Experiment>& experim
   std::ostringstream scaling;
   append_radius_scaling_section(scaling, experiments, options);
   out.studies.push_back(markdown_section("radius-scaling", scaling.str()));
-  std::ostringstream sweeps;
-  if (!append_sweeps_section(sweeps, experiments, options, missing_plots)) return std::nullopt;
-  out.studies.push_back(markdown_section("sweeps", sweeps.str()));
+  report::Section sweeps{"sweeps", "", {}};
+  if (!sweeps_section(experiments, options, missing_plots, sweeps)) return std::nullopt;
+  out.studies.push_back(std::move(sweeps));
   if (missing_plots > 0)
     std::fprintf(stderr, "report: %d plots not rendered (is gnuplot installed?)\n", missing_plots);
   return out;
