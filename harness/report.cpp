@@ -490,9 +490,7 @@ std::optional<ReportContent> build_report(const std::vector<Experiment>& experim
   report::Section field{"field-studies", "", {}};
   if (!field_sections(experiments, options, missing_plots, field)) return std::nullopt;
   out.studies.push_back(std::move(field));
-  std::ostringstream scaling;
-  append_radius_scaling_section(scaling, experiments, options);
-  out.studies.push_back(markdown_section("radius-scaling", scaling.str()));
+  out.studies.push_back(radius_scaling_section(experiments, options));
   report::Section sweeps{"sweeps", "", {}};
   if (!sweeps_section(experiments, options, missing_plots, sweeps)) return std::nullopt;
   out.studies.push_back(std::move(sweeps));
