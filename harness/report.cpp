@@ -471,8 +471,7 @@ std::optional<ReportContent> build_report(const std::vector<Experiment>& experim
   ReportContent out;
   out.paper.push_back(table2_section(dir));
   out.paper.push_back(table4_section(dir));
-  out.paper.push_back(markdown_section(
-      "well-shaped-torus", well_shaped_torus_markdown(dir + "/torus_unstructured.csv")));
+  out.paper.push_back(well_shaped_torus_section(dir + "/torus_unstructured.csv"));
   out.paper.push_back(markdown_section("table5", read_text(dir + "/table5_timing.md")));
 
   int missing_plots = 0;
