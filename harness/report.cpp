@@ -458,7 +458,7 @@ bool experiment_section(const Experiment& e, const ReportOptions& options, int& 
       }
     }
   }
-  s.text(cause_tables_markdown(e, dir));
+  cause_tables(e, dir, s);
   return true;
 }
 
