@@ -24,6 +24,7 @@
 #include "harness/report_field.h"
 #include "harness/report_radius_scaling.h"
 #include "harness/report_sweeps.h"
+#include "harness/report_table5.h"
 #include "harness/well_shaped_torus_table.h"
 #include "mesh/io.h"
 #include "mesh/rings.h"
@@ -55,11 +56,6 @@ std::string paper_g(double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%g", x);
   return buf;
-}
-
-// The text of an optional input; empty when the file does not exist.
-std::string read_text(const std::string& path) {
-  return fs::exists(path) ? read_file(path) : "";
 }
 
 std::string family_caption(const std::string& family) {
@@ -350,14 +346,6 @@ report::Section table4_section(const std::string& dir) {
   return s.table(std::move(tab));
 }
 
-// A section still written as markdown by its own writer: one Text block.
-report::Section markdown_section(std::string id, std::string markdown) {
-  report::Section s;
-  s.id = std::move(id);
-  s.text(std::move(markdown));
-  return s;
-}
-
 // The vertex sets of the rows, in first-seen order.
 std::vector<std::string> vertex_sets_of(const std::vector<const ErrorRow*>& rows) {
   std::vector<std::string> out;
@@ -472,7 +460,7 @@ std::optional<ReportContent> build_report(const std::vector<Experiment>& experim
   out.paper.push_back(table2_section(dir));
   out.paper.push_back(table4_section(dir));
   out.paper.push_back(well_shaped_torus_section(dir + "/torus_unstructured.csv"));
-  out.paper.push_back(markdown_section("table5", read_text(dir + "/table5_timing.md")));
+  out.paper.push_back(table5_section(dir));
 
   int missing_plots = 0;
   // The paper's figures first (experiments named fig...), then the extra studies.
