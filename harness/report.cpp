@@ -207,9 +207,10 @@ bool render_plot_files(report::Plot& plot, const std::string& results_dir,
     gp << "EOD\n";
     const std::string look = "lc rgb '" + (s.color.empty() ? std::string("#000000") : s.color) +
                              "' dt " + std::to_string(s.dash);
+    // A scatter series marks points on the curves (the sweeps' circled best radii): larger.
     cmd << (drawn++ ? ", " : "") << "$S" << i << " using 1:2 with "
         << (s.marker == 0   ? "lines lw 1 "
-            : s.points_only ? "points ps 1.2 pt " + std::to_string(s.marker) + " "
+            : s.points_only ? "points ps 2.5 lw 2 pt " + std::to_string(s.marker) + " "
                             : "linespoints lw 2 ps 1.2 pt " + std::to_string(s.marker) + " ")
         << look << " title \"" << s.label << "\" noenhanced";
   }
