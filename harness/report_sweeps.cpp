@@ -249,7 +249,6 @@ bool noise_sweep(report::Section& out, const Experiment& e, const std::vector<Er
         plot.title = "L2 error in " + quantity_words(q) + ", " + model + " noise [" + family + "]";
         plot.x_label = "noise amplitude sigma / h";
         for (size_t i = 0; i < methods.size(); ++i) {
-          // sigma/h = 0 (no noise) has no place on the log axis.
           std::map<double, double> curve;
           for (const ErrorRow& r : fam)
             if (r.method == methods[i] && r.quantity == to_string(q) &&
