@@ -117,8 +117,12 @@ inline std::vector<Table5Row> rows_from_samples(const SampleLog& log) {
   return rows;
 }
 
-inline std::string format_rows(const std::vector<Table5Row>& rows) {
-  std::string out = provenance_comment() + "\n" + std::string(kTable5Header) + "\n";
+/// The CSV text: the provenance comment, `comment` (a further '#' line, none if empty), the
+/// header, the rows.
+inline std::string format_rows(const std::vector<Table5Row>& rows,
+                               const std::string& comment = "") {
+  std::string out = provenance_comment() + "\n" + (comment.empty() ? "" : comment + "\n") +
+                    std::string(kTable5Header) + "\n";
   char buf[512];
   for (const Table5Row& r : rows) {
     std::snprintf(buf, sizeof buf, "%s,%d,%ld,%ld,%s,%d,%d,%.6g,%.6g\n", r.mesh.c_str(), r.level,

@@ -194,11 +194,10 @@ std::vector<CauseRow> read_cause_csv(const std::string& path) {
   return parse_cause_csv(read_file(path), path);
 }
 
-std::string cause_tables_markdown(const Experiment& e, const std::string& results_dir) {
+void cause_tables(const Experiment& e, const std::string& results_dir, report::Section& out) {
   const std::string path = results_dir + "/errors_by_cause/" + e.name + ".csv";
-  if (!std::filesystem::exists(path)) return "";
+  if (!std::filesystem::exists(path)) return;
   const std::vector<CauseRow> rows = read_cause_csv(path);
-  std::ostringstream md;
   bool intro = false;
   for (const ExperimentMesh& m : e.meshes) {
     // Methods in first-seen order, each with its row per bin.
@@ -211,17 +210,17 @@ std::string cause_tables_markdown(const Experiment& e, const std::string& result
     }
     if (methods.empty()) continue;
     if (!intro) {
-      md << "### Errors by cause at the finest level\n\n"
-         << "Relative L2 error in H (|e|_2/|H|_2) over the vertices of each bin (after Gatzke "
-            "and Grimm 2006): by valence, by the smallest angle of the triangles around the "
-            "vertex (degrees), and by the sign of the exact Gaussian curvature (K~0: |K| at "
-            "most "
-         << kTinyGaussian
-         << " times the mesh's largest |K|). The row *vertices* counts each bin's vertices in "
-            "the vertex set of most methods; a method scored over another set names it in "
-            "brackets; `-`: an empty bin. Source: "
-            "`errors_by_cause/"
-         << e.name << ".csv`.\n\n";
+      std::ostringstream words;
+      words << "Relative L2 error in H (|e|_2/|H|_2) over the vertices of each bin (after Gatzke "
+               "and Grimm 2006): by valence, by the smallest angle of the triangles around the "
+               "vertex (degrees), and by the sign of the exact Gaussian curvature (K~0: |K| at "
+               "most "
+            << kTinyGaussian
+            << " times the mesh's largest |K|). The row *vertices* counts each bin's vertices in "
+               "the vertex set of most methods; a method scored over another set names it in "
+               "brackets; `-`: an empty bin. Source: `errors_by_cause/"
+            << e.name << ".csv`.";
+      out.heading("Errors by cause at the finest level").text(words.str());
       intro = true;
     }
     const CauseRow& first = *of[methods.front()].begin()->second;
@@ -240,33 +239,35 @@ std::string cause_tables_markdown(const Experiment& e, const std::string& result
         counted_by = &method;
         break;
       }
-    md << "**`" << m.label() << "`**, level " << first.level << " (" << first.vertices
-       << " vertices)\n\n| method |";
+    report::Table tab;
+    tab.caption = "**`" + m.label() + "`**, level " + std::to_string(first.level) + " (" +
+                  std::to_string(first.vertices) + " vertices)";
+    tab.columns = {"method"};
     for (const CauseBin& b : cause_bins())
-      md << " " << (std::string(b.cause) == "valence" ? "val " : "") << b.bin
-         << (std::string(b.cause) == "min-angle" ? "°" : "") << " |";
-    md << "\n|---|";
-    for (size_t i = 0; i < cause_bins().size(); ++i) md << "---:|";
-    md << "\n| *vertices (" << set << ")* |";
+      tab.columns.push_back((std::string(b.cause) == "valence" ? "val " : "") + std::string(b.bin) +
+                            (std::string(b.cause) == "min-angle" ? "°" : ""));
+    std::vector<report::Cell> count_row{"*vertices (" + set + ")*"};
     const auto& counts = of[*counted_by];
     for (const CauseBin& b : cause_bins()) {
       const auto it = counts.find(std::string(b.cause) + "/" + b.bin);
-      md << " " << (it == counts.end() ? 0 : it->second->counted + it->second->excluded) << " |";
+      const int n = it == counts.end() ? 0 : it->second->counted + it->second->excluded;
+      count_row.push_back(report::Cell::number(n, std::to_string(n)));
     }
-    md << "\n";
+    tab.add(std::move(count_row));
     for (const std::string& method : methods) {
       const auto& cells = of[method];
       const std::string& own = cells.begin()->second->vertex_set;
-      md << "| " << method << (own != set ? " (" + own + ")" : std::string()) << " |";
+      std::vector<report::Cell> row{method + (own != set ? " (" + own + ")" : std::string())};
       for (const CauseBin& b : cause_bins()) {
         const auto it = cells.find(std::string(b.cause) + "/" + b.bin);
-        md << " " << (it == cells.end() ? "-" : error_text(it->second->error)) << " |";
+        row.push_back(it == cells.end()
+                          ? report::Cell("-")
+                          : report::Cell::number(it->second->error, error_text(it->second->error)));
       }
-      md << "\n";
+      tab.add(std::move(row));
     }
-    md << "\n";
+    out.table(std::move(tab));
   }
-  return md.str();
 }
 
 }  // namespace curvbench

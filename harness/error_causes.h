@@ -20,6 +20,7 @@
 
 #include "harness/experiment.h"
 #include "harness/metrics.h"
+#include "harness/report_model.h"
 #include "harness/results_table.h"
 #include "mesh/mesh.h"
 #include "surfaces/surface.h"
@@ -93,9 +94,10 @@ std::vector<CauseRow> parse_cause_csv(const std::string& text, const std::string
 /// Reads the CSV file; throws InputError.
 std::vector<CauseRow> read_cause_csv(const std::string& path);
 
-/// REPORT.md: per mesh family of the experiment, a table of the errors by cause at the finest
-/// level (methods as rows, bins as columns, the vertex count of each bin) from
-/// <results_dir>/errors_by_cause/<experiment>.csv; empty when that file is missing.
-std::string cause_tables_markdown(const Experiment& e, const std::string& results_dir);
+/// Appends to an experiment's section `out` a heading and its words, then per mesh family of the
+/// experiment a table of the errors by cause at the finest level (methods as rows, bins as
+/// columns, the vertex count of each bin first; each cell with its number) from
+/// <results_dir>/errors_by_cause/<experiment>.csv; nothing when that file is missing.
+void cause_tables(const Experiment& e, const std::string& results_dir, report::Section& out);
 
 }  // namespace curvbench

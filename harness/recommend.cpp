@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <sstream>
 #include <tuple>
 
 #include "core/atomic_file.h"
@@ -192,43 +193,53 @@ void write_recommendations_csv(const std::string& path, const std::vector<Recomm
   write_file_atomic(path, out.str());
 }
 
-void append_recommendations_section(std::ostringstream& md,
-                                    const std::vector<Recommendation>& recs) {
-  md << "## Choosing an estimator and a radius\n\n"
-     << "From the radius sweeps above, per mesh quality (the family that stands for it: "
-        "well-shaped `torus-unstructured`, isosurface `torus-iso-projected`, irregular "
-        "`bump-irregular`) and noise along the normal (sigma as a multiple of the mean edge "
-        "length h): the most accurate method and radius, ranked by the relative L2 error in the "
-        "mean curvature H, and the fastest case (method and radius) whose error is within 2x of "
-        "it, timed by the case's own estimation (`timings/<experiment>.csv`; one timing per case "
-        "label and mesh, the same at every noise level). A noise level no sweep ran says \"not "
-        "swept\" (`curvbench run --all --full` runs them all). Every cell names its case label as "
-        "in `<experiment>.csv`; the rows are in `recommendations.csv`. `curvbench recommend "
-        "MESH` prints the row that matches a mesh. The times are wall times of single cases, a "
-        "few milliseconds each on these meshes, taken while other cases run: unlike the errors "
-        "they vary from run to run, and so may the cheapest pick (`make bench` measures "
-        "speed).\n\n"
-     << "| mesh quality | noise sigma/h | most accurate: case | H L2 error | time | cheapest "
-        "within "
-        "2x: case | H L2 error | time | source |\n"
-     << "|---|---|---|---|---|---|---|---|---|\n";
+report::Section recommendations_section(const std::vector<Recommendation>& recs) {
+  report::Section s{"choosing", "Choosing an estimator and a radius", {}};
+  s.text(
+      "From the radius sweeps above, per mesh quality (the family that stands for it: "
+      "well-shaped `torus-unstructured`, isosurface `torus-iso-projected`, irregular "
+      "`bump-irregular`) and noise along the normal (sigma as a multiple of the mean edge "
+      "length h): the most accurate method and radius, ranked by the relative L2 error in the "
+      "mean curvature H, and the fastest case (method and radius) whose error is within 2x of "
+      "it, timed by the case's own estimation (`timings/<experiment>.csv`; one timing per case "
+      "label and mesh, the same at every noise level). A noise level no sweep ran says \"not "
+      "swept\" (`curvbench run --all --full` runs them all). Every cell names its case label as "
+      "in `<experiment>.csv`; the rows are in `recommendations.csv`. `curvbench recommend "
+      "MESH` prints the row that matches a mesh. The times are wall times of single cases, a "
+      "few milliseconds each on these meshes, taken while other cases run: unlike the errors "
+      "they vary from run to run, and so may the cheapest pick (`make bench` measures "
+      "speed).");
+  report::Table tab;
+  tab.id = "choosing-table";
+  tab.columns = {"mesh quality", "noise sigma/h", "most accurate: case",
+                 "H L2 error",   "time",          "cheapest within 2x: case",
+                 "H L2 error",   "time",          "source"};
+  tab.numeric = {false, true, false, true, true, false, true, true, false};
+  // A pick's three cells: its case, its error and its time.
+  const auto pick = [](std::vector<report::Cell>& row, const BestRadius& b, double seconds) {
+    row.push_back(case_text(b));
+    row.push_back(report::Cell::number(b.error, sci(b.error)));
+    row.push_back(report::Cell::number(seconds, seconds_text(seconds)));
+  };
   for (const Recommendation& r : recs) {
-    md << "| " << r.quality << " | " << format_g(r.sigma_over_h) << " | ";
+    std::vector<report::Cell> row{r.quality,
+                                  report::Cell::number(r.sigma_over_h, format_g(r.sigma_over_h))};
     if (!r.swept) {
-      md << "not swept | | | not swept | | | |\n";
+      row.insert(row.end(), {"not swept", "", "", "not swept", "", "", ""});
+      tab.add(std::move(row));
       continue;
     }
-    md << case_text(r.best) << " | " << sci(r.best.error) << " | " << seconds_text(r.best_seconds)
-       << " | ";
+    pick(row, r.best, r.best_seconds);
     if (r.has_cheapest)
-      md << case_text(r.cheapest) << " | " << sci(r.cheapest.error) << " | "
-         << seconds_text(r.cheapest_seconds) << " | ";
+      pick(row, r.cheapest, r.cheapest_seconds);
     else
-      md << "no timed case | | | ";
-    md << "`" << r.best.experiment << "`, `" << r.best.family << "` level " << r.best.level
-       << ", noise " << r.best.noise << " (" << r.cases << " cases) |\n";
+      row.insert(row.end(), {"no timed case", "", ""});
+    row.push_back("`" + r.best.experiment + "`, `" + r.best.family + "` level " +
+                  std::to_string(r.best.level) + ", noise " + r.best.noise + " (" +
+                  std::to_string(r.cases) + " cases)");
+    tab.add(std::move(row));
   }
-  md << "\n";
+  return s.table(std::move(tab));
 }
 
 MeshClass classify_mesh(const Mesh& mesh) {

@@ -14,10 +14,10 @@
 // noise). A (quality, noise) pair no sweep has rows for is "not swept".
 #pragma once
 
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "harness/report_model.h"
 #include "harness/report_sweeps.h"
 #include "harness/results_table.h"
 #include "mesh/mesh.h"
@@ -64,9 +64,9 @@ std::vector<Recommendation> recommendations(const std::vector<ErrorRow>& rows,
 /// (status "swept" or "not swept"; the fields of a missing pick empty).
 void write_recommendations_csv(const std::string& path, const std::vector<Recommendation>& recs);
 
-/// Appends the REPORT.md section "Choosing an estimator and a radius".
-void append_recommendations_section(std::ostringstream& md,
-                                    const std::vector<Recommendation>& recs);
+/// The report's section "Choosing an estimator and a radius" (id "choosing"): its words and the
+/// table of the picks, each cell with its number (error, seconds).
+report::Section recommendations_section(const std::vector<Recommendation>& recs);
 
 /// The quality class of a user's mesh from its triangle angles and valences (mesh_quality(),
 /// meshgen/generate.h), with the reason in words. Throws InputError when the mesh cannot be

@@ -24,6 +24,7 @@
 #include "harness/report_field.h"
 #include "harness/report_radius_scaling.h"
 #include "harness/report_sweeps.h"
+#include "harness/report_table5.h"
 #include "harness/well_shaped_torus_table.h"
 #include "mesh/io.h"
 #include "mesh/rings.h"
@@ -55,11 +56,6 @@ std::string paper_g(double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%g", x);
   return buf;
-}
-
-// The text of an optional input; empty when the file does not exist.
-std::string read_text(const std::string& path) {
-  return fs::exists(path) ? read_file(path) : "";
 }
 
 std::string family_caption(const std::string& family) {
@@ -211,9 +207,10 @@ bool render_plot_files(report::Plot& plot, const std::string& results_dir,
     gp << "EOD\n";
     const std::string look = "lc rgb '" + (s.color.empty() ? std::string("#000000") : s.color) +
                              "' dt " + std::to_string(s.dash);
+    // A scatter series marks points on the curves (the sweeps' circled best radii): larger.
     cmd << (drawn++ ? ", " : "") << "$S" << i << " using 1:2 with "
         << (s.marker == 0   ? "lines lw 1 "
-            : s.points_only ? "points ps 1.2 pt " + std::to_string(s.marker) + " "
+            : s.points_only ? "points ps 2.5 lw 2 pt " + std::to_string(s.marker) + " "
                             : "linespoints lw 2 ps 1.2 pt " + std::to_string(s.marker) + " ")
         << look << " title \"" << s.label << "\" noenhanced";
   }
@@ -372,14 +369,6 @@ report::Section table4_section(const std::string& dir) {
   return table4_section(rows);
 }
 
-// A section still written as markdown by its own writer: one Text block.
-report::Section markdown_section(std::string id, std::string markdown) {
-  report::Section s;
-  s.id = std::move(id);
-  s.text(std::move(markdown));
-  return s;
-}
-
 // The vertex sets of the rows, in first-seen order.
 std::vector<std::string> vertex_sets_of(const std::vector<const ErrorRow*>& rows) {
   std::vector<std::string> out;
@@ -480,7 +469,7 @@ bool experiment_section(const Experiment& e, const ReportOptions& options, int& 
       }
     }
   }
-  s.text(cause_tables_markdown(e, dir));
+  cause_tables(e, dir, s);
   return true;
 }
 
@@ -493,9 +482,8 @@ std::optional<ReportContent> build_report(const std::vector<Experiment>& experim
   ReportContent out;
   out.paper.push_back(table2_section(dir));
   out.paper.push_back(table4_section(dir));
-  out.paper.push_back(markdown_section(
-      "well-shaped-torus", well_shaped_torus_markdown(dir + "/torus_unstructured.csv")));
-  out.paper.push_back(markdown_section("table5", read_text(dir + "/table5_timing.md")));
+  out.paper.push_back(well_shaped_torus_section(dir + "/torus_unstructured.csv"));
+  out.paper.push_back(table5_section(dir));
 
   int missing_plots = 0;
   // The paper's figures first (experiments named fig...), then the extra studies.
@@ -509,16 +497,13 @@ std::optional<ReportContent> build_report(const std::vector<Experiment>& experim
     if (!experiment_section(*e, options, missing_plots, s)) return std::nullopt;
     out.experiments.push_back(std::move(s));
   }
-  std::ostringstream field;
-  if (!append_field_estimators_section(field, experiments, options, missing_plots))
-    return std::nullopt;
-  out.studies.push_back(markdown_section("field-studies", field.str()));
-  std::ostringstream scaling;
-  append_radius_scaling_section(scaling, experiments, options);
-  out.studies.push_back(markdown_section("radius-scaling", scaling.str()));
-  std::ostringstream sweeps;
-  if (!append_sweeps_section(sweeps, experiments, options, missing_plots)) return std::nullopt;
-  out.studies.push_back(markdown_section("sweeps", sweeps.str()));
+  report::Section field{"field-studies", "", {}};
+  if (!field_sections(experiments, options, missing_plots, field)) return std::nullopt;
+  out.studies.push_back(std::move(field));
+  out.studies.push_back(radius_scaling_section(experiments, options));
+  report::Section sweeps{"sweeps", "", {}};
+  if (!sweeps_section(experiments, options, missing_plots, sweeps)) return std::nullopt;
+  out.studies.push_back(std::move(sweeps));
   if (missing_plots > 0)
     std::fprintf(stderr, "report: %d plots not rendered (is gnuplot installed?)\n", missing_plots);
   return out;

@@ -4,7 +4,7 @@
 //   results/rates.csv          rates of every series
 //   results/table2.csv         ring sizes (paper Table 2)
 //   results/table4.csv         isosurface input errors (paper Table 4)
-//   results/table5_timing.md   Table 5 timing (performance issue), included if present
+//   results/table5_timing.csv, table5_scaling.csv, end_to_end.csv   Table 5 (report_table5.h)
 //   results/plots/<panel>_<family>.{png,svg}   one log-log plot per figure panel and mesh family
 #pragma once
 

@@ -4,8 +4,10 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <set>
+#include <sstream>
 #include <string>
 
 #include "harness/metrics.h"
@@ -169,10 +171,10 @@ FinestHErrors finest_h_errors(const std::vector<ErrorRow>& rows, const std::stri
   return out;
 }
 
-// One sentence per family that runs at two settings (e.g. aspect 4 and 16): the ratio of each
+// One bullet per family that runs at two settings (e.g. aspect 4 and 16): the ratio of each
 // method's finest-level L2 error in H, the stronger setting over the weaker.
-void append_setting_ratios(std::ostringstream& md, const Experiment& e,
-                           const std::vector<ErrorRow>& rows) {
+std::string setting_ratios(const Experiment& e, const std::vector<ErrorRow>& rows) {
+  std::ostringstream md;
   for (size_t i = 0; i < e.meshes.size(); ++i)
     for (size_t j = i + 1; j < e.meshes.size(); ++j) {
       const ExperimentMesh& a = e.meshes[i];
@@ -194,27 +196,151 @@ void append_setting_ratios(std::ostringstream& md, const Experiment& e,
         md << (k ? ", " : "") << ratios[k].second << " " << two_decimals(ratios[k].first);
       md << ".\n";
     }
+  return md.str();
 }
 
-bool append_field_section(std::ostringstream& md, const FieldSection& section,
-                          const std::vector<Experiment>& experiments, const ReportOptions& options,
-                          int& missing_plots);
+// The words before a group's per-mesh parts: what each table, plot and sentence shows.
+std::string section_intro(const FieldSection& section) {
+  return std::string(section.intro) +
+         " Per mesh family: the errors at the finest level with, "
+         "in brackets, the average convergence rate log(e1/eN)/log(h1/hN) of the series; "
+         "the time per vertex of the estimation at the finest level (wall time of the whole "
+         "mesh over its vertices, with the run's threads, measured when the case was "
+         "computed); and the accuracy-versus-cost plot of the L2 error in H against the time "
+         "per vertex, one point per method and level (levels joined, finest at the bottom "
+         "right for a converging method); and the time to solution, the L2 error in H "
+         "against the time of the whole mesh, with the cheapest estimator reaching each "
+         "target error. A series *converges* when its average L2 rate and "
+         "its rate between the two finest levels are both at least " +
+         two_decimals(kConvergenceRateThreshold) + " (a finest-level error of at most " +
+         error_text(kRoundOffError) +
+         " counts as exact up to round-off); the words below are generated from the tables "
+         "with that threshold.";
+}
+
+// The table of the finest level's errors (with each series' average rate) and time per vertex.
+report::Table error_table(const std::vector<MethodRows>& methods, int finest,
+                          const std::function<double(const std::string&)>& us_per_vertex) {
+  report::Table tab;
+  tab.columns = {"method"};
+  for (Quantity q : kQuantities)
+    for (Norm n : {Norm::L2, Norm::Linf})
+      tab.columns.push_back(std::string(to_string(q)) + " " + to_string(n));
+  tab.columns.push_back("us/vertex");
+  for (const MethodRows& m : methods) {
+    std::vector<report::Cell> row{m.method};
+    for (Quantity q : kQuantities)
+      for (Norm n : {Norm::L2, Norm::Linf}) {
+        const auto* s = m.find(q, n);
+        if (s == nullptr || s->empty() || s->rbegin()->first != finest) {
+          row.push_back("-");
+          continue;
+        }
+        const double err = s->rbegin()->second->error;
+        row.push_back(report::Cell::number(
+            err, error_text(err) + " (" + two_decimals(rates(*s).first) + ")"));
+      }
+    const double us = us_per_vertex(m.method);
+    row.push_back(std::isfinite(us) ? report::Cell::number(us, two_decimals(us))
+                                    : report::Cell("n/a"));
+    tab.add(std::move(row));
+  }
+  return tab;
+}
+
+// Which estimators converge, per quantity (L2), and the most accurate one in H and its cost.
+std::string convergence_words(const std::vector<MethodRows>& methods, int finest,
+                              const std::function<double(const std::string&)>& us_per_vertex) {
+  std::ostringstream md;
+  for (Quantity q : kQuantities) {
+    std::string yes, no, exact;
+    for (const MethodRows& m : methods) {
+      const auto* s = m.find(q, Norm::L2);
+      if (s == nullptr || s->size() < 2) continue;
+      const auto r = rates(*s);
+      if (s->rbegin()->second->error <= kRoundOffError)
+        exact += (exact.empty() ? "" : ", ") + m.method;
+      else if (converges(r))
+        yes += (yes.empty() ? "" : ", ") + m.method + " (" + two_decimals(r.first) + ")";
+      else
+        no += (no.empty() ? "" : ", ") + m.method + " (" + two_decimals(r.first) + ", last " +
+              two_decimals(r.second) + ")";
+    }
+    if (yes.empty() && no.empty() && exact.empty()) continue;
+    md << "- " << quantity_name(q) << ": "
+       << (yes.empty() ? "no estimator converges" : "converge: " + yes)
+       << (no.empty() ? "" : "; do not converge (average rate, last rate): " + no)
+       << (exact.empty()
+               ? ""
+               : "; exact up to round-off (error <= " + error_text(kRoundOffError) + "): " + exact)
+       << ".\n";
+  }
+  const MethodRows* best = nullptr;
+  double best_error = INFINITY;
+  for (const MethodRows& m : methods)
+    if (const auto* s = m.find(Quantity::H, Norm::L2); s && !s->empty()) {
+      const double err = s->rbegin()->second->error;
+      if (std::isfinite(err) && err < best_error) {
+        best_error = err;
+        best = &m;
+      }
+    }
+  if (best != nullptr) {
+    const double us = us_per_vertex(best->method);
+    md << "- Smallest L2 error in H at level " << finest << ": " << best->method << " ("
+       << error_text(best_error)
+       << (std::isfinite(us) ? ", " + two_decimals(us) + " us/vertex" : std::string()) << ").\n";
+  }
+  return md.str();
+}
+
+// The cheapest method reaching each target error of time_targets(timed), and the runner-up;
+// an empty table when there is no target.
+report::Table cheapest_table(const std::vector<ErrorRow>& timed, const std::string& label,
+                             int first_level, int finest) {
+  report::Table tab;
+  const std::vector<double> targets = time_targets(timed);
+  if (targets.empty()) return tab;
+  tab.caption = "Cheapest estimator reaching a target L2 error in H on `" + label +
+                "` (the least time of the whole mesh's estimation over the levels where the "
+                "error is at most the target; levels " +
+                std::to_string(first_level) + "-" + std::to_string(finest) + "):";
+  tab.columns = {"target", "cheapest (level, time, error)", "runner-up (level, time, error)"};
+  tab.numeric = {true, false, false};
+  // A pick's cell: its words, and its time as the number.
+  const auto cell = [](const ErrorRow* r) {
+    return r == nullptr
+               ? report::Cell("-")
+               : report::Cell::number(r->seconds, r->method + " (" + std::to_string(r->level) +
+                                                      ", " + seconds_text(r->seconds) + ", " +
+                                                      error_text(r->error) + ")");
+  };
+  for (double target : targets) {
+    const CheapestToReach c = cheapest_to_reach(timed, target);
+    tab.add(
+        {report::Cell::number(target, error_text(target)),
+         c.best == nullptr ? report::Cell("no estimator reaches it at these levels") : cell(c.best),
+         cell(c.runner_up)});
+  }
+  return tab;
+}
+
+bool field_group(const FieldSection& section, const std::vector<Experiment>& experiments,
+                 const ReportOptions& options, int& missing_plots, report::Section& out);
 
 }  // namespace
 
-bool append_field_estimators_section(std::ostringstream& md,
-                                     const std::vector<Experiment>& experiments,
-                                     const ReportOptions& options, int& missing_plots) {
+bool field_sections(const std::vector<Experiment>& experiments, const ReportOptions& options,
+                    int& missing_plots, report::Section& out) {
   for (const FieldSection& section : kFieldSections)
-    if (!append_field_section(md, section, experiments, options, missing_plots)) return false;
+    if (!field_group(section, experiments, options, missing_plots, out)) return false;
   return true;
 }
 
 namespace {
 
-bool append_field_section(std::ostringstream& md, const FieldSection& section,
-                          const std::vector<Experiment>& experiments, const ReportOptions& options,
-                          int& missing_plots) {
+bool field_group(const FieldSection& section, const std::vector<Experiment>& experiments,
+                 const ReportOptions& options, int& missing_plots, report::Section& out) {
   const std::string dir = options.results_dir;
   bool header_written = false;
   for (const Experiment& e : experiments) {
@@ -222,8 +348,8 @@ bool append_field_section(std::ostringstream& md, const FieldSection& section,
     const std::string csv = dir + "/" + e.name + ".csv";
     if (!fs::exists(csv)) continue;
     const std::vector<ErrorRow> rows = read_error_csv(csv);
-    // Microseconds per vertex by (family, level, method), when the timings were kept.
-    // and seconds of the whole case.
+    // Microseconds per vertex and seconds of the whole case by (family, level, method), when the
+    // timings were kept.
     std::map<std::tuple<std::string, int, std::string>, double> us_per_vertex, case_seconds;
     const std::string timings = dir + "/timings/" + e.name + ".csv";
     if (fs::exists(timings))
@@ -234,25 +360,11 @@ bool append_field_section(std::ostringstream& md, const FieldSection& section,
         }
 
     if (!header_written) {
-      md << "## " << section.heading << "\n\n"
-         << section.intro
-         << " Per mesh family: the errors at the finest level with, "
-            "in brackets, the average convergence rate log(e1/eN)/log(h1/hN) of the series; "
-            "the time per vertex of the estimation at the finest level (wall time of the whole "
-            "mesh over its vertices, with the run's threads, measured when the case was "
-            "computed); and the accuracy-versus-cost plot of the L2 error in H against the time "
-            "per vertex, one point per method and level (levels joined, finest at the bottom "
-            "right for a converging method); and the time to solution, the L2 error in H "
-            "against the time of the whole mesh, with the cheapest estimator reaching each "
-            "target error. A series *converges* when its average L2 rate and "
-            "its rate between the two finest levels are both at least "
-         << two_decimals(kConvergenceRateThreshold) << " (a finest-level error of at most "
-         << error_text(kRoundOffError) << " counts as exact up to round-off)"
-         << "; the words below are generated from the tables with that threshold.\n\n";
+      out.heading(section.heading, 0).text(section_intro(section));
       header_written = true;
     }
     if (const std::string notes = outside_method_notes(e, dir); !notes.empty())
-      md << "Outside estimators of " << e.name << ":\n\n" << notes;
+      out.text("Outside estimators of " + e.name + ":\n\n" + notes);
     for (const ExperimentMesh& mesh : e.meshes) {
       std::vector<MethodRows> methods;
       std::map<std::string, size_t> index;
@@ -268,84 +380,24 @@ bool append_field_section(std::ostringstream& md, const FieldSection& section,
       }
       if (any == nullptr) continue;
       const int finest = *levels.rbegin();
-      md << "### " << e.name << ": `" << mesh.label() << "`"
-         << (any->noise != "none" ? " (noise " + any->noise + ")" : std::string()) << "\n\n"
-         << "Finest level " << finest << ": " << any->vertices
-         << " vertices, h = " << error_text(any->h) << "; levels " << *levels.begin() << "-"
-         << finest << ".\n\n"
-         << "| method |";
-      for (Quantity q : kQuantities)
-        for (Norm n : {Norm::L2, Norm::Linf})
-          md << " " << to_string(q) << " " << to_string(n) << " |";
-      md << " us/vertex |\n|---|";
-      for (size_t i = 0; i < 2 * std::size(kQuantities) + 1; ++i) md << "---|";
-      md << "\n";
-      for (const MethodRows& m : methods) {
-        md << "| " << m.method << " |";
-        for (Quantity q : kQuantities)
-          for (Norm n : {Norm::L2, Norm::Linf}) {
-            const auto* s = m.find(q, n);
-            if (s == nullptr || s->empty() || s->rbegin()->first != finest) {
-              md << " - |";
-              continue;
-            }
-            md << " " << error_text(s->rbegin()->second->error) << " ("
-               << two_decimals(rates(*s).first) << ") |";
-          }
-        const auto t = us_per_vertex.find({mesh.label(), finest, m.method});
-        md << " " << (t == us_per_vertex.end() ? "n/a" : two_decimals(t->second)) << " |\n";
-      }
-      md << "\n";
-
-      // Which estimators converge, per quantity (L2).
-      for (Quantity q : kQuantities) {
-        std::string yes, no, exact;
-        for (const MethodRows& m : methods) {
-          const auto* s = m.find(q, Norm::L2);
-          if (s == nullptr || s->size() < 2) continue;
-          const auto r = rates(*s);
-          if (s->rbegin()->second->error <= kRoundOffError)
-            exact += (exact.empty() ? "" : ", ") + m.method;
-          else if (converges(r))
-            yes += (yes.empty() ? "" : ", ") + m.method + " (" + two_decimals(r.first) + ")";
-          else
-            no += (no.empty() ? "" : ", ") + m.method + " (" + two_decimals(r.first) + ", last " +
-                  two_decimals(r.second) + ")";
-        }
-        if (yes.empty() && no.empty() && exact.empty()) continue;
-        md << "- " << quantity_name(q) << ": "
-           << (yes.empty() ? "no estimator converges" : "converge: " + yes)
-           << (no.empty() ? "" : "; do not converge (average rate, last rate): " + no)
-           << (exact.empty() ? ""
-                             : "; exact up to round-off (error <= " + error_text(kRoundOffError) +
-                                   "): " + exact)
-           << ".\n";
-      }
-      // The most accurate estimator in H at the finest level, and its cost.
-      const MethodRows* best = nullptr;
-      double best_error = INFINITY;
-      for (const MethodRows& m : methods)
-        if (const auto* s = m.find(Quantity::H, Norm::L2); s && !s->empty()) {
-          const double err = s->rbegin()->second->error;
-          if (std::isfinite(err) && err < best_error) {
-            best_error = err;
-            best = &m;
-          }
-        }
-      if (best != nullptr) {
-        const auto t = us_per_vertex.find({mesh.label(), finest, best->method});
-        md << "- Smallest L2 error in H at level " << finest << ": " << best->method << " ("
-           << error_text(best_error)
-           << (t == us_per_vertex.end() ? "" : ", " + two_decimals(t->second) + " us/vertex")
-           << ").\n";
-      }
-      md << "\n";
+      const auto us_at_finest = [&](const std::string& method) {
+        const auto t = us_per_vertex.find({mesh.label(), finest, method});
+        return t == us_per_vertex.end() ? std::nan("") : t->second;
+      };
+      out.heading(e.name + ": `" + mesh.label() + "`" +
+                      (any->noise != "none" ? " (noise " + any->noise + ")" : std::string()),
+                  1)
+          .text("Finest level " + std::to_string(finest) + ": " + std::to_string(any->vertices) +
+                " vertices, h = " + error_text(any->h) + "; levels " +
+                std::to_string(*levels.begin()) + "-" + std::to_string(finest) + ".")
+          .table(error_table(methods, finest, us_at_finest))
+          .text(convergence_words(methods, finest, us_at_finest));
 
       // Every method's L2 errors in H at the levels `x_of` (microseconds per vertex, seconds
       // of the mesh) has a value for, with that value as the plot's x (ErrorRow::h) and in
       // ErrorRow::seconds.
       const auto h_errors_against = [&](const auto& x_of) {
-        std::vector<ErrorRow> out;
+        std::vector<ErrorRow> points;
         for (const MethodRows& m : methods)
           if (const auto* s = m.find(Quantity::H, Norm::L2))
             for (const auto& [level, r] : *s) {
@@ -353,11 +405,11 @@ bool append_field_section(std::ostringstream& md, const FieldSection& section,
               if (x == x_of.end()) continue;
               ErrorRow p = *r;
               p.h = p.seconds = x->second;
-              out.push_back(p);
+              points.push_back(p);
             }
-        return out;
+        return points;
       };
-      // One plot of the L2 error in H against a cost, and its line in the report.
+      // One plot of the L2 error in H against a cost (rendered to PNG and SVG with plots on).
       const auto cost_plot = [&](const std::string& kind, const std::string& x_label,
                                  const std::string& title, const std::vector<ErrorRow>& points) {
         const std::string base = kind + "_" + e.name + "_" + mesh.label();
@@ -366,55 +418,37 @@ bool append_field_section(std::ostringstream& md, const FieldSection& section,
         plot.title = title + " [" + mesh.label() +
                      (any->noise != "none" ? ", noise " + any->noise : "") + "]";
         plot.x_label = x_label;
+        plot.y_label = "L2 error in H";
         plot.reverse_x = false;
         plot.series = error_series(points, false, false);
-        if (render_plot_files(plot, dir, base))
-          md << "![" << base << "](plots/" << base << ".png) ([svg](plots/" << base << ".svg))\n\n";
-        else
-          ++missing_plots;
+        if (options.plots) {
+          if (options.stop && options.stop()) return false;
+          if (!render_plot_files(plot, dir, base)) ++missing_plots;
+        }
+        out.plot(std::move(plot));
+        return true;
       };
 
       // Accuracy versus cost: L2 error in H against microseconds per vertex.
       const std::vector<ErrorRow> frontier = h_errors_against(us_per_vertex);
-      if (options.plots && !frontier.empty()) {
-        if (options.stop && options.stop()) return false;
-        cost_plot("field-frontier", "time per vertex (microseconds)",
-                  "Accuracy versus cost: L2 error in H against time per vertex", frontier);
-      }
+      if (!frontier.empty() &&
+          !cost_plot("field-frontier", "time per vertex (microseconds)",
+                     "Accuracy versus cost: L2 error in H against time per vertex", frontier))
+        return false;
 
       // Time to solution: L2 error in H against the seconds of the whole mesh, per method over
       // the levels, and the cheapest method reaching each target error.
       const std::vector<ErrorRow> timed = h_errors_against(case_seconds);
       if (timed.empty()) continue;
-      if (options.plots) {
-        if (options.stop && options.stop()) return false;
-        cost_plot("field-time", "time of the whole mesh (seconds)",
-                  "Time to solution: L2 error in H against the time of the mesh", timed);
-      }
-      const std::vector<double> targets = time_targets(timed);
-      if (targets.empty()) continue;
-      md << "Cheapest estimator reaching a target L2 error in H on `" << mesh.label()
-         << "` (the least time of the whole mesh's estimation over the levels where the error "
-            "is at most the target; levels "
-         << *levels.begin() << "-" << finest << "):\n\n"
-         << "| target | cheapest (level, time, error) | runner-up (level, time, error) |\n"
-         << "|---|---|---|\n";
-      const auto cell = [](const ErrorRow* r) {
-        return r == nullptr ? std::string("-")
-                            : r->method + " (" + std::to_string(r->level) + ", " +
-                                  seconds_text(r->seconds) + ", " + error_text(r->error) + ")";
-      };
-      for (double target : targets) {
-        const CheapestToReach c = cheapest_to_reach(timed, target);
-        md << "| " << error_text(target) << " | "
-           << (c.best == nullptr ? "no estimator reaches it at these levels" : cell(c.best))
-           << " | " << cell(c.runner_up) << " |\n";
-      }
-      md << "\n";
+      if (!cost_plot("field-time", "time of the whole mesh (seconds)",
+                     "Time to solution: L2 error in H against the time of the mesh", timed))
+        return false;
+      if (report::Table t = cheapest_table(timed, mesh.label(), *levels.begin(), finest);
+          !t.rows.empty())
+        out.table(std::move(t));
     }
-    append_setting_ratios(md, e, rows);
+    out.text(setting_ratios(e, rows));
   }
-  if (header_written) md << "\n";
   return true;
 }
 

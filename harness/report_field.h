@@ -13,12 +13,12 @@
 #pragma once
 
 #include <span>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "harness/experiment.h"
 #include "harness/report.h"
+#include "harness/report_model.h"
 
 namespace curvbench {
 
@@ -44,11 +44,15 @@ CheapestToReach cheapest_to_reach(const std::vector<ErrorRow>& rows, double targ
 /// by every method at once), then the next power of ten if no row reaches it.
 std::vector<double> time_targets(const std::vector<ErrorRow>& rows);
 
-/// Appends the section to `md` (nothing when no field-estimators experiment has results).
-/// Returns false if options.stop asked to stop while plotting (the report is then abandoned).
-/// `missing_plots` counts plots gnuplot could not render.
-bool append_field_estimators_section(std::ostringstream& md,
-                                     const std::vector<Experiment>& experiments,
-                                     const ReportOptions& options, int& missing_plots);
+/// Appends the blocks of the field studies to `out` (the studies' section "field-studies"):
+/// per group (the estimators in common use; the meshes that break estimators) a heading of
+/// level 0 (the section's own level) and its words, then per experiment and mesh a heading, the
+/// errors table, the words on convergence, the two cost plots and the cheapest-to-reach table.
+/// Nothing when no field-estimators or hard-meshes experiment has results. With options.plots,
+/// the plots are rendered to PNG and SVG (render_plot_files); returns false if options.stop asked
+/// to stop meanwhile (the report is then abandoned). `missing_plots` counts plots gnuplot could
+/// not render.
+bool field_sections(const std::vector<Experiment>& experiments, const ReportOptions& options,
+                    int& missing_plots, report::Section& out);
 
 }  // namespace curvbench

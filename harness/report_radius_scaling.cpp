@@ -51,9 +51,11 @@ std::vector<RadiusScalingRate> radius_scaling_rates(const std::vector<ErrorRow>&
 
 namespace {
 
-// "*1.23*" (emphasis), or "n/a".
-std::string emphasised(double x) {
-  return std::isfinite(x) ? std::string("*").append(two_decimals(x)).append("*") : "n/a";
+// A bound's cell: "*1.23*" (emphasis) with its number, or "n/a".
+report::Cell emphasised(double x) {
+  return std::isfinite(x)
+             ? report::Cell::number(x, std::string("*").append(two_decimals(x)).append("*"))
+             : report::Cell("n/a");
 }
 
 const char* quantity_heading(const std::string& q) {
@@ -62,9 +64,9 @@ const char* quantity_heading(const std::string& q) {
 
 }  // namespace
 
-void append_radius_scaling_section(std::ostringstream& md,
-                                   const std::vector<Experiment>& experiments,
-                                   const ReportOptions& options) {
+report::Section radius_scaling_section(const std::vector<Experiment>& experiments,
+                                       const ReportOptions& options) {
+  report::Section s{"radius-scaling", "", {}};
   std::vector<RadiusScalingRate> rates;
   std::set<double> alphas;
   std::vector<std::string> sources;
@@ -78,19 +80,21 @@ void append_radius_scaling_section(std::ostringstream& md,
     sources.push_back("`" + e.name + "` (alpha " + format_g(e.radius_alpha) + ", c " +
                       format_g(e.radius_c) + ")");
   }
-  if (rates.empty()) return;
+  if (rates.empty()) return s;
 
-  md << "## Neighbourhoods that shrink more slowly than h\n\n"
-     << "Under O(h^2) input errors a fixed number of rings gives curvatures that do not converge; "
-        "a radius c h^alpha with alpha < 1 trades the fit's truncation error against the input "
-        "error (docs/algorithms.md §15). Experiments: ";
-  for (size_t i = 0; i < sources.size(); ++i) md << (i ? ", " : "") << sources[i];
-  md << "; their errors per level are in their sections above. Each cell is the L2 convergence "
-        "rate log(e_first/e_last)/log(h_first/h_last) of a method over the levels it ran; the "
-        "first rows are the rates the error bound predicts for a degree-2 fit, for curvatures "
-        "with a general stencil and with the truncation's odd terms cancelling (symmetric "
-        "stencils), for normals the one bound. The fixed 1-ring methods (Meyer) keep their "
-        "1-ring at every alpha.\n\n";
+  s.title = "Neighbourhoods that shrink more slowly than h";
+  std::string intro =
+      "Under O(h^2) input errors a fixed number of rings gives curvatures that do not converge; "
+      "a radius c h^alpha with alpha < 1 trades the fit's truncation error against the input "
+      "error (docs/algorithms.md §15). Experiments: ";
+  for (size_t i = 0; i < sources.size(); ++i) intro += (i ? ", " : "") + sources[i];
+  s.text(intro +
+         "; their errors per level are in their sections above. Each cell is the L2 convergence "
+         "rate log(e_first/e_last)/log(h_first/h_last) of a method over the levels it ran; the "
+         "first rows are the rates the error bound predicts for a degree-2 fit, for curvatures "
+         "with a general stencil and with the truncation's odd terms cancelling (symmetric "
+         "stencils), for normals the one bound. The fixed 1-ring methods (Meyer) keep their "
+         "1-ring at every alpha.");
 
   std::vector<std::string> families;
   for (const auto& r : rates)
@@ -113,16 +117,15 @@ void append_radius_scaling_section(std::ostringstream& md,
         cell[{name, r.alpha}] = r.rate;
       }
       if (methods.empty()) continue;
-      // One table row: "| first | cell(alpha) | ... |".
-      const auto row = [&](const std::string& first, auto&& cell_text) {
-        md << "| " << first << " |";
-        for (double a : alphas) md << " " << cell_text(a) << " |";
-        md << "\n";
+      report::Table tab;
+      tab.columns = {"rate"};
+      for (double a : alphas) tab.columns.push_back("alpha = " + format_g(a));
+      // One row: its first cell, then cell_of(alpha) per alpha.
+      const auto row = [&](report::Cell first, auto&& cell_of) {
+        std::vector<report::Cell> r{std::move(first)};
+        for (double a : alphas) r.push_back(cell_of(a));
+        tab.add(std::move(r));
       };
-      md << "### `" << family << "`, " << quantity_heading(quantity) << " (levels " << levels
-         << ")\n\n";
-      row("rate", [](double a) { return std::string("alpha = ").append(format_g(a)); });
-      row("---", [](double) { return std::string("---"); });
       const bool normals = std::string(quantity) == "normal";
       row(normals ? "*bound*" : "*bound, general stencil*", [&](double a) {
         const RadiusScalingBounds b = radius_scaling_bounds(a);
@@ -134,10 +137,13 @@ void append_radius_scaling_section(std::ostringstream& md,
       for (const std::string& m : methods)
         row(m, [&](double a) {
           const auto it = cell.find({m, a});
-          return it == cell.end() ? std::string("-") : two_decimals(it->second);
+          return it == cell.end() ? report::Cell("-")
+                                  : report::Cell::number(it->second, two_decimals(it->second));
         });
-      md << "\n";
+      s.heading("`" + family + "`, " + quantity_heading(quantity) + " (levels " + levels + ")")
+          .table(std::move(tab));
     }
+  return s;
 }
 
 }  // namespace curvbench

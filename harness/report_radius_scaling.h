@@ -5,12 +5,12 @@
 // predicts for a degree-2 fit with O(h^2) input errors (radius_scaling_bounds()).
 #pragma once
 
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "harness/experiment.h"
 #include "harness/report.h"
+#include "harness/report_model.h"
 #include "harness/results_table.h"
 
 namespace curvbench {
@@ -27,7 +27,7 @@ RadiusScalingBounds radius_scaling_bounds(double alpha);
 /// One method's rate at one alpha: log(e_first/e_last)/log(h_first/h_last) over the levels of
 /// its series (measured h), for one mesh label and quantity (L2).
 struct RadiusScalingRate {
-  std::string family;  ///< mesh label
+  std::string family;    ///< mesh label
   std::string method;    ///< label, "Meyer (interior)" when scored on another vertex set
   std::string quantity;  ///< "normal", "H", "K"
   double alpha = 0.0;
@@ -39,10 +39,11 @@ struct RadiusScalingRate {
 std::vector<RadiusScalingRate> radius_scaling_rates(const std::vector<ErrorRow>& rows,
                                                     double alpha);
 
-/// Appends the section when at least one radius-scaling experiment has its CSV in
-/// options.results_dir; nothing otherwise.
-void append_radius_scaling_section(std::ostringstream& md,
-                                   const std::vector<Experiment>& experiments,
-                                   const ReportOptions& options);
+/// The section "Neighbourhoods that shrink more slowly than h" (id "radius-scaling"): its words,
+/// then per mesh and quantity a heading and the table of the bounds' and the methods' rates at
+/// every alpha, each cell with its number. Without a radius-scaling experiment's CSV in
+/// options.results_dir: no title and no blocks.
+report::Section radius_scaling_section(const std::vector<Experiment>& experiments,
+                                       const ReportOptions& options);
 
 }  // namespace curvbench

@@ -41,16 +41,29 @@ std::string quantity_words(Quantity q) {
   }
 }
 
-// Settings shared by the sweep plots: axes, key, grid and the provenance footer.
-std::string plot_setup(const std::string& title, const std::string& xlabel, bool logx) {
-  std::ostringstream gp;
-  gp << (logx ? "set logscale xy\n" : "set logscale y\n") << "set format y '10^{%L}'\n"
-     << "set xlabel '" << xlabel << "'\nset ylabel 'L2 error'\n"
-     << "set key outside right top font ',9'\nset grid\nset bmargin 5\n"
-     << "set label 1 \"" << build_info() << ", " << utc_timestamp()
-     << "\" at screen 0.01, screen 0.015 font ',8' noenhanced\n"
-     << "set title \"" << title << "\" noenhanced\n";
-  return gp.str();
+// A sweep plot of the L2 error (log y) against `x_label`; rendered to plots/<file_safe(base)>
+// .{png,svg} with options.plots. False if options.stop asked to stop.
+bool sweep_plot(report::Section& out, report::Plot plot, const std::string& base,
+                const ReportOptions& options, int& missing_plots) {
+  plot.id = file_safe(base);
+  plot.y_label = "L2 error";
+  plot.reverse_x = false;
+  if (options.plots) {
+    if (options.stop && options.stop()) return false;
+    if (!render_plot_files(plot, options.results_dir, plot.id)) ++missing_plots;
+  }
+  out.plot(std::move(plot));
+  return true;
+}
+
+// A series in the look of its method (plot_styles.h).
+report::Series styled_series(const std::string& label, const PlotStyle& style) {
+  report::Series se;
+  se.label = label;
+  se.color = style.colour;
+  se.marker = style.marker;
+  se.dash = style.dash;
+  return se;
 }
 
 // The rows of one experiment's CSV, or none when it has not been run.
@@ -69,24 +82,28 @@ std::vector<std::string> distinct(const std::vector<ErrorRow>& rows, F&& key) {
   return out;
 }
 
-// The radius sweep of one experiment: plots and tables per (family, noise).
-bool radius_sweep(std::ostringstream& md, const Experiment& e, const std::vector<ErrorRow>& rows,
+// The radius sweep of one experiment: tables and plots per (family, noise).
+bool radius_sweep(report::Section& out, const Experiment& e, const std::vector<ErrorRow>& rows,
                   const std::vector<BestRadius>& best, const ReportOptions& options,
                   int& missing_plots) {
-  const std::string dir = options.results_dir;
   for (const std::string& family : distinct(rows, [](const ErrorRow& r) { return r.family; }))
     for (const std::string& noise : distinct(rows, [](const ErrorRow& r) { return r.noise; })) {
       std::vector<const ErrorRow*> sel;
       for (const ErrorRow& r : rows)
         if (r.family == family && r.noise == noise && r.norm == "L2") sel.push_back(&r);
       if (sel.empty()) continue;
-      md << "#### `" << family << "` level " << sel.front()->level << " (" << sel.front()->vertices
-         << " vertices, h = " << scientific(sel.front()->h) << "), noise " << noise
-         << "\n\n| method | radius swept |";
-      for (Quantity q : kQuantities) md << " best for " << to_string(q) << " | L2 error |";
-      md << "\n|---|---|";
-      for (size_t i = 0; i < 2 * std::size(kQuantities); ++i) md << "---|";
-      md << "\n";
+      out.heading("`" + family + "` level " + std::to_string(sel.front()->level) + " (" +
+                      std::to_string(sel.front()->vertices) +
+                      " vertices, h = " + scientific(sel.front()->h) + "), noise " + noise,
+                  2);
+      report::Table tab;
+      tab.columns = {"method", "radius swept"};
+      tab.numeric = {false, false};
+      for (Quantity q : kQuantities) {
+        tab.columns.push_back(std::string("best for ") + to_string(q));
+        tab.columns.push_back("L2 error");
+        tab.numeric.insert(tab.numeric.end(), {false, true});
+      }
       std::vector<std::string> methods;
       for (const BestRadius& b : best)
         if (b.experiment == e.name && b.family == family && b.noise == noise &&
@@ -94,7 +111,7 @@ bool radius_sweep(std::ostringstream& md, const Experiment& e, const std::vector
           methods.push_back(b.method);
       for (const std::string& method : methods) {
         std::string swept = "-";
-        std::string cells;
+        std::vector<report::Cell> cells;
         for (Quantity q : kQuantities) {
           const BestRadius* found = nullptr;
           for (const BestRadius& b : best)
@@ -104,25 +121,23 @@ bool radius_sweep(std::ostringstream& md, const Experiment& e, const std::vector
           if (found && !found->parameter.empty())
             swept = found->parameter + " (" + std::to_string(found->radii) + " values)";
           if (!found) {
-            cells += " - | - |";
+            cells.insert(cells.end(), {"-", "-"});
             continue;
           }
-          cells += ' ';
-          cells += radius_text(*found);
-          cells += " | ";
-          cells += scientific(found->error);
-          cells += " |";
+          cells.push_back(report::Cell::number(found->radius, radius_text(*found)));
+          cells.push_back(report::Cell::number(found->error, scientific(found->error)));
         }
-        md << "| " << method << " | " << swept << " |" << cells << "\n";
+        std::vector<report::Cell> row{method, swept};
+        row.insert(row.end(), cells.begin(), cells.end());
+        tab.add(std::move(row));
       }
-      md << "\n";
-      if (!options.plots) continue;
+      out.table(std::move(tab));
       for (Quantity q : kQuantities) {
-        if (options.stop && options.stop()) return false;
         // Swept methods: (radius, error) in radius order; fixed ones: their error.
         std::map<std::string, std::map<double, double>> curves;
         std::vector<std::string> order;
         std::vector<std::pair<std::string, double>> fixed;
+        double lowest = INFINITY, highest = -INFINITY;  // the radii swept
         for (const ErrorRow* r : sel) {
           if (r->quantity != to_string(q) || !std::isfinite(r->error) || r->error <= 0) continue;
           const SweepLabel l = parse_sweep_label(r->method);
@@ -132,71 +147,67 @@ bool radius_sweep(std::ostringstream& md, const Experiment& e, const std::vector
           }
           if (!curves.count(l.method)) order.push_back(l.method);
           curves[l.method][l.radius] = r->error;
+          lowest = std::min(lowest, l.radius);
+          highest = std::max(highest, l.radius);
         }
         if (order.empty() && fixed.empty()) continue;  // a quantity no panel asked for
+        if (order.empty()) lowest = highest = 1.0;     // fixed methods only: their 1-ring
         // One look per method (plot_styles.h), the swept curves first, then the fixed lines.
         std::vector<std::string> labels = order;
         for (const auto& f : fixed) labels.push_back(f.first);
         const std::vector<PlotStyle> styles = plot_styles(labels);
-        std::ostringstream data, plot;
-        plot << "plot ";
-        bool first = true;
+        report::Plot plot;
+        plot.title = "L2 error in " + quantity_words(q) + " against the radius [" + family +
+                     ", noise " + noise + "]";
+        plot.x_label = "radius / h (fits, quadric: rings; normal cycle, ICC: ball factor C)";
+        plot.log_x = false;
         for (size_t i = 0; i < order.size(); ++i) {
-          data << "$S" << i << " << EOD\n";
+          report::Series se = styled_series(order[i], styles[i]);
           for (const auto& [x, y] : curves[order[i]])
-            data << format_double(x) << ' ' << format_double(y) << "\n";
-          data << "EOD\n";
-          plot << (first ? "" : ", ") << "$S" << i << " using 1:2 with linespoints lw 2 "
-               << gnuplot_style(styles[i]) << " title \"" << order[i] << "\" noenhanced";
-          first = false;
+            se.points.push_back({x, y, order[i] + ", radius " + format_g(x)});
+          plot.series.push_back(std::move(se));
         }
         for (size_t i = 0; i < fixed.size(); ++i) {
-          PlotStyle line = styles[order.size() + i];
-          line.dash = 3;  // a horizontal line: the method's colour, dotted
-          plot << (first ? "" : ", ") << format_double(fixed[i].second) << " with lines lw 2 "
-               << gnuplot_style(line) << " title \"" << fixed[i].first << " (1-ring)\" noenhanced";
-          first = false;
+          // A horizontal line over the radii swept: the method's colour, dotted.
+          report::Series se = styled_series(fixed[i].first + " (1-ring)", styles[order.size() + i]);
+          se.marker = 0;
+          se.dash = 3;
+          se.points = {{lowest, fixed[i].second, fixed[i].first + " (1-ring)"},
+                       {highest, fixed[i].second, fixed[i].first + " (1-ring)"}};
+          plot.series.push_back(std::move(se));
         }
-        data << "$B << EOD\n";
+        report::Series circles;  // each curve's best radius, circled
+        circles.label = "best radius";
+        circles.color = "#000000";
+        circles.marker = 6;
+        circles.points_only = true;
         for (const BestRadius& b : best)
           if (b.experiment == e.name && b.family == family && b.noise == noise &&
               b.quantity == to_string(q) && b.norm == "L2" && !b.parameter.empty() && b.error > 0)
-            data << format_double(b.radius) << ' ' << format_double(b.error) << "\n";
-        data << "EOD\n";
-        plot << (first ? "" : ", ")
-             << "$B using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb 'black' title 'best radius'\n";
-        const std::string base = e.name + "_" + family + "_" + noise + "_" + to_string(q);
-        const std::string title = "L2 error in " + quantity_words(q) + " against the radius [" +
-                                  family + ", noise " + noise + "]";
-        const std::string file = dir + "/plots/" + file_safe(base);
-        if (run_gnuplot(file,
-                        plot_setup(title,
-                                   "radius / h (fits, quadric: rings; normal cycle, ICC: "
-                                   "ball factor C)",
-                                   false) +
-                            data.str(),
-                        plot.str()))
-          md << "![" << base << "](plots/" << file_safe(base) << ".png) ([svg](plots/"
-             << file_safe(base) << ".svg))\n\n";
-        else
-          ++missing_plots;
+            circles.points.push_back({b.radius, b.error, "best radius of " + b.method});
+        plot.series.push_back(std::move(circles));
+        if (!sweep_plot(out, std::move(plot),
+                        e.name + "_" + family + "_" + noise + "_" + to_string(q), options,
+                        missing_plots))
+          return false;
       }
     }
   return true;
 }
 
-// The noise sweep of one experiment: per family, one plot per (quantity, model) against sigma/h,
-// and the outlier table.
-bool noise_sweep(std::ostringstream& md, const Experiment& e, const std::vector<ErrorRow>& rows,
+// The noise sweep of one experiment: per family, the outlier table and one plot per (quantity,
+// model) against sigma/h.
+bool noise_sweep(report::Section& out, const Experiment& e, const std::vector<ErrorRow>& rows,
                  const ReportOptions& options, int& missing_plots) {
-  const std::string dir = options.results_dir;
   for (const std::string& family : distinct(rows, [](const ErrorRow& r) { return r.family; })) {
     std::vector<ErrorRow> fam;
     for (const ErrorRow& r : rows)
       if (r.family == family && r.norm == "L2") fam.push_back(r);
     if (fam.empty()) continue;
-    md << "#### `" << family << "` level " << fam.front().level << " (" << fam.front().vertices
-       << " vertices, h = " << scientific(fam.front().h) << ")\n\n";
+    out.heading("`" + family + "` level " + std::to_string(fam.front().level) + " (" +
+                    std::to_string(fam.front().vertices) +
+                    " vertices, h = " + scientific(fam.front().h) + ")",
+                2);
     const auto methods = distinct(fam, [](const ErrorRow& r) { return r.method; });
     // Outliers: methods x (none, each outlier label), per quantity.
     std::vector<std::string> columns{"none"};
@@ -205,37 +216,38 @@ bool noise_sweep(std::ostringstream& md, const Experiment& e, const std::vector<
     std::map<std::tuple<std::string, std::string, std::string>, double> err;
     for (const ErrorRow& r : fam) err[{r.method, r.noise, r.quantity}] = r.error;
     if (columns.size() > 1) {
-      md << "L2 errors without noise and with outliers (a fraction of the vertices moved by 3h "
-            "along the normal):\n\n| method |";
+      report::Table tab;
+      tab.caption =
+          "L2 errors without noise and with outliers (a fraction of the vertices moved by 3h "
+          "along the normal):";
+      tab.columns = {"method"};
       for (Quantity q : kQuantities)
-        for (const std::string& c : columns) md << " " << to_string(q) << ", " << c << " |";
-      md << "\n|---|";
-      for (size_t i = 0; i < std::size(kQuantities) * columns.size(); ++i) md << "---|";
-      md << "\n";
+        for (const std::string& c : columns)
+          tab.columns.push_back(std::string(to_string(q)) + ", " + c);
       for (const std::string& m : methods) {
-        md << "| " << m << " |";
+        std::vector<report::Cell> row{m};
         for (Quantity q : kQuantities)
           for (const std::string& c : columns) {
             const auto it = err.find({m, c, to_string(q)});
-            md << " " << (it == err.end() ? "-" : scientific(it->second)) << " |";
+            row.push_back(it == err.end()
+                              ? report::Cell("-")
+                              : report::Cell::number(it->second, scientific(it->second)));
           }
-        md << "\n";
+        tab.add(std::move(row));
       }
-      md << "\n";
+      out.table(std::move(tab));
     }
-    if (!options.plots) continue;
     std::vector<std::string> models;
     for (const ErrorRow& r : fam)
       if (const std::string m = noise_model_of_label(r.noise);
           !m.empty() && std::find(models.begin(), models.end(), m) == models.end())
         models.push_back(m);
+    const std::vector<PlotStyle> styles = plot_styles(methods);  // one look per method
     for (Quantity q : kQuantities)
       for (const std::string& model : models) {
-        if (options.stop && options.stop()) return false;
-        std::ostringstream data, plot;
-        plot << "plot ";
-        const std::vector<PlotStyle> styles = plot_styles(methods);  // one look per method
-        size_t plotted = 0;
+        report::Plot plot;
+        plot.title = "L2 error in " + quantity_words(q) + ", " + model + " noise [" + family + "]";
+        plot.x_label = "noise amplitude sigma / h";
         for (size_t i = 0; i < methods.size(); ++i) {
           std::map<double, double> curve;
           for (const ErrorRow& r : fam)
@@ -243,25 +255,16 @@ bool noise_sweep(std::ostringstream& md, const Experiment& e, const std::vector<
                 noise_model_of_label(r.noise) == model && std::isfinite(r.error) && r.error > 0)
               curve[sigma_over_h(r.noise)] = r.error;
           if (curve.empty()) continue;
-          data << "$S" << i << " << EOD\n";
+          report::Series se = styled_series(methods[i], styles[i]);
           for (const auto& [x, y] : curve)
-            data << format_double(x) << ' ' << format_double(y) << "\n";
-          data << "EOD\n";
-          plot << (plotted++ ? ", " : "") << "$S" << i << " using 1:2 with linespoints lw 2 "
-               << gnuplot_style(styles[i]) << " title \"" << methods[i] << "\" noenhanced";
+            se.points.push_back({x, y, methods[i] + ", sigma/h " + format_g(x)});
+          plot.series.push_back(std::move(se));
         }
-        if (plotted == 0) continue;  // a quantity no panel asked for
-        plot << "\n";
-        const std::string base = e.name + "_" + family + "_" + model + "_" + to_string(q);
-        const std::string title =
-            "L2 error in " + quantity_words(q) + ", " + model + " noise [" + family + "]";
-        const std::string file = dir + "/plots/" + file_safe(base);
-        if (run_gnuplot(file, plot_setup(title, "noise amplitude sigma / h", true) + data.str(),
-                        plot.str()))
-          md << "![" << base << "](plots/" << file_safe(base) << ".png) ([svg](plots/"
-             << file_safe(base) << ".svg))\n\n";
-        else
-          ++missing_plots;
+        if (plot.series.empty()) continue;  // a quantity no panel asked for
+        if (!sweep_plot(out, std::move(plot),
+                        e.name + "_" + family + "_" + model + "_" + to_string(q), options,
+                        missing_plots))
+          return false;
       }
   }
   return true;
@@ -370,8 +373,8 @@ void write_best_radius_csv(const std::string& path, const std::vector<BestRadius
   write_file_atomic(path, out.str());
 }
 
-bool append_sweeps_section(std::ostringstream& md, const std::vector<Experiment>& experiments,
-                           const ReportOptions& options, int& missing_plots) {
+bool sweeps_section(const std::vector<Experiment>& experiments, const ReportOptions& options,
+                    int& missing_plots, report::Section& out) {
   const std::string dir = options.results_dir;
   bool header = false;
   std::vector<BestRadius> all_best;
@@ -388,22 +391,22 @@ bool append_sweeps_section(std::ostringstream& md, const std::vector<Experiment>
     const std::vector<ErrorRow> rows = rows_of(e, dir);
     if (rows.empty()) continue;
     if (!header) {
-      md << "## Sweeps at a fixed mesh\n\n"
-         << "One mesh level per family; the neighbourhood radius or the noise varies "
-            "(experiments with `sweep radius` or `sweep noise`; `curvbench run --all --full` runs "
-            "the full sweeps of `experiments/sweeps/` in place of the trimmed ones). Errors are "
-            "L2: normals absolute, curvatures relative (as above). Radii are in units of the mean "
-            "edge length h: rings for the fits and the quadric, the ball factor C (ball of radius "
-            "C h) for the normal cycle and ICC; a fit asked for fewer rings than its degree needs "
-            "grows by half rings until it has enough points (paper §4.1), so its smallest radii "
-            "are lower bounds. Noise: sigma = (sigma/h) h, Gaussian or centred uniform (same "
-            "standard deviation), along the exact normal, isotropic, or tangential (vertices "
-            "stay on the surface); outliers: a fraction of the vertices moved by 3h along the "
-            "normal (meshgen/noise.h).\n\n";
+      out.title = "Sweeps at a fixed mesh";
+      out.text(
+          "One mesh level per family; the neighbourhood radius or the noise varies "
+          "(experiments with `sweep radius` or `sweep noise`; `curvbench run --all --full` runs "
+          "the full sweeps of `experiments/sweeps/` in place of the trimmed ones). Errors are "
+          "L2: normals absolute, curvatures relative (as above). Radii are in units of the mean "
+          "edge length h: rings for the fits and the quadric, the ball factor C (ball of radius "
+          "C h) for the normal cycle and ICC; a fit asked for fewer rings than its degree needs "
+          "grows by half rings until it has enough points (paper §4.1), so its smallest radii "
+          "are lower bounds. Noise: sigma = (sigma/h) h, Gaussian or centred uniform (same "
+          "standard deviation), along the exact normal, isotropic, or tangential (vertices "
+          "stay on the surface); outliers: a fraction of the vertices moved by 3h along the "
+          "normal (meshgen/noise.h).");
       header = true;
     }
-    md << "### " << e.name << ": " << e.title << "\n\nSource: `" << experiment_source_name(e)
-       << "`.\n\n";
+    out.heading(e.name + ": " + e.title).text("Source: `" + experiment_source_name(e) + "`.");
     if (e.sweep == "radius") {
       const std::vector<BestRadius> best = best_radii(rows);
       all_best.insert(all_best.end(), best.begin(), best.end());
@@ -412,17 +415,21 @@ bool append_sweeps_section(std::ostringstream& md, const std::vector<Experiment>
       if (fs::exists(timing_csv))
         for (const TimingRow& t : read_timing_csv(timing_csv)) timings.push_back(t);
       any_radius = true;
-      md << "Best radius: the radius of the smallest L2 error of each method (circled in the "
-            "plots; every method's rows in `best_radius.csv`).\n\n";
-      if (!radius_sweep(md, e, rows, best, options, missing_plots)) return false;
+      out.text(
+          "Best radius: the radius of the smallest L2 error of each method (circled in the "
+          "plots; every method's rows in `best_radius.csv`).");
+      if (!radius_sweep(out, e, rows, best, options, missing_plots)) return false;
     } else {
-      if (!noise_sweep(md, e, rows, options, missing_plots)) return false;
+      if (!noise_sweep(out, e, rows, options, missing_plots)) return false;
     }
   }
   if (any_radius) {
     write_best_radius_csv(dir + "/best_radius.csv", all_best);
     const std::vector<Recommendation> recs = recommendations(radius_rows, timings);
-    append_recommendations_section(md, recs);
+    // The recommendations follow as a part of this section, under a heading of its level.
+    report::Section choosing = recommendations_section(recs);
+    out.heading(choosing.title, 0);
+    for (report::Block& b : choosing.blocks) out.blocks.push_back(std::move(b));
     write_recommendations_csv(dir + "/recommendations.csv", recs);
   }
   return true;

@@ -18,12 +18,12 @@
 #pragma once
 
 #include <limits>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "harness/experiment.h"
 #include "harness/report.h"
+#include "harness/report_model.h"
 #include "harness/results_table.h"
 
 namespace curvbench {
@@ -79,12 +79,14 @@ std::string radius_text(const BestRadius& b);
 /// quantity,norm,error,radii,lowest_radius,highest_radius
 void write_best_radius_csv(const std::string& path, const std::vector<BestRadius>& rows);
 
-/// Appends the section to `md` (nothing when no sweep experiment has results) and writes
-/// <results>/best_radius.csv from the radius sweeps; after it, the section "Choosing an estimator
-/// and a radius" and <results>/recommendations.csv (harness/recommend.h). Returns false if
-/// options.stop asked to stop while plotting; `missing_plots` counts plots gnuplot could not
-/// render.
-bool append_sweeps_section(std::ostringstream& md, const std::vector<Experiment>& experiments,
-                           const ReportOptions& options, int& missing_plots);
+/// Fills the section "Sweeps at a fixed mesh" (`out`'s title and blocks; nothing when no sweep
+/// experiment has results): per experiment a heading, per (family, noise) the tables with their
+/// numbers and the plots as series (rendered to PNG and SVG with options.plots), and writes
+/// <results>/best_radius.csv from the radius sweeps; after them, under a heading of the
+/// section's level, the blocks of recommendations_section() (harness/recommend.h), and
+/// <results>/recommendations.csv. Returns false if options.stop asked to stop while plotting;
+/// `missing_plots` counts plots gnuplot could not render.
+bool sweeps_section(const std::vector<Experiment>& experiments, const ReportOptions& options,
+                    int& missing_plots, report::Section& out);
 
 }  // namespace curvbench

@@ -30,7 +30,7 @@ double case_work(const RunCase& c) {
 }
 
 // Seconds per vertex relative to LHF-2: the method's registry cost at degree 2 (MethodInfo::cost)
-// times the factor of its degree (0: a degree-free operator; from results/table5_timing.md).
+// times the factor of its degree (0: a degree-free operator; from results/table5_timing.csv).
 double method_cost(const std::string& name, int degree) {
   static const double per_degree[] = {0.5, 0.6, 1.0, 1.8, 3.7, 7.0, 12.0};
   double base = 1.0;

@@ -50,37 +50,42 @@ void write_well_shaped_torus_csv(const std::string& path) {
   write_file_atomic(path, out.str());
 }
 
-std::string well_shaped_torus_markdown(const std::string& csv_path) {
-  if (!std::filesystem::exists(csv_path)) return "";
+report::Section well_shaped_torus_section(const std::string& csv_path) {
+  report::Section s{"well-shaped-torus", "", {}};
+  if (!std::filesystem::exists(csv_path)) return s;
   const CsvTable t = read_csv_table(csv_path);
-  std::ostringstream md;
-  md << "## Well-shaped torus meshes (the paper's Table 5 meshes)\n\n"
-     << "`torus-unstructured`: CGAL Delaunay refinement of the implicit torus (R = 1, r = 0.3), "
-        "every vertex projected onto the torus (docs/mesh_families.md); the stand-in for the "
-        "paper's unstructured GAMBIT meshes, used for Figs. 3-7, Table 5 and the claims on the "
-        "well-shaped torus. `torus-jittered` and `torus-structured` remain as extra rows.\n\n"
-     << "`torus-unstructured-minval5`: the same meshes with every valence-4 vertex removed by edge "
-        "flips (a reading of \"GAMBIT well-shaped\", docs/claims.md); the claims are evaluated "
-        "on it as well (CLAIMS.md, reading well-shaped-torus).\n\n"
-     << "| family | level | #verts (ours / paper) | #faces | mean edge length | angles (deg) | "
-        "valence: count |\n|---|---|---|---|---|---|---|\n";
+  s.title = "Well-shaped torus meshes (the paper's Table 5 meshes)";
+  s.text(
+      "`torus-unstructured`: CGAL Delaunay refinement of the implicit torus (R = 1, r = 0.3), "
+      "every vertex projected onto the torus (docs/mesh_families.md); the stand-in for the "
+      "paper's unstructured GAMBIT meshes, used for Figs. 3-7, Table 5 and the claims on the "
+      "well-shaped torus. `torus-jittered` and `torus-structured` remain as extra rows.\n\n"
+      "`torus-unstructured-minval5`: the same meshes with every valence-4 vertex removed by edge "
+      "flips (a reading of \"GAMBIT well-shaped\", docs/claims.md); the claims are evaluated "
+      "on it as well (CLAIMS.md, reading well-shaped-torus).");
+  report::Table tab;
+  tab.id = "well-shaped-torus";
+  tab.columns = {"family",           "level",        "#verts (ours / paper)", "#faces",
+                 "mean edge length", "angles (deg)", "valence: count"};
+  tab.numeric = {false, true, true, true, true, true, false};
   const size_t cfam = t.col("family"), cl = t.col("level"), cv = t.col("vertices"),
                cp = t.col("paper_vertices"), cf = t.col("faces"), ch = t.col("mean_edge_length"),
                cmin = t.col("min_angle_deg"), cmax = t.col("max_angle_deg"),
                chist = t.col("valence_histogram");
   for (size_t i = 0; i < t.rows.size(); ++i) {
-    char angles[64], h[32];
+    char angles[64], h[32], rel[32];
     std::snprintf(angles, sizeof angles, "%.1f - %.1f", t.number(i, cmin), t.number(i, cmax));
     std::snprintf(h, sizeof h, "%.4f", t.number(i, ch));
     const double dv = (t.number(i, cv) - t.number(i, cp)) / t.number(i, cp) * 100.0;
-    char rel[32];
     std::snprintf(rel, sizeof rel, " (%+.1f%%)", dv);
-    md << "| `" << t.text(i, cfam) << "` | " << t.text(i, cl) << " | " << t.text(i, cv) << " / "
-       << t.text(i, cp) << rel << " | " << t.text(i, cf) << " | " << h << " | " << angles << " | "
-       << t.text(i, chist) << " |\n";
+    tab.add({"`" + t.text(i, cfam) + "`", report::Cell::number(t.number(i, cl), t.text(i, cl)),
+             report::Cell::number(t.number(i, cv), t.text(i, cv) + " / " + t.text(i, cp) + rel),
+             report::Cell::number(t.number(i, cf), t.text(i, cf)),
+             report::Cell::number(t.number(i, ch), h),
+             // The smallest angle is the number (the quality the paper's meshes are chosen for).
+             report::Cell::number(t.number(i, cmin), angles), t.text(i, chist)});
   }
-  md << "\n";
-  return md.str();
+  return s.table(std::move(tab));
 }
 
 }  // namespace curvbench

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "harness/report_model.h"
+
 namespace curvbench {
 
 /// The families of the table: the adopted well-shaped torus and its reading without valence 4.
@@ -18,7 +20,9 @@ inline const std::vector<std::string> kWellShapedTorusFamilies = {"torus-unstruc
 /// Generates levels 1-4 of each family and writes the CSV atomically.
 void write_well_shaped_torus_csv(const std::string& path);
 
-/// The REPORT.md section from that CSV; "" if the file does not exist.
-std::string well_shaped_torus_markdown(const std::string& csv_path);
+/// The report's section from that CSV (id "well-shaped-torus"): its words and the table, each
+/// cell with its number (vertices, faces, mean edge length, smallest angle); no title and no
+/// blocks if the file does not exist.
+report::Section well_shaped_torus_section(const std::string& csv_path);
 
 }  // namespace curvbench

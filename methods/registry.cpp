@@ -6,7 +6,7 @@
 // min_degree, max_degree  the degrees a fit supports; 0, 0 for a degree-free discrete operator
 // bench     the degrees make bench times it at: "2-4", "2", "once" (an operator), or "none"
 // cost      seconds per vertex relative to LHF-2 at degree 2 (level-4 torus, one thread,
-//           results/table5_timing.md, rounded): balances the shards of `curvbench run`
+//           results/table5_timing.csv, rounded): balances the shards of `curvbench run`
 // group     the family the results site files it under (MethodGroup): paper_fit (the paper's
 //           parameterization-based fits), jet (CGAL's osculating jet), discrete (an operator
 //           on the 1-ring or a ball)

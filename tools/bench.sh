@@ -2,7 +2,10 @@
 # `make bench`: runs the Google Benchmark suites built from bench/ (the build is done by
 # `make bench` already) and regenerates the paper's Table 5:
 #   results/table5_timing.csv   mesh,level,verts,tris,method,degree,threads,seconds,tris_per_second
-#   results/table5_timing.md    Table 5 layout, paper times beside ours, ratios, machine, flags
+#                               (a "# machine: ..." comment line names CPU, compiler and flags)
+#   results/table5_scaling.csv  the same columns, the scaling sweep's levels 5-6
+#   results/end_to_end.csv      curvbench estimate on 1.44 million vertices, per stage
+# (CSV only: `curvbench report` renders Table 5 from them, harness/report_table5.h)
 # and, after `make experiments`, rewrites REPORT.md and CLAIMS.md from its case store so that the
 # timing claims are judged on this run.
 # Raw Google Benchmark JSON goes to BUILD/bench/*.json. The conversion is done by the bench
@@ -26,7 +29,7 @@ for b in bench_solvers bench_estimators; do
 done
 mkdir -p "$OUT" "$RESULTS"
 
-# Build type and flags, quoted in table5_timing.md.
+# Build type and flags, in table5_timing.csv's machine comment.
 cache_value() { sed -n "s/^$1:[A-Z]*=//p" "$BUILD/CMakeCache.txt" 2>/dev/null | head -n1; }
 type=$(cache_value CMAKE_BUILD_TYPE)
 type_upper=$(echo "$type" | tr '[:lower:]' '[:upper:]')
@@ -57,12 +60,15 @@ done
 # LHF-2, binary PLY in, CSV out, on 1 and 2 threads: the stages it prints with --timing (read,
 # orientation, neighbourhoods+fit, write; estimation and writing alternate block by block, each
 # stage is the sum of its own parts), the wall time and the peak resident set size
-# (/usr/bin/time -v); appended to table5_timing.md.
+# (/usr/bin/time -v), written to results/end_to_end.csv (the report renders it with Table 5:
+# harness/report_table5.h):
+#   threads,read_s,orientation_s,fit_s,write_s,wall_s,peak_rss_mb
 if [[ -x /usr/bin/time ]]; then
   echo "== end to end: curvbench estimate, LHF-2, torus-structured level 6 (1.44M vertices), PLY -> CSV"
   mesh="$OUT/torus-structured-6.ply"
   [[ -f "$mesh" ]] || "$BUILD/curvbench" mesh --family torus-structured --level 6 --output "$mesh" > /dev/null
-  rows=""
+  csv="# tools/bench.sh end to end (git $(git -C "$ROOT" rev-parse --short HEAD 2>/dev/null || echo unknown)), generated $(date -u +%Y-%m-%dT%H:%M:%SZ)"$'\n'
+  csv+="threads,read_s,orientation_s,fit_s,write_s,wall_s,peak_rss_mb"$'\n'
   for threads in 1 2; do
     log="$OUT/estimate-6-t$threads.log"
     /usr/bin/time -v "$BUILD/curvbench" estimate "$mesh" --method lhf-2 --threads "$threads" \
@@ -71,30 +77,19 @@ if [[ -x /usr/bin/time ]]; then
     stage() { sed -n "s/^timing: $1 \([0-9.]*\) s$/\1/p" "$log"; }
     rss_kb=$(sed -n 's/.*Maximum resident set size (kbytes): *//p' "$log")
     wall=$(sed -n 's/.*Elapsed (wall clock) time (h:mm:ss or m:ss): *//p' "$log")
+    # h:mm:ss or m:ss.ss -> seconds
+    wall_s=$(echo "$wall" | awk -F: '{s = 0; for (i = 1; i <= NF; ++i) s = 60 * s + $i; printf "%.2f", s}')
     read_s=$(stage read); orient_s=$(stage orientation); fit_s=$(stage 'neighbourhoods+fit')
     write_s=$(stage write)
     echo "threads $threads: read $read_s s, orientation $orient_s s, fit $fit_s s, write $write_s s, wall $wall, peak RSS $((rss_kb / 1024)) MB"
-    rows+=$(printf '| %d | %.3f | %.3f | %.3f | %.3f | %s | %d |' "$threads" "$read_s" "$orient_s" \
-      "$fit_s" "$write_s" "$wall" "$((rss_kb / 1024))")$'\n'
+    csv+=$(printf '%d,%.3f,%.3f,%.3f,%.3f,%s,%d' "$threads" "$read_s" "$orient_s" "$fit_s" \
+      "$write_s" "$wall_s" "$((rss_kb / 1024))")$'\n'
   done
-  md="$RESULTS/table5_timing.md"
-  {
-    cat "$md"
-    printf '\n## End to end: `curvbench estimate` on 1.44 million vertices\n\n'
-    printf 'LHF-2 on the torus-structured level-6 mesh (1441792 vertices, 2883584 triangles), binary\n'
-    printf 'PLY in, CSV out (`--timing`, seconds of wall time per stage; estimation and writing\n'
-    printf 'alternate block by block, a CSV block formatted and written by two background threads\n'
-    printf 'while the next is estimated; each stage is the sum of its own parts; fit = normals,\n'
-    printf 'neighbourhoods and fits; write = the time the estimation waited for the output). Peak\n'
-    printf 'resident set size from `/usr/bin/time -v`. Targets\n'
-    printf '(docs/performance.md): read <= 0.3 s, end to end <= 1.5 s on one thread, peak RSS <= 350 MB.\n\n'
-    printf '| threads | read | orientation | fit | write | wall (m:ss) | peak RSS (MB) |\n'
-    printf '|---|---|---|---|---|---|---|\n'
-    printf '%s' "$rows"
-  } > "$md.tmp.$$"
-  mv "$md.tmp.$$" "$md"
+  printf '%s' "$csv" > "$RESULTS/end_to_end.csv.tmp.$$"
+  mv "$RESULTS/end_to_end.csv.tmp.$$" "$RESULTS/end_to_end.csv"
 else
-  echo "bench: /usr/bin/time not found (Debian package 'time'): end-to-end row not measured" >&2
+  echo "bench: /usr/bin/time not found (Debian package 'time'): end-to-end rows not measured" >&2
+  rm -f "$RESULTS/end_to_end.csv"  # not this run's
 fi
 
 # The timing claims of CLAIMS.md (F1-F9) are judged on table5_timing.csv: judge them again on this
@@ -106,4 +101,4 @@ if [[ -d "$RESULTS/.cache" && -x "$BUILD/curvbench" ]]; then
 fi
 
 /usr/bin/python3 "$(dirname "$0")/readme_headline.py" README.md "$RESULTS"
-echo "bench: wrote results/table5_timing.csv and results/table5_timing.md in $(($(date +%s) - start)) s"
+echo "bench: wrote results/table5_timing.csv, table5_scaling.csv and end_to_end.csv in $(($(date +%s) - start)) s"

@@ -9,10 +9,12 @@
 #include <filesystem>
 #include <numbers>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "harness/case_store.h"
 #include "harness/error_causes.h"
+#include "harness/report_model.h"
 #include "harness/runner.h"
 #include "mesh/io.h"
 #include "mesh/mesh_checks.h"
@@ -264,7 +266,10 @@ TEST(ErrorCauses, CsvColumnsRoundTripAndTheCaseStoreKeepsThem) {
   EXPECT_EQ(case_inputs(coarse).find(";causes="), std::string::npos);
 
   // The REPORT.md table: the bins as columns, the counts, one row per method.
-  const std::string md = cause_tables_markdown(e, report_dir);
+  report::Section section;
+  cause_tables(e, report_dir, section);
+  const std::string md = report::to_markdown(section);
+  EXPECT_NE(md.find("### Errors by cause at the finest level"), std::string::npos) << md;
   EXPECT_NE(md.find("**`torus-unstructured`**, level 2"), std::string::npos) << md;
   EXPECT_NE(md.find("| method | all | val <=4 | val 5 | val 6 | val 7 | val >=8 | <10° |"),
             std::string::npos)
@@ -278,9 +283,17 @@ TEST(ErrorCauses, CsvColumnsRoundTripAndTheCaseStoreKeepsThem) {
   EXPECT_NE(md.find("| Inner (interior) | " + cause_tables_cell(2.0 * causes.front().error) + " |"),
             std::string::npos)
       << md;
+  // The cells carry the numbers: the count of all vertices, Meyer's error over them.
+  const auto* tab = std::get_if<report::Table>(&section.blocks.back());
+  ASSERT_NE(tab, nullptr);
+  EXPECT_EQ(tab->rows[0][1].value, all_count);
+  EXPECT_EQ(tab->rows[1][0].text, "Meyer");
+  EXPECT_EQ(tab->rows[1][1].value, causes.front().error);
   Experiment other = e;
   other.name = "missing";
-  EXPECT_TRUE(cause_tables_markdown(other, dir.string()).empty());
+  report::Section none;
+  cause_tables(other, dir.string(), none);
+  EXPECT_TRUE(none.blocks.empty());
 }
 
 }  // namespace

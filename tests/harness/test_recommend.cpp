@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <sstream>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "core/errors.h"
@@ -177,9 +178,15 @@ TEST(Recommend, CsvAndSectionCarryTheTable) {
     EXPECT_EQ(t.text(i, cc), recs[i].cheapest.label);
     EXPECT_EQ(t.number(i, ct), recs[i].cheapest_seconds);
   }
-  std::ostringstream md;
-  append_recommendations_section(md, recs);
-  const std::string s = md.str();
+  const report::Section section = recommendations_section(recs);
+  const std::string s = report::to_markdown(section);
+  // The picks' cells carry their numbers: error and seconds of the first row.
+  const auto* tab = std::get_if<report::Table>(&section.blocks.back());
+  ASSERT_NE(tab, nullptr);
+  ASSERT_EQ(tab->rows.size(), recs.size());
+  EXPECT_DOUBLE_EQ(tab->rows[0][3].value, 1e-3);
+  EXPECT_DOUBLE_EQ(tab->rows[0][4].value, recs[0].best_seconds);
+  EXPECT_DOUBLE_EQ(tab->rows[0][6].value, 1.5e-3);
   EXPECT_NE(s.find("## Choosing an estimator and a radius"), std::string::npos);
   EXPECT_NE(s.find("| well-shaped | 0 | `LHF-4 rings=2` | 1.00e-03 | 0.04 s | `LHF-2 rings=1` | "
                    "1.50e-03 | 0.01 s | `sweep-test`, `torus-unstructured` level 2, noise none"),

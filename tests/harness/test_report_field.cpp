@@ -5,12 +5,13 @@
 
 #include <cmath>
 #include <filesystem>
-#include <sstream>
 #include <string>
 #include <tuple>
+#include <variant>
 #include <vector>
 
 #include "harness/report_field.h"
+#include "harness/report_model.h"
 #include "harness/results_table.h"
 #include "tests/cli/cli_runner.h"
 #include "tests/harness/synthetic_rows.h"
@@ -26,14 +27,29 @@ std::vector<ErrorRow> series(const std::string& method, double e0, double rate) 
 }
 
 // The field sections (harness/report_field.h) of `experiments` from the CSVs in `dir`, no plots.
-std::string field_sections(const fs::path& dir, const std::vector<Experiment>& experiments) {
+report::Section field_section(const fs::path& dir, const std::vector<Experiment>& experiments) {
   ReportOptions options;
   options.results_dir = dir.string();
   options.plots = false;
-  std::ostringstream md;
+  report::Section s{"field-studies", "", {}};
   int missing = 0;
-  EXPECT_TRUE(append_field_estimators_section(md, experiments, options, missing));
-  return md.str();
+  EXPECT_TRUE(field_sections(experiments, options, missing, s));
+  EXPECT_EQ(missing, 0);
+  return s;
+}
+
+// Its markdown.
+std::string field_markdown(const fs::path& dir, const std::vector<Experiment>& experiments) {
+  return report::to_markdown(field_section(dir, experiments));
+}
+
+// The blocks of type T of a section, in order.
+template <class T>
+std::vector<const T*> blocks_of(const report::Section& s) {
+  std::vector<const T*> out;
+  for (const report::Block& b : s.blocks)
+    if (const auto* t = std::get_if<T>(&b)) out.push_back(t);
+  return out;
 }
 
 TEST(ReportField, TablesRatesTimesAndWordsFollowTheNumbers) {
@@ -50,10 +66,47 @@ TEST(ReportField, TablesRatesTimesAndWordsFollowTheNumbers) {
   write_error_csv((dir / "field-estimators-test.csv").string(), rows);
   write_timing_csv((dir / "timings" / "field-estimators-test.csv").string(), rows);
 
-  const std::string text = field_sections(dir, {e});
+  const report::Section section = field_section(dir, {e});
+  const std::string text = report::to_markdown(section);
   EXPECT_NE(text.find("## The estimators in common use"), std::string::npos) << text;
-  // Finest level: 1e-2 * (1/4)^2 = 6.25e-4, rate 2, 5 us per vertex.
+  // Finest level: 1e-2 * (1/4)^2 = 6.25e-4, rate 2, 5 us per vertex; the cells carry the
+  // numbers.
   EXPECT_NE(text.find("| Second | - | - | 6.25e-04 (2.00) | - |"), std::string::npos) << text;
+  const auto tables = blocks_of<report::Table>(section);
+  ASSERT_GE(tables.size(), 1u);
+  const report::Table& errors = *tables.front();
+  ASSERT_EQ(errors.columns.size(), 10u);
+  EXPECT_EQ(errors.columns[3], "H L2");
+  EXPECT_EQ(errors.columns[9], "us/vertex");
+  ASSERT_EQ(errors.rows.size(), 3u);
+  EXPECT_EQ(errors.rows[0][0].text, "Second");
+  EXPECT_DOUBLE_EQ(errors.rows[0][3].value, 6.25e-4);
+  EXPECT_NEAR(errors.rows[0][9].value, 5.0, 1e-9);
+  EXPECT_TRUE(std::isnan(errors.rows[0][1].value));  // "-": no normal errors
+  // The two cost plots: one series per method, the time on the x axis, not reversed.
+  const auto plots = blocks_of<report::Plot>(section);
+  ASSERT_EQ(plots.size(), 2u);
+  EXPECT_EQ(plots[0]->id, "field-frontier_field-estimators-test_bump-irregular");
+  EXPECT_EQ(plots[0]->x_label, "time per vertex (microseconds)");
+  EXPECT_EQ(plots[1]->id, "field-time_field-estimators-test_bump-irregular");
+  EXPECT_FALSE(plots[1]->reverse_x);
+  EXPECT_TRUE(plots[1]->log_x && plots[1]->log_y);
+  ASSERT_EQ(plots[0]->series.size(), 3u);
+  EXPECT_EQ(plots[0]->series[0].label, "Second");
+  ASSERT_EQ(plots[0]->series[0].points.size(), 3u);
+  EXPECT_NEAR(plots[0]->series[0].points[2].x, 5.0, 1e-9);
+  EXPECT_DOUBLE_EQ(plots[0]->series[0].points[2].y, 6.25e-4);
+  EXPECT_TRUE(plots[0]->image.empty());  // not rendered without plots
+  // The cheapest to reach 1e-2 .. 1e-8 (1e-1: every method at once): Exact at level 1 (2 ms),
+  // then Second at the same time.
+  ASSERT_EQ(tables.size(), 2u);
+  const report::Table& cheapest = *tables[1];
+  EXPECT_EQ(cheapest.columns[0], "target");
+  ASSERT_EQ(cheapest.rows.size(), 7u);
+  EXPECT_DOUBLE_EQ(cheapest.rows[0][0].value, 1e-2);
+  EXPECT_EQ(cheapest.rows[0][1].text, "Exact (1, 0.002 s, 1.00e-14)");
+  EXPECT_DOUBLE_EQ(cheapest.rows[0][1].value, 2e-3);
+  EXPECT_EQ(cheapest.rows[0][2].text, "Second (1, 0.002 s, 1.00e-02)");
   EXPECT_NE(text.find("| 5.00 |"), std::string::npos) << text;
   EXPECT_NE(text.find("- mean curvature H: converge: Second (2.00); do not converge (average "
                       "rate, last rate): Stalls (0.20, last 0.20); exact up to round-off "
@@ -65,7 +118,7 @@ TEST(ReportField, TablesRatesTimesAndWordsFollowTheNumbers) {
   // No field-estimators experiment: nothing.
   Experiment other = e;
   other.name = "fig03-05";
-  EXPECT_TRUE(field_sections(dir, {other}).empty());
+  EXPECT_TRUE(field_section(dir, {other}).blocks.empty());
 }
 
 TEST(ReportField, TheCheapestEstimatorToATargetErrorFollowsTheRows) {
@@ -133,7 +186,7 @@ TEST(ReportField, TwoSettingsOfAFamilyCompareAtTheirFinestLevels) {
       }
   }
   write_error_csv((dir / "hard-meshes-test.csv").string(), rows);
-  const std::string text = field_sections(dir, {e});
+  const std::string text = field_markdown(dir, {e});
   // A4 level 3: 1e-2 / 16, 1e-3 / 16; A16 level 2: 4e-2 / 4, 1e-1 / 4: ratios 16 and 400.
   EXPECT_NE(text.find("- `torus-anisotropic-A16` (level 2, h = 2.00e-01) against "
                       "`torus-anisotropic-A4` (level 3, h = 1.00e-01), finest-level L2 error "

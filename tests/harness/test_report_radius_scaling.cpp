@@ -1,6 +1,7 @@
 // The REPORT.md section "Neighbourhoods that shrink more slowly than h"
 // (harness/report_radius_scaling.h): the bounds of docs/algorithms.md §15, the rates per alpha
 // from the errors CSVs, and the table that sets them side by side.
+#include "harness/report_model.h"
 #include "harness/report_radius_scaling.h"
 
 #include <gtest/gtest.h>
@@ -8,6 +9,7 @@
 #include <filesystem>
 #include <sstream>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "tests/cli/cli_runner.h"
@@ -82,15 +84,14 @@ TEST(ReportRadiusScaling, RatesPerAlphaSideBySide) {
 
   ReportOptions options;
   options.results_dir = dir.string();
-  std::ostringstream md;
-  append_radius_scaling_section(md, experiments, options);
-  const std::string text = md.str();
+  const report::Section section = radius_scaling_section(experiments, options);
+  const std::string text = report::to_markdown(section);
   EXPECT_NE(text.find("## Neighbourhoods that shrink more slowly than h"), std::string::npos);
   EXPECT_NE(text.find("`rs-half` (alpha 0.5, c 0.447), `rs-one` (alpha 1, c 2)"), std::string::npos)
       << text;
   EXPECT_NE(text.find("### `torus-iso`, mean curvature H (levels 1-3)\n\n"
                       "| rate | alpha = 0.5 | alpha = 1 |\n"
-                      "| --- | --- | --- |\n"
+                      "|---|---:|---:|\n"
                       "| *bound, general stencil* | *0.50* | *0.00* |\n"
                       "| *bound, odd terms cancel* | *1.00* | *0.00* |\n"
                       "| LHF-2 | 1.10 | 0.30 |\n"
@@ -99,11 +100,20 @@ TEST(ReportRadiusScaling, RatesPerAlphaSideBySide) {
             std::string::npos)
       << text;
   EXPECT_EQ(text.find("### `torus-iso`, normals"), std::string::npos);  // only H rows given
+  // The cells carry the rates: LHF-2 at alpha 1/2, the bound at alpha 1/2.
+  const report::Table* h_table = nullptr;
+  for (const report::Block& b : section.blocks)
+    if (const auto* t = std::get_if<report::Table>(&b)) h_table = t;
+  ASSERT_NE(h_table, nullptr);
+  ASSERT_EQ(h_table->rows.size(), 5u);
+  EXPECT_NEAR(h_table->rows[2][1].value, 1.1, 1e-12);
+  EXPECT_DOUBLE_EQ(h_table->rows[0][1].value, 0.5);
+  EXPECT_TRUE(std::isnan(h_table->rows[4][2].value));  // "-"
 
   // No radius-scaling experiment with a CSV: nothing.
-  std::ostringstream none;
-  append_radius_scaling_section(none, {plain}, options);
-  EXPECT_TRUE(none.str().empty());
+  const report::Section none = radius_scaling_section({plain}, options);
+  EXPECT_TRUE(none.title.empty());
+  EXPECT_TRUE(none.blocks.empty());
 }
 
 }  // namespace

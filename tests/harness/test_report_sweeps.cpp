@@ -7,8 +7,10 @@
 #include <filesystem>
 #include <sstream>
 #include <string>
+#include <variant>
 #include <vector>
 
+#include "harness/report_model.h"
 #include "harness/report_sweeps.h"
 #include "harness/results_table.h"
 #include "tests/cli/cli_runner.h"
@@ -125,13 +127,13 @@ TEST(ReportSweeps, SectionAndCsvFromTheResults) {
   write_error_csv((dir / "sweep-test.csv").string(), rows);
   fs::create_directories(dir / "timings");
   write_timing_csv((dir / "timings" / "sweep-test.csv").string(), rows);
-  std::ostringstream md;
   ReportOptions o;
   o.results_dir = dir.string();
   o.plots = false;
   int missing = 0;
-  ASSERT_TRUE(append_sweeps_section(md, {e}, o, missing));
-  const std::string text = md.str();
+  report::Section section{"sweeps", "", {}};
+  ASSERT_TRUE(sweeps_section({e}, o, missing, section));
+  const std::string text = report::to_markdown(section);
   EXPECT_NE(text.find("## Sweeps at a fixed mesh"), std::string::npos);
   EXPECT_NE(text.find("| ICC | ball-factor (2 values) | C = 2 (largest) | 5.00e-02 | C = 2 "
                       "(largest) | 5.00e-02 | C = 2 (largest) | 5.00e-02 |"),
@@ -149,6 +151,37 @@ TEST(ReportSweeps, SectionAndCsvFromTheResults) {
                       "`ICC ball-factor=2` | 5.00e-02 | 0.02 s |"),
             std::string::npos)
       << text;
+  // The tables carry their numbers, the plots their series (one per quantity, not rendered).
+  std::vector<const report::Table*> tables;
+  std::vector<const report::Plot*> plots;
+  for (const report::Block& b : section.blocks) {
+    if (const auto* tab = std::get_if<report::Table>(&b)) tables.push_back(tab);
+    if (const auto* p = std::get_if<report::Plot>(&b)) plots.push_back(p);
+  }
+  ASSERT_EQ(tables.size(), 2u);  // the sweep's, the recommendations'
+  const report::Table& sweep = *tables[0];
+  ASSERT_EQ(sweep.rows.size(), 2u);
+  EXPECT_EQ(sweep.rows[0][0].text, "ICC");
+  EXPECT_DOUBLE_EQ(sweep.rows[0][2].value, 2.0);
+  EXPECT_DOUBLE_EQ(sweep.rows[0][3].value, 5e-2);
+  EXPECT_DOUBLE_EQ(sweep.rows[1][3].value, 0.3);
+  ASSERT_EQ(plots.size(), 3u);
+  EXPECT_EQ(plots[1]->id, "sweep-test_torus-unstructured_none_H");
+  EXPECT_FALSE(plots[1]->log_x);
+  EXPECT_TRUE(plots[1]->log_y);
+  EXPECT_TRUE(plots[1]->image.empty());
+  // ICC's curve over its two radii, Meyer's dotted line, the circled best radius.
+  ASSERT_EQ(plots[1]->series.size(), 3u);
+  EXPECT_EQ(plots[1]->series[0].label, "ICC");
+  ASSERT_EQ(plots[1]->series[0].points.size(), 2u);
+  EXPECT_EQ(plots[1]->series[1].label, "Meyer (1-ring)");
+  EXPECT_EQ(plots[1]->series[1].dash, 3);
+  EXPECT_DOUBLE_EQ(plots[1]->series[1].points[0].y, 0.3);
+  EXPECT_EQ(plots[1]->series[2].label, "best radius");
+  ASSERT_EQ(plots[1]->series[2].points.size(), 1u);
+  EXPECT_DOUBLE_EQ(plots[1]->series[2].points[0].x, 2.0);
+  EXPECT_DOUBLE_EQ(plots[1]->series[2].points[0].y, 5e-2);
+  EXPECT_DOUBLE_EQ(tables[1]->rows[0][3].value, 5e-2);  // the recommendation's error
   const CsvTable rec = read_csv_table((dir / "recommendations.csv").string());
   EXPECT_EQ(rec.rows.size(), 12u);
 }
