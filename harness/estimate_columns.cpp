@@ -5,15 +5,18 @@
 #include <cmath>
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 #include "core/errors.h"
 #include "core/huge_pages.h"
 #include "harness/results_table.h"
+#include "harness/shortest_double.h"
 
 namespace curvbench {
 
@@ -48,16 +51,28 @@ bool is_status(const EstimateColumn& c) {
   return std::string_view(c.name) == "status";
 }
 
-// Appends the shortest text that reads back to exactly x (std::to_chars), "nan" for NaN; at most
-// 24 characters.
+// Appends the shortest text that reads back to exactly x (std::to_chars's bytes, written by
+// harness/shortest_double.h), "nan" for NaN; at most 24 characters.
 char* put_double(char* p, double x) {
   if (std::isnan(x)) return std::copy_n("nan", 3, p);
-  return std::to_chars(p, p + 32, x).ptr;
+  return write_shortest(p, x);
+}
+
+// The status words, measured once.
+std::string_view status_word(VertexStatus s) {
+  static const auto words = [] {
+    std::array<std::string_view, kVertexStatusCount> w;
+    for (int i = 0; i < kVertexStatusCount; ++i)
+      w[static_cast<std::size_t>(i)] = to_string(static_cast<VertexStatus>(i));
+    return w;
+  }();
+  return words[static_cast<std::size_t>(s)];
 }
 
 // The longest row: an index, at most every column (a double or an integer in at most 24
 // characters, a status word in at most 20) with separators, and the newline.
-constexpr std::size_t kMaxRow = 12 + std::size(kColumns) * 25 + 2;
+// Plus the room the last number's writer may scribble on past its end (harness/shortest_double.h).
+constexpr std::size_t kMaxRow = 12 + std::size(kColumns) * 25 + 2 + kShortestRoom;
 
 // Rows formatted at a time by the writer's background thread: its two buffers (kMaxRow bytes a
 // row) stay at 3.6 MB whatever the block.
@@ -83,8 +98,8 @@ char* format_rows(char* p, int first, std::span<const VertexEstimate> estimates,
       const EstimateColumn& c = kColumns[k];
       *p++ = ',';
       if (is_status(c)) {
-        const char* word = to_string(e.status);
-        p = std::copy(word, word + std::strlen(word), p);
+        const std::string_view word = status_word(e.status);
+        p = std::copy(word.begin(), word.end(), p);
       } else if (c.integer) {
         p = std::to_chars(p, p + 12, static_cast<int>(c.value(e))).ptr;
       } else {
