@@ -85,7 +85,9 @@ double copy_file_seconds(const std::string& path) {
 }
 
 /// Seconds to write `bytes` bytes (1 MiB writes of a touched buffer) to a new file in `dir` and
-/// close it; the file is removed afterwards.
+/// close it; the file is removed afterwards. Like the writers' runs (whose previous output is
+/// removed before each), it takes page-cache pages the kernel has just freed: a fresh page of
+/// this virtual machine costs a hypervisor fault on first touch (docs/performance.md).
 double plain_write_seconds(const fs::path& dir, std::size_t bytes) {
   std::vector<char> buffer(1 << 20, 'x');
   const std::string path = (dir / "bench_limits_plain.tmp").string();
@@ -330,14 +332,17 @@ int run(int argc, char** argv) {
 
   // ---- write ---------------------------------------------------------------------------------
   const std::string csv = (dir / "bench_limits.csv.tmp").string();
-  const double csv_s = best_of(repeat, [&] {
-    EstimateCsvWriter w(csv, {}, threads);
-    for (int first = 0; first < n; first += kEstimateBlock)
-      w.write(first, std::span(estimates).subspan(
-                         static_cast<std::size_t>(first),
-                         static_cast<std::size_t>(std::min(kEstimateBlock, n - first))));
-    w.commit();
-  });
+  const double csv_s = best_of(
+      repeat,
+      [&] {
+        EstimateCsvWriter w(csv, {}, threads);
+        for (int first = 0; first < n; first += kEstimateBlock)
+          w.write(first, std::span(estimates).subspan(
+                             static_cast<std::size_t>(first),
+                             static_cast<std::size_t>(std::min(kEstimateBlock, n - first))));
+        w.commit();
+      },
+      [&] { fs::remove(csv); });
   const std::size_t csv_bytes = fs::file_size(csv);
   fs::remove(csv);
   // The formatting alone, into memory (the writer's pieces, no file).
@@ -361,14 +366,17 @@ int run(int argc, char** argv) {
                       std::to_string(threads) + " formatting thread(s); formatting alone " +
                       fmt(format_s, "%.3f") + " s"});
   const std::string npy = (dir / "bench_limits.npy.tmp").string();
-  const double npy_s = best_of(repeat, [&] {
-    EstimateNpyWriter w(npy, n, {});
-    for (int first = 0; first < n; first += kEstimateBlock)
-      w.write(first, std::span(estimates).subspan(
-                         static_cast<std::size_t>(first),
-                         static_cast<std::size_t>(std::min(kEstimateBlock, n - first))));
-    w.commit();
-  });
+  const double npy_s = best_of(
+      repeat,
+      [&] {
+        EstimateNpyWriter w(npy, n, {});
+        for (int first = 0; first < n; first += kEstimateBlock)
+          w.write(first, std::span(estimates).subspan(
+                             static_cast<std::size_t>(first),
+                             static_cast<std::size_t>(std::min(kEstimateBlock, n - first))));
+        w.commit();
+      },
+      [&] { fs::remove(npy); });
   const std::size_t npy_bytes = fs::file_size(npy);
   fs::remove(npy);
   const double npy_plain = best_of(repeat, [&] { plain_write_seconds(dir, npy_bytes); });
