@@ -23,6 +23,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -39,6 +40,7 @@
 #include "core/text.h"
 #include "harness/estimate_columns.h"
 #include "harness/estimate_npy.h"
+#include "harness/shortest_double.h"
 #include "mesh/io.h"
 #include "mesh/orientation.h"
 #include "mesh/read_soup.h"
@@ -360,11 +362,37 @@ int run(int argc, char** argv) {
         }
       },
       [&] { text.reserve(8192 * 600); });
+  // The doubles alone, through harness/shortest_double.h and through libstdc++'s std::to_chars
+  // (the CSV's formatter before it, the same bytes), for the ratio in the notes.
+  std::vector<char> chars(std::size_t{8192} * 13 * 64);
+  const auto doubles_seconds = [&](auto&& put) {
+    return best_of(repeat, [&] {
+      const std::span<const EstimateColumn> table = estimate_columns();
+      for (int first = 0; first < n; first += 8192) {
+        char* p = chars.data();
+        for (int v = first; v < std::min(n, first + 8192); ++v)
+          for (const EstimateColumn& c : table)
+            if (c.in_csv && !c.integer) {
+              p = put(p, c.value(estimates[static_cast<std::size_t>(v)]));
+              *p++ = ',';
+            }
+        g_sink = g_sink + static_cast<double>(p - chars.data());
+      }
+    });
+  };
+  const double to_chars_s =
+      doubles_seconds([](char* p, double x) { return std::to_chars(p, p + 32, x).ptr; });
+  const double shortest_s = doubles_seconds([](char* p, double x) {
+    return std::isnan(x) ? std::copy_n("nan", 3, p) : write_shortest(p, x);
+  });
   const double csv_plain = best_of(repeat, [&] { plain_write_seconds(dir, csv_bytes); });
   rows.push_back({"write-csv", csv_s, csv_plain, "plain write(2) of as many bytes (page cache)",
                   std::to_string(csv_bytes) + " bytes, every column, shortest round-trip text, " +
                       std::to_string(threads) + " formatting thread(s); formatting alone " +
-                      fmt(format_s, "%.3f") + " s"});
+                      fmt(format_s, "%.3f") + " s; its " + std::to_string(13 * n) +
+                      " doubles alone " + fmt(shortest_s, "%.3f") +
+                      " s, through libstdc++'s std::to_chars (the formatter before) " +
+                      fmt(to_chars_s, "%.3f") + " s"});
   const std::string npy = (dir / "bench_limits.npy.tmp").string();
   const double npy_s = best_of(
       repeat,
