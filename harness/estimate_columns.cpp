@@ -69,13 +69,39 @@ std::string_view status_word(VertexStatus s) {
   return words[static_cast<std::size_t>(s)];
 }
 
-// The longest row: an index, at most every column (a double or an integer in at most 24
-// characters, a status word in at most 20) with separators, and the newline.
-// Plus the room the last number's writer may scribble on past its end (harness/shortest_double.h).
-constexpr std::size_t kMaxRow = 12 + std::size(kColumns) * 25 + 2 + kShortestRoom;
+// The longest row of these columns: the index (at most 24 characters), each column with its
+// comma (a double in at most 24 characters, an int in 11, the longest status word), the newline.
+std::size_t max_row(std::span<const int> columns) {
+  std::size_t row = 24 + 1;
+  for (const int k : columns) {
+    const EstimateColumn& c = kColumns[k];
+    if (is_status(c)) {
+      std::size_t longest = 0;
+      for (int i = 0; i < kVertexStatusCount; ++i)
+        longest = std::max(longest, status_word(static_cast<VertexStatus>(i)).size());
+      row += 1 + longest;
+    } else {
+      row += c.integer ? 12 : 25;
+    }
+  }
+  return row;
+}
 
-// Rows formatted at a time by the writer per formatting thread: its two buffers (kMaxRow bytes
-// a row) stay at 3.9 MB per thread whatever the block.
+// The chunks a block of n rows is formatted in, on `threads` threads (< 1: the OpenMP default).
+std::size_t csv_chunks(std::size_t n, int threads) {
+  if (threads < 1) threads = omp_get_max_threads();
+  return std::max<std::size_t>(1,
+                               std::min<std::size_t>(static_cast<std::size_t>(threads), n / 1024));
+}
+
+// The bytes format_csv_block needs for n rows: each chunk its rows at their longest and the room
+// its last number's writer may use past its end (harness/shortest_double.h).
+std::size_t csv_room(std::size_t n, std::span<const int> columns, int threads) {
+  return n * max_row(columns) + csv_chunks(n, threads) * kShortestRoom + 1;
+}
+
+// Rows formatted at a time by the writer per formatting thread: its two buffers stay at about
+// 3 MB per thread whatever the block.
 constexpr std::size_t kRowsPerWrite = 8192;
 
 // The CSV columns when none are asked for (--columns).
@@ -111,30 +137,30 @@ char* format_rows(char* p, int first, std::span<const VertexEstimate> estimates,
   return p;
 }
 
-// Formats the rows into `scratch` (room for kMaxRow bytes per row; not zero-filled), packed, and
-// returns their length: the block is cut into chunks formatted in parallel, each into its own
-// slice, then moved together in order.
+// Formats the rows into `scratch` (csv_room bytes; not zero-filled), packed, and returns their
+// length: the block is cut into chunks formatted in parallel, each into its own slice, then moved
+// together in order.
 std::size_t format_csv_block(char* scratch, int first, std::span<const VertexEstimate> estimates,
                              std::span<const int> source, std::span<const int> columns,
                              int threads) {
   const std::size_t n = estimates.size();
-  if (threads < 1) threads = omp_get_max_threads();
-  const std::size_t chunks =
-      std::max<std::size_t>(1, std::min<std::size_t>(static_cast<std::size_t>(threads), n / 1024));
+  const std::size_t chunks = csv_chunks(n, threads);
+  const std::size_t row = max_row(columns);
   if (chunks == 1)
     return static_cast<std::size_t>(format_rows(scratch, first, estimates, source, columns, 0, n) -
                                     scratch);
   std::vector<std::size_t> ends(chunks);
   const auto bound = [&](std::size_t c) { return n * c / chunks; };
+  const auto offset = [&](std::size_t c) { return bound(c) * row + c * kShortestRoom; };
 #pragma omp parallel for num_threads(static_cast <int>(chunks)) schedule(static, 1)
   for (std::size_t c = 0; c < chunks; ++c) {
-    char* start = scratch + bound(c) * kMaxRow;
+    char* start = scratch + offset(c);
     ends[c] = static_cast<std::size_t>(
         format_rows(start, first, estimates, source, columns, bound(c), bound(c + 1)) - start);
   }
   std::size_t at = ends[0];
   for (std::size_t c = 1; c < chunks; ++c) {
-    std::memmove(scratch + at, scratch + bound(c) * kMaxRow, ends[c]);
+    std::memmove(scratch + at, scratch + offset(c), ends[c]);
     at += ends[c];
   }
   return at;
@@ -189,7 +215,7 @@ void append_estimate_csv_rows(std::string& out, int first,
                               std::span<const int> columns) {
   const std::vector<int> all = columns.empty() ? estimate_csv_columns() : std::vector<int>();
   if (columns.empty()) columns = all;
-  const std::unique_ptr<char[]> scratch(new char[estimates.size() * kMaxRow + 1]);
+  const std::unique_ptr<char[]> scratch(new char[csv_room(estimates.size(), columns, threads)]);
   out.append(scratch.get(),
              format_csv_block(scratch.get(), first, estimates, source, columns, threads));
 }
@@ -224,7 +250,7 @@ void EstimateCsvWriter::write(int first, std::span<const VertexEstimate> estimat
         kRowsPerWrite * static_cast<std::size_t>(threads_ < 1 ? omp_get_max_threads() : threads_);
     for (std::size_t i0 = 0; i0 < block_.size(); i0 += piece) {
       const std::size_t rows = std::min(piece, block_.size() - i0);
-      const std::size_t room = rows * kMaxRow + 1;
+      const std::size_t room = csv_room(rows, columns_, threads_);
       if (scratch_.size() < room) scratch_.resize(room);
       const std::size_t bytes =
           format_csv_block(scratch_.data(), first + static_cast<int>(i0),

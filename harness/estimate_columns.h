@@ -61,7 +61,7 @@ void append_estimate_csv_rows(std::string& out, int first,
 /// A pipeline of three stages, each on a thread of its own: the caller estimates block k + 1
 /// while block k is formatted 8192 rows per thread at a time (16 numbers per vertex cost more
 /// than a fast fit), each piece written while the next is formatted
-/// (AtomicFile::append_in_background), so the text held stays at two pieces (2 x 3.9 MB per
+/// (AtomicFile::append_in_background), so the text held stays at two pieces (2 x about 3 MB per
 /// formatting thread) whatever the block. write() copies the block
 /// and returns; one block is being formatted at a time, and the next write() or commit() waits
 /// for it and reports its error.
