@@ -1,6 +1,7 @@
 // Consistent face orientation; see orientation.h.
 #include "mesh/orientation.h"
 
+#include <algorithm>
 #include <string>
 #include <utility>
 
@@ -45,20 +46,39 @@ void consistent_patches(const Mesh& mesh, std::vector<int>& patch, std::vector<u
     }
     return f;
   };
+  // The same pass sums the signed volume and notes a face at a boundary or non-manifold edge:
+  // with a single patch (the usual mesh) that is all there is to know.
+  int joined = 0;
+  double total = 0.0;
+  bool open = false;
   for (int f = 0; f < m; ++f) {
     int root = f;  // of f's set so far
     parent[f] = f;
     for (int k = 0; k < 3; ++k) {
       const int g = mesh.face_neighbor(f, k);
+      open = open || g < 0;
       if (g < 0 || g >= f) continue;  // each manifold edge once, from its higher face
       const int a = find(g);
       if (a < root) {
         parent[root] = a;
         root = a;
+        ++joined;
       } else if (root < a) {
         parent[a] = root;
+        ++joined;
       }
     }
+    const Vec3 a = mesh.position(F(f, 0)), b = mesh.position(F(f, 1)), c = mesh.position(F(f, 2));
+    total += a.dot(b.cross(c));
+  }
+  if (m - joined == 1) {
+    out.patches = 1;
+    if (!open) {
+      ++out.closed_patches;
+      if (total < 0.0) std::fill(flip.begin(), flip.end(), 1);
+    }
+    std::fill(parent, parent + m, 0);
+    return;
   }
   // Patch ids in increasing lowest face, stored as ~id (negative) while the pass runs: a face
   // whose parent is below it takes its parent's id, already final.
