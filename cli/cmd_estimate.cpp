@@ -1,10 +1,13 @@
 // `curvbench estimate MESH --method M [estimator options] [--timing] [--skip-invalid]
-//  [--color Q] [--block N] --output OUT.csv|OUT.ply`: per-vertex normals and curvatures of one
-// estimator. The estimator options (--degree, --rings, --threads, --noisy, --vertex-normals, ...)
-// are the flags of the option table (methods/option_schema.h, add_estimator_option_flags).
+//  [--color Q] [--block N] [--columns C,...] --output OUT.csv|OUT.ply|OUT.npy`: per-vertex normals
+// and curvatures of one estimator. The estimator options (--degree, --rings, --threads, --noisy,
+// --vertex-normals, ...) are the flags of the option table (methods/option_schema.h,
+// add_estimator_option_flags).
 //
-// CSV: a header, then one row per vertex; PLY: the mesh with per-vertex properties; both from
-// the column table of harness/estimate_columns.h, written block by block as the estimates come
+// CSV: a header, then one row per vertex; PLY: the mesh with per-vertex properties; NPY: one
+// record per vertex (harness/estimate_npy.h); all from the column table of
+// harness/estimate_columns.h (--columns: only those asked for), written block by block as the
+// estimates come
 // (--block vertices at a time; the bytes do not depend on it or on --threads). The file is written
 // to a temporary name and renamed, so a failed run never leaves a truncated OUT. A one-line summary
 // goes to stderr, after a one-line warning for each kind of element the reader dropped (faces with
@@ -33,6 +36,7 @@
 #include "core/errors.h"
 #include "core/text.h"
 #include "harness/estimate_columns.h"
+#include "harness/estimate_npy.h"
 #include "harness/recommend_table.h"
 #include "harness/results_table.h"
 #include "mesh/colormap.h"
@@ -51,7 +55,8 @@ struct EstimateOptions {
   EstimatorOptionFlags estimator;  // --degree, --rings, ... (the option table)
   bool timing = false;
   bool skip_invalid = false;
-  std::string color;  // "", H, K, k1 or k2: PLY per-vertex RGB (mesh/colormap.h)
+  std::string color;    // "", H, K, k1 or k2: PLY per-vertex RGB (mesh/colormap.h)
+  std::string columns;  // --columns: "" (the format's own) or names, "H,K"
   std::string output;
   int block = kEstimateBlock;  // vertices estimated and written at a time
 };
@@ -97,8 +102,10 @@ std::unique_ptr<Estimator> auto_estimator(const std::string& path, const Mesh& m
 
 int run_estimate(const EstimateOptions& o) {
   const std::string ext = lower_extension(o.output);
-  if (ext != "csv" && ext != "ply")
-    throw UsageError("--output " + o.output + ": extension must be .csv or .ply");
+  if (ext != "csv" && ext != "ply" && ext != "npy")
+    throw UsageError("--output " + o.output + ": extension must be .csv, .ply or .npy");
+  const std::vector<int> columns =
+      o.columns.empty() ? std::vector<int>() : parse_estimate_columns(o.columns);
   if (!o.color.empty() && ext != "ply") throw UsageError("--color needs a .ply --output");
   if (o.block < 1) throw UsageError("--block must be at least 1");
   const EstimatorOptions eo = o.estimator.options();
@@ -127,13 +134,16 @@ int run_estimate(const EstimateOptions& o) {
   const int block = o.color.empty() ? o.block : std::max(n, 1);
   std::unique_ptr<EstimateCsvWriter> csv;
   std::unique_ptr<PlyWriter> ply;
-  std::vector<PlyWriter::Property> types = estimate_ply_types();
-  const std::size_t columns = types.size();
+  std::unique_ptr<EstimateNpyWriter> npy;
+  std::vector<PlyWriter::Property> types = estimate_ply_types(columns);
+  const std::size_t ply_columns = types.size();
   std::vector<double> rows;
   VertexColors colors;  // --color: over every vertex (one block)
   const auto t_open = Clock::now();
   if (ext == "csv")
-    csv = std::make_unique<EstimateCsvWriter>(o.output, report.source_vertex, eo.threads);
+    csv = std::make_unique<EstimateCsvWriter>(o.output, report.source_vertex, eo.threads, columns);
+  else if (ext == "npy")
+    npy = std::make_unique<EstimateNpyWriter>(o.output, n, report.source_vertex, columns);
   double open_seconds = since(t_open);
   // Failed, excluded and partial vertices by what the mesh shows at them (mesh/mesh_checks.h),
   // computed at the first block that has one.
@@ -155,6 +165,10 @@ int run_estimate(const EstimateOptions& o) {
     count_defects(mesh, first, out);
     if (csv) {
       csv->write(first, out);
+      return;
+    }
+    if (npy) {
+      npy->write(first, out);
       return;
     }
     if (!ply) {  // the header, at the first block (it names the colour range)
@@ -180,8 +194,8 @@ int run_estimate(const EstimateOptions& o) {
       rows.resize(count * types.size());
       for (size_t i = i0; i < i0 + count; ++i) {
         double* row = rows.data() + (i - i0) * types.size();
-        estimate_ply_row(out[i], row);
-        std::size_t p = columns;
+        estimate_ply_row(out[i], row, columns);
+        std::size_t p = ply_columns;
         if (!report.source_vertex.empty())
           row[p++] = report.source_vertex[static_cast<size_t>(first) + i];
         if (!o.color.empty())
@@ -199,6 +213,7 @@ int run_estimate(const EstimateOptions& o) {
     std::fprintf(stderr, "curvbench: warning: %s: %s\n", o.mesh.c_str(), w.c_str());
   const auto t_commit = Clock::now();
   if (csv) csv->commit();
+  if (npy) npy->commit();
   if (ply) ply->commit();  // the faces
   const double write_seconds = open_seconds + run.sink_seconds + since(t_commit);
   const double seconds = run.estimate_seconds;
@@ -269,7 +284,14 @@ Command add_estimate_command(CLI::App& app) {
                   "PLY only: per-vertex red/green/blue of H, K, k1 or k2 (diverging map, symmetric "
                   "range: 98th percentile of |value|)")
       ->check(CLI::IsMember({"H", "K", "k1", "k2"}));
-  sub->add_option("--output", o->output, "Output file (.csv or .ply)")->required();
+  sub->add_option("--columns", o->columns,
+                  "Write only these columns, in this order (comma-separated, e.g. H,K; names: "
+                  "nx,ny,nz,k1,k2,H,K,d1x,d1y,d1z,d2x,d2y,d2z,degree,points,ring,status); the "
+                  "CSV and .npy keep their leading vertex index");
+  sub->add_option("--output", o->output,
+                  "Output file: .csv, .ply (binary, the mesh with per-vertex properties) or .npy "
+                  "(NumPy records, one field per column)")
+      ->required();
   sub->add_option("--block", o->block,
                   "Vertices estimated and written at a time (default 65536; memory vs. overhead; "
                   "the output is the same for any value)");

@@ -35,8 +35,17 @@ struct EstimateColumn {
 /// Every column, in output order (the CSV's leading "vertex" column is not in the table).
 std::span<const EstimateColumn> estimate_columns();
 
-/// The CSV header line (without newline): "vertex," then the CSV columns.
-std::string estimate_csv_header();
+/// A selection of columns: indices into estimate_columns(), in output order. An empty
+/// selection everywhere below means the format's own columns (in_csv, in_ply).
+std::vector<int> estimate_csv_columns();
+std::vector<int> estimate_ply_columns();
+
+/// `--columns`: a comma-separated list of column names (e.g. "H,K"), kept in the given order.
+/// Throws UsageError for an unknown name (the message lists the names) or a name given twice.
+std::vector<int> parse_estimate_columns(const std::string& list);
+
+/// The CSV header line (without newline): "vertex," then the columns.
+std::string estimate_csv_header(std::span<const int> columns = {});
 
 /// Appends the CSV rows of the estimates of vertices first, first + 1, ... to `out`: the block is
 /// cut into `threads` chunks (< 1: the OpenMP default) formatted in parallel and joined in order,
@@ -44,18 +53,22 @@ std::string estimate_csv_header();
 /// mesh for the "vertex" column (empty: the identity).
 void append_estimate_csv_rows(std::string& out, int first,
                               std::span<const VertexEstimate> estimates,
-                              std::span<const int> source, int threads = 1);
+                              std::span<const int> source, int threads = 1,
+                              std::span<const int> columns = {});
 
 /// The estimate CSV written block by block (the header first), through the project's atomic
 /// file writer: a failure leaves no file. `source` as above; it must outlive the writer.
-/// A pipeline of three stages, each on a thread of its own: the caller estimates block k + 2
-/// while block k + 1 is formatted (16 numbers per vertex cost more than a fast fit) and block k
-/// is written (AtomicFile::append_in_background). write() copies the block and returns; one
-/// block is being formatted at a time, and the next write() or commit() waits for it and
-/// reports its error.
+/// A pipeline of three stages, each on a thread of its own: the caller estimates block k + 1
+/// while block k is formatted 8192 rows per thread at a time (16 numbers per vertex cost more
+/// than a fast fit), each piece written while the next is formatted
+/// (AtomicFile::append_in_background), so the text held stays at two pieces (2 x about 3 MB per
+/// formatting thread) whatever the block. write() copies the block
+/// and returns; one block is being formatted at a time, and the next write() or commit() waits
+/// for it and reports its error.
 class EstimateCsvWriter {
  public:
-  EstimateCsvWriter(const std::string& path, std::span<const int> source, int threads = 1);
+  EstimateCsvWriter(const std::string& path, std::span<const int> source, int threads = 1,
+                    std::vector<int> columns = {});
   EstimateCsvWriter(const EstimateCsvWriter&) = delete;
   EstimateCsvWriter& operator=(const EstimateCsvWriter&) = delete;
   /// Waits for the block in flight (its error no longer matters); uncommitted, no file is left.
@@ -71,8 +84,9 @@ class EstimateCsvWriter {
   AtomicFile file_;
   std::span<const int> source_;
   int threads_;
+  std::vector<int> columns_;
   std::vector<VertexEstimate> block_;  ///< the block in flight (a copy)
-  std::string scratch_;                ///< its formatted rows (two buffers take turns)
+  std::string scratch_;                ///< a piece of its formatted rows (two buffers take turns)
   std::future<void> in_flight_;
 };
 
@@ -83,9 +97,9 @@ void write_estimate_csv_atomic(const std::string& path, std::span<const VertexEs
 /// The PLY vertex properties of the estimates (write_mesh's `properties`).
 std::vector<VertexProperty> estimate_ply_properties(std::span<const VertexEstimate> estimates);
 
-/// Names and types of the same properties, for PlyWriter, and one vertex's values in that order
-/// (estimate_ply_types().size() of them written to `row`).
-std::vector<PlyWriter::Property> estimate_ply_types();
-void estimate_ply_row(const VertexEstimate& e, double* row);
+/// Names and types of the same properties (or of `columns`), for PlyWriter, and one vertex's
+/// values in that order (estimate_ply_types(columns).size() of them written to `row`).
+std::vector<PlyWriter::Property> estimate_ply_types(std::span<const int> columns = {});
+void estimate_ply_row(const VertexEstimate& e, double* row, std::span<const int> columns = {});
 
 }  // namespace curvbench

@@ -135,12 +135,15 @@ Mesh::Mesh(VertexMatrix vertices, FaceMatrix faces, const std::string& source)
 int Mesh::reorient_faces(const std::vector<unsigned char>& flip) {
   const int m = num_faces();
   int changed = 0;
+  bool any_flipped = false;
   for (int f = 0; f < m; ++f) {
     // Corners c and the edges e (e[k] from c[k] to c[k+1]) after the flip: (a, b, c) reversed is
     // (a, c, b), whose edges are the old edges 2, 1, 0.
     int c[3] = {F_(f, 0), F_(f, 1), F_(f, 2)};
-    int e[3] = {ff_[3 * f], ff_[3 * f + 1], ff_[3 * f + 2]};
     const bool flipped = flip[static_cast<size_t>(f)] != 0;
+    if (!flipped && c[0] < c[1] && c[0] < c[2]) continue;  // the usual face: as it is
+    any_flipped = any_flipped || flipped;
+    int e[3] = {ff_[3 * f], ff_[3 * f + 1], ff_[3 * f + 2]};
     if (flipped) {
       std::swap(c[1], c[2]);
       std::swap(e[0], e[2]);
@@ -155,7 +158,9 @@ int Mesh::reorient_faces(const std::vector<unsigned char>& flip) {
       ff_[3 * f + k] = e[(k + first) % 3];
     }
   }
-  // Manifold interior edges run the same way by both faces, counted once per edge.
+  // Manifold interior edges run the same way by both faces, counted once per edge. A rotation
+  // keeps every edge's direction: without a flip the count stands.
+  if (!any_flipped) return changed;
   num_inconsistent_edges_ = 0;
   for (int f = 0; f < m; ++f)
     for (int k = 0; k < 3; ++k) {

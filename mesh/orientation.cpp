@@ -1,6 +1,7 @@
 // Consistent face orientation; see orientation.h.
 #include "mesh/orientation.h"
 
+#include <algorithm>
 #include <string>
 #include <utility>
 
@@ -25,24 +26,108 @@ int edge_direction(const FaceMatrix& F, int f, int a, int b) {
 
 namespace {
 
-/// Everything but the reoriented mesh, and the faces to reverse.
-OrientationResult orientation_of(const Mesh& mesh, std::vector<unsigned char>& flip) {
-  const int n = mesh.num_vertices();
+/// The patches of a consistently oriented mesh (Mesh::is_consistently_oriented, checked while
+/// the adjacency was built): no walk, and nothing to repair. One pass over the edges joins the
+/// faces across each manifold edge (union-find over face indices, a root always the lowest face of
+/// its set), one pass over the faces numbers the patches in the order of their lowest face (the
+/// walk's order) and sums each patch's signed volume; a closed patch of negative volume is
+/// reversed as a whole, an open one kept (the walk would flip none of its faces). patch[f]: the
+/// patch of face f.
+void consistent_patches(const Mesh& mesh, std::vector<int>& patch, std::vector<unsigned char>& flip,
+                        OrientationResult& out) {
   const int m = mesh.num_faces();
   const FaceMatrix& F = mesh.faces();
-  OrientationResult out;
-  out.sign_undetermined.assign(static_cast<size_t>(n), 0);
+  patch.resize(static_cast<size_t>(m));
+  int* parent = patch.data();
+  const auto find = [parent](int f) {
+    while (parent[f] != f) {
+      parent[f] = parent[parent[f]];  // path halving: parents only ever point down
+      f = parent[f];
+    }
+    return f;
+  };
+  // The same pass sums the signed volume and notes a face at a boundary or non-manifold edge:
+  // with a single patch (the usual mesh) that is all there is to know.
+  int joined = 0;
+  double total = 0.0;
+  bool open = false;
+  for (int f = 0; f < m; ++f) {
+    int root = f;  // of f's set so far
+    parent[f] = f;
+    for (int k = 0; k < 3; ++k) {
+      const int g = mesh.face_neighbor(f, k);
+      open = open || g < 0;
+      if (g < 0 || g >= f) continue;  // each manifold edge once, from its higher face
+      const int a = find(g);
+      if (a < root) {
+        parent[root] = a;
+        root = a;
+        ++joined;
+      } else if (root < a) {
+        parent[a] = root;
+        ++joined;
+      }
+    }
+    const Vec3 a = mesh.position(F(f, 0)), b = mesh.position(F(f, 1)), c = mesh.position(F(f, 2));
+    total += a.dot(b.cross(c));
+  }
+  if (m - joined == 1) {
+    out.patches = 1;
+    if (!open) {
+      ++out.closed_patches;
+      if (total < 0.0) std::fill(flip.begin(), flip.end(), 1);
+    }
+    std::fill(parent, parent + m, 0);
+    return;
+  }
+  // Patch ids in increasing lowest face, stored as ~id (negative) while the pass runs: a face
+  // whose parent is below it takes its parent's id, already final.
+  std::vector<char> closed;
+  std::vector<double> volume;
+  for (int f = 0; f < m; ++f) {
+    const int p = parent[f];
+    int id;
+    if (p == f) {
+      id = out.patches++;
+      closed.push_back(1);
+      volume.push_back(0.0);
+    } else {
+      id = ~parent[p];
+    }
+    parent[f] = ~id;
+    const Vec3 a = mesh.position(F(f, 0)), b = mesh.position(F(f, 1)), c = mesh.position(F(f, 2));
+    volume[static_cast<size_t>(id)] += a.dot(b.cross(c));
+    if (mesh.face_neighbor(f, 0) < 0 || mesh.face_neighbor(f, 1) < 0 ||
+        mesh.face_neighbor(f, 2) < 0)
+      closed[static_cast<size_t>(id)] = 0;
+  }
+  bool any_reversed = false;
+  std::vector<char> reverse(static_cast<size_t>(out.patches), 0);
+  for (int id = 0; id < out.patches; ++id) {
+    if (!closed[static_cast<size_t>(id)]) continue;
+    ++out.closed_patches;
+    if (volume[static_cast<size_t>(id)] < 0.0) {
+      reverse[static_cast<size_t>(id)] = 1;
+      any_reversed = true;
+    }
+  }
+  for (int f = 0; f < m; ++f) {
+    parent[f] = ~parent[f];
+    if (any_reversed) flip[static_cast<size_t>(f)] = reverse[static_cast<size_t>(parent[f])];
+  }
+}
 
-  // flip[f]: reverse face f relative to the input. patch[f]: patch index. queue: the faces of the
-  // current patch in the order the walk reached them (all of them once the walk is done).
-  reserve_huge(flip, static_cast<size_t>(m));
-  flip.assign(static_cast<size_t>(m), 0);
-  std::vector<int> patch;
-  reserve_huge(patch, static_cast<size_t>(m));
+/// The breadth-first walk of every patch (see orientation.h), for a mesh with an inconsistent
+/// edge. patch[f]: the patch of face f.
+void walk_patches(const Mesh& mesh, std::vector<int>& patch, std::vector<unsigned char>& flip,
+                  OrientationResult& out) {
+  const int m = mesh.num_faces();
+  const FaceMatrix& F = mesh.faces();
+  // queue: the faces of the current patch in the order the walk reached them (all of them once
+  // the walk is done).
   patch.assign(static_cast<size_t>(m), -1);
   std::vector<int> queue;
   reserve_huge(queue, static_cast<size_t>(m));
-  const bool consistent = mesh.is_consistently_oriented();
   for (int seed = 0; seed < m; ++seed) {
     if (patch[static_cast<size_t>(seed)] >= 0) continue;
     const int id = out.patches++;
@@ -57,15 +142,10 @@ OrientationResult orientation_of(const Mesh& mesh, std::vector<unsigned char>& f
           closed = false;
           continue;
         }
-        // f runs its edge k from a to b (in its new orientation); g must run it from b to a. In
-        // a consistently oriented mesh nothing is flipped during the walk and every neighbour
-        // already does.
-        unsigned char want = 0;
-        if (!consistent) {
-          int a = F(f, k), b = F(f, (k + 1) % 3);
-          if (flip[static_cast<size_t>(f)]) std::swap(a, b);
-          want = edge_direction(F, g, a, b) == 1 ? 1 : 0;  // in g's input orientation
-        }
+        // f runs its edge k from a to b (in its new orientation); g must run it from b to a.
+        int a = F(f, k), b = F(f, (k + 1) % 3);
+        if (flip[static_cast<size_t>(f)]) std::swap(a, b);
+        const unsigned char want = edge_direction(F, g, a, b) == 1 ? 1 : 0;  // in g's input
         if (patch[static_cast<size_t>(g)] < 0) {
           patch[static_cast<size_t>(g)] = id;
           flip[static_cast<size_t>(g)] = want;
@@ -101,13 +181,37 @@ OrientationResult orientation_of(const Mesh& mesh, std::vector<unsigned char>& f
     if (reverse)
       for (int f : queue) flip[static_cast<size_t>(f)] ^= 1;
   }
+}
 
-  // Vertices whose faces lie in several patches or that end a non-manifold edge.
-  for (int v = 0; v < n; ++v) {
+/// Everything but the reoriented mesh, and the faces to reverse.
+OrientationResult orientation_of(const Mesh& mesh, std::vector<unsigned char>& flip) {
+  const int n = mesh.num_vertices();
+  const int m = mesh.num_faces();
+  const FaceMatrix& F = mesh.faces();
+  OrientationResult out;
+  out.sign_undetermined.assign(static_cast<size_t>(n), 0);
+
+  // flip[f]: reverse face f relative to the input. patch[f]: patch index.
+  reserve_huge(flip, static_cast<size_t>(m));
+  flip.assign(static_cast<size_t>(m), 0);
+  std::vector<int> patch;
+  reserve_huge(patch, static_cast<size_t>(m));
+  if (mesh.is_consistently_oriented())
+    consistent_patches(mesh, patch, flip, out);
+  else
+    walk_patches(mesh, patch, flip, out);
+
+  // Vertices whose faces lie in several patches (none with a single patch) or that end a
+  // non-manifold edge.
+  for (int v = 0; v < (out.patches > 1 ? n : 0); ++v) {
     const auto faces = mesh.vertex_faces(v);
+    if (faces.empty()) continue;
+    const int first = patch[static_cast<size_t>(faces[0])];
     for (int f : faces)
-      if (patch[static_cast<size_t>(f)] != patch[static_cast<size_t>(faces[0])])
+      if (patch[static_cast<size_t>(f)] != first) {
         out.sign_undetermined[static_cast<size_t>(v)] = 1;
+        break;
+      }
   }
   if (mesh.num_nonmanifold_edges() > 0)
     for (int f = 0; f < m; ++f)

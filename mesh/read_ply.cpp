@@ -249,6 +249,10 @@ double read_binary_real(const char* p, const PlyTypeInfo& t, bool big_endian) {
   return v;
 }
 
+std::uint32_t byte_swap(std::uint32_t u) {
+  return ((u & 0xffu) << 24) | ((u & 0xff00u) << 8) | ((u >> 8) & 0xff00u) | (u >> 24);
+}
+
 /// Reads an int or uint list entry (4 bytes) at `p` (binary).
 long long read_binary_index(const char* p, bool is_signed, bool swap) {
   std::uint32_t u;
@@ -566,7 +570,46 @@ void read_binary_body(const std::string& path, const PlyHeader& h, const PlyLayo
       }
       continue;
     }
-    for (unsigned long long j = 0; j < e.count; ++j) {
+    // The usual face element, a list of uchar length and int or uint entries and nothing else:
+    // triangles are checked and copied a window at a time, 13 bytes each, until the first record
+    // that is not a triangle of valid indices; that one and the rest go through the loop below,
+    // which reports the error or reads the polygon (the same soup and the same messages).
+    unsigned long long j0 = 0;
+    if (is_face && e.properties.size() == 1 && &e.properties[0] == l.indices &&
+        l.indices->size->size == 1 && soup.all_triangles()) {
+      const bool is_signed = l.indices->type->type == PlyType::kInt;
+      constexpr std::size_t kStage = 4096;
+      std::int32_t stage[3 * kStage];
+      bool clean = true;
+      while (clean && j0 < e.count) {
+        const auto items = static_cast<std::size_t>(
+            std::min<unsigned long long>({kStage, e.count - j0, in.left() / 13}));
+        if (items == 0) break;
+        const char* at = in.need(items * 13);
+        std::size_t done = 0;
+        for (; done < items; ++done) {
+          const char* r = at + 13 * done;
+          if (r[0] != 3) break;
+          std::uint32_t u[3];
+          std::memcpy(u, r + 1, 12);
+          bool ok = true;
+          for (int c = 0; c < 3; ++c) {
+            if (swap) u[c] = byte_swap(u[c]);
+            // As read_binary_index: a negative int or an index past the vertices is refused.
+            const long long v = is_signed ? static_cast<long long>(static_cast<std::int32_t>(u[c]))
+                                          : static_cast<long long>(u[c]);
+            ok = ok && v >= 0 && static_cast<unsigned long long>(v) < num_vertices;
+            stage[3 * done + static_cast<std::size_t>(c)] = static_cast<std::int32_t>(u[c]);
+          }
+          if (!ok) break;
+        }
+        soup.add_triangles(stage, done);
+        in.skip(done * 13);
+        j0 += done;
+        clean = done == items;
+      }
+    }
+    for (unsigned long long j = j0; j < e.count; ++j) {
       auto need_bytes = [&](unsigned long long bytes) {
         if (in.left() < bytes)
           fail(path, "truncated PLY data: the file ends in " + e.name + " " + std::to_string(j) +

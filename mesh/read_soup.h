@@ -112,6 +112,13 @@ struct Soup {
     starts.push_back(indices.size());
   }
 
+  /// Appends `count` triangles (3 indices each, already checked) while every polygon so far is a
+  /// triangle (all_triangles()): the same soup as end_polygon() after each.
+  void add_triangles(const std::int32_t* corners, std::size_t count) {
+    indices.append(corners, 3 * count);
+    polygons += count;
+  }
+
   /// Records that vertex `v` has a non-finite coordinate token; false if not skipping (the caller
   /// then throws). The coordinate is stored as 0; the vertex is dropped later.
   bool skip(unsigned long long v) {

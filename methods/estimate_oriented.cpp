@@ -28,9 +28,9 @@ OrientedRun estimate_oriented(Mesh mesh, const Estimator& estimator, int block,
   const std::span<const unsigned char> undetermined = r.orientation.sign_undetermined;
   const auto t0 = Clock::now();
   MeshEstimation run(oriented, estimator);
-  r.estimate_seconds += seconds(t0, Clock::now());
   const int n = oriented.num_vertices();
   std::vector<VertexEstimate> estimates(static_cast<size_t>(std::min(block, n)));
+  r.estimate_seconds += seconds(t0, Clock::now());  // the estimation's set-up and its buffer
   for (int first = 0; first < n; first += block) {
     const std::span<VertexEstimate> out =
         std::span(estimates).first(static_cast<size_t>(std::min(block, n - first)));

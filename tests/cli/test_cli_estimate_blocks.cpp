@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <limits>
 #include <random>
@@ -155,12 +157,123 @@ TEST(EstimateCsvWriter, BlocksInFlightKeepTheirOrderAndAreCopies) {
     writer.commit();
   }
   EXPECT_EQ(slurp(path), expected);
+  // One block of several 8192-row pieces, each written while the next is formatted.
+  for (const int threads : {1, 2}) {
+    EstimateCsvWriter writer(path, {}, threads);
+    writer.write(0, e);
+    writer.commit();
+    EXPECT_EQ(slurp(path), expected) << threads;
+  }
   {
     EstimateCsvWriter writer((dir / "inflight.csv").string(), {}, 1);
     writer.write(0, e);
   }
   EXPECT_FALSE(fs::exists(dir / "inflight.csv"));
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+  fs::remove_all(dir);
+}
+
+// --columns: the CSV, PLY and .npy of the asked columns are the same bytes for any --block and
+// --threads; the CSV's columns are the default CSV's columns, value for value, and the .npy holds
+// the very doubles the CSV's shortest round-trip text reads back to.
+TEST(CliEstimateColumns, SameBytesForAnyBlockAndThreadsAndTheSameValues) {
+  const fs::path dir = fresh_dir("cli_estimate_columns");
+  const fs::path mesh = dir / "mesh.off";
+  ASSERT_EQ(run_cli("mesh --family bump-irregular --level 1 --output " + mesh.string()).exit_code,
+            0);
+  const std::string columns = "K,H,status,degree,nz";
+  std::string reference[3];
+  const std::string exts[3] = {"csv", "ply", "npy"};
+  for (int x = 0; x < 3; ++x)
+    for (const auto& [block, threads] : {std::pair{65536, 1}, std::pair{7, 2}, std::pair{100, 3}}) {
+      const fs::path out = dir / ("out." + exts[x]);
+      const auto r = run_cli("estimate " + mesh.string() + " --method lhf-2 --columns " + columns +
+                             " --block " + std::to_string(block) + " --threads " +
+                             std::to_string(threads) + " --output " + out.string());
+      ASSERT_EQ(r.exit_code, 0) << r.output;
+      const std::string bytes = slurp(out);
+      ASSERT_FALSE(bytes.empty());
+      if (reference[x].empty())
+        reference[x] = bytes;
+      else
+        EXPECT_EQ(bytes, reference[x]) << exts[x] << " block " << block << " threads " << threads;
+    }
+  // The full CSV, split into fields.
+  const fs::path full = dir / "full.csv";
+  ASSERT_EQ(
+      run_cli("estimate " + mesh.string() + " --method lhf-2 --output " + full.string()).exit_code,
+      0);
+  const auto fields = [](const std::string& text) {
+    std::vector<std::vector<std::string>> rows;
+    std::size_t at = 0;
+    while (at < text.size()) {
+      const std::size_t end = text.find('\n', at);
+      std::vector<std::string> row;
+      std::size_t f = at;
+      for (;;) {
+        const std::size_t comma = std::min(text.find(',', f), end);
+        row.push_back(text.substr(f, comma - f));
+        if (comma == end) break;
+        f = comma + 1;
+      }
+      rows.push_back(row);
+      at = end + 1;
+    }
+    return rows;
+  };
+  const auto all = fields(slurp(full));
+  const auto some = fields(reference[0]);
+  ASSERT_EQ(all.size(), some.size());
+  ASSERT_EQ(some[0], (std::vector<std::string>{"vertex", "K", "H", "status", "degree", "nz"}));
+  std::vector<std::size_t> at;  // the asked columns' places in the full CSV
+  for (const std::string& name : some[0])
+    at.push_back(
+        static_cast<std::size_t>(std::find(all[0].begin(), all[0].end(), name) - all[0].begin()));
+  for (std::size_t r = 0; r < all.size(); ++r)
+    for (std::size_t c = 0; c < at.size(); ++c) ASSERT_EQ(some[r][c], all[r][at[c]]) << r;
+  // The .npy: its header, then one packed record per vertex: vertex int32, K, H float64, status,
+  // degree int32, nz float64.
+  const std::string& npy = reference[2];
+  ASSERT_GE(npy.size(), 10u);
+  EXPECT_EQ(npy.substr(0, 8), std::string("\x93NUMPY\x01\x00", 8));
+  const std::size_t header = 10 + static_cast<unsigned char>(npy[8]) +
+                             256 * static_cast<std::size_t>(static_cast<unsigned char>(npy[9]));
+  EXPECT_EQ(header % 64, 0u);
+  EXPECT_NE(npy.find("'descr': [('vertex', '<i4'), ('K', '<f8'), ('H', '<f8'), ('status', "
+                     "'<i4'), ('degree', '<i4'), ('nz', '<f8')]"),
+            std::string::npos);
+  const std::size_t rows = all.size() - 1;
+  EXPECT_NE(npy.find("'shape': (" + std::to_string(rows) + ",)"), std::string::npos);
+  constexpr std::size_t kRecord = 4 + 8 + 8 + 4 + 4 + 8;
+  ASSERT_EQ(npy.size(), header + rows * kRecord);
+  for (std::size_t r = 0; r < rows; ++r) {
+    const char* p = npy.data() + header + r * kRecord;
+    std::int32_t vertex, status, degree;
+    double K, H, nz;
+    std::memcpy(&vertex, p, 4);
+    std::memcpy(&K, p + 4, 8);
+    std::memcpy(&H, p + 12, 8);
+    std::memcpy(&status, p + 20, 4);
+    std::memcpy(&degree, p + 24, 4);
+    std::memcpy(&nz, p + 28, 8);
+    const auto& row = some[r + 1];
+    EXPECT_EQ(std::to_string(vertex), row[0]);
+    EXPECT_EQ(K, std::stod(row[1])) << r;  // the CSV text reads back to the exact double
+    EXPECT_EQ(H, std::stod(row[2])) << r;
+    EXPECT_EQ(to_string(static_cast<VertexStatus>(status)), row[3]);
+    EXPECT_EQ(std::to_string(degree), row[4]);
+    EXPECT_EQ(nz, std::stod(row[5])) << r;
+  }
+  // Unknown or repeated names: usage errors, no file.
+  for (const std::string bad : {"H,X", "H,H", "H,"}) {
+    const fs::path out = dir / "bad.csv";
+    EXPECT_EQ(run_cli("estimate " + mesh.string() + " --method lhf-2 --columns '" + bad +
+                      "' --output " + out.string())
+                  .exit_code,
+              2)
+        << bad;
+    EXPECT_FALSE(fs::exists(out)) << bad;
+  }
   fs::remove_all(dir);
 }
 

@@ -860,3 +860,83 @@ TEST(MeshIoCorpus, SeedsReadOrRefuseCleanlyAndRegressionsStayFixed) {
 
 }  // namespace
 }  // namespace curvbench
+
+namespace curvbench {
+namespace {
+
+// The binary PLY reader copies runs of triangles a window at a time and hands the first record
+// that is not a valid triangle to the per-face path: a strip of 10000 triangles with a quad at
+// face 9000 reads as the same mesh from little- and big-endian binary and from ASCII; a bad index
+// or a truncation past the first windows is reported at its face, as on the per-face path.
+TEST_F(MeshIo, BinaryPlyTriangleRunsThenOtherFaces) {
+  constexpr int kColumns = 5002, kFaces = 10000;  // a strip 2 x kColumns, kFaces triangles
+  const int n = 2 * kColumns;
+  const auto header = [&](const char* format, int faces) {
+    return std::string("ply\nformat ") + format + " 1.0\nelement vertex " + std::to_string(n) +
+           "\nproperty double x\nproperty double y\nproperty double z\nelement face " +
+           std::to_string(faces) + "\nproperty list uchar int vertex_indices\nend_header\n";
+  };
+  // Faces: triangles (i, i + 1, i + 2) alternating orientation along the strip, except face 9000,
+  // a quad, and 9001, dropped to keep the count.
+  std::vector<std::vector<int>> faces;
+  for (int f = 0; f < kFaces; ++f) {
+    const int c = f / 2;
+    if (f == 9001) continue;
+    if (f == 9000)
+      faces.push_back({2 * c, 2 * c + 2, 2 * c + 3, 2 * c + 1});
+    else if (f % 2 == 0)
+      faces.push_back({2 * c, 2 * c + 2, 2 * c + 1});
+    else
+      faces.push_back({2 * c + 1, 2 * c + 2, 2 * c + 3});
+  }
+  const int count = static_cast<int>(faces.size());
+  Bytes le, be;
+  std::string ascii = header("ascii", count);
+  le.s = header("binary_little_endian", count);
+  be.s = header("binary_big_endian", count);
+  for (int v = 0; v < n; ++v) {
+    const double x = v / 2, y = v % 2, z = 0.25 * (v % 7);
+    le.le(x).le(y).le(z);
+    be.be(x).be(y).be(z);
+    ascii += std::to_string(v / 2) + " " + std::to_string(v % 2) + " " +
+             std::to_string(0.25 * (v % 7)) + "\n";
+  }
+  for (const auto& face : faces) {
+    le.le(static_cast<std::uint8_t>(face.size()));
+    be.be(static_cast<std::uint8_t>(face.size()));
+    ascii += std::to_string(face.size());
+    for (const int i : face) {
+      le.le(static_cast<std::int32_t>(i));
+      be.be(static_cast<std::int32_t>(i));
+      ascii += " " + std::to_string(i);
+    }
+    ascii += "\n";
+  }
+  const Mesh a = read_mesh(file("a.ply", ascii));
+  const Mesh l = read_mesh(file("le.ply", le.s));
+  const Mesh b = read_mesh(file("be.ply", be.s));
+  EXPECT_EQ(a.num_faces(), kFaces);  // the quad fan-triangulated
+  EXPECT_EQ(l.faces(), a.faces());
+  EXPECT_EQ(b.faces(), a.faces());
+  EXPECT_EQ(l.vertices(), a.vertices());
+  EXPECT_EQ(b.vertices(), a.vertices());
+
+  // A bad index in face 7000, and a file cut in face 8000 (after the first windows).
+  const std::size_t body = header("binary_little_endian", count).size() + 24 * std::size_t(n);
+  std::string bad = le.s;
+  const std::int32_t out_of_range = n + 5, negative = -7;
+  std::memcpy(bad.data() + body + 13 * 7000 + 5, &out_of_range, 4);
+  std::string neg = le.s;
+  std::memcpy(neg.data() + body + 13 * 7000 + 9, &negative, 4);
+  expect_errors({
+      {"range.ply", bad, {"face 7000 references vertex " + std::to_string(n + 5)}},
+      {"negative.ply", neg, {"face 7000 has a negative vertex index -7"}},
+  });
+  std::string cut = le.s.substr(0, body + 13 * 8000 + 6);
+  cut.replace(cut.find("element face " + std::to_string(count)),
+              std::string("element face " + std::to_string(count)).size(), "element face 8001");
+  expect_errors({{"cut.ply", cut, {"truncated PLY data", "face 8000 of 8001"}}});
+}
+
+}  // namespace
+}  // namespace curvbench

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -105,6 +106,56 @@ TEST(Orientation, TwoComponentsEachOutward) {
   EXPECT_EQ(r.patches, 2);
   EXPECT_EQ(r.closed_patches, 2);
   EXPECT_NEAR(r.mesh.signed_volume(), a.signed_volume() + b.signed_volume(), 1e-12);
+}
+
+// A consistently oriented mesh takes the union-find path (no walk), a mesh with one inconsistent
+// edge the walk: on the same patches they must agree on every face, patch count and flag. Three
+// patches, interleaved in face order so that a patch's lowest face is not its first: an outward
+// torus, an inside-out torus (reversed as a whole) and an open strip (kept) that touches the
+// first torus at vertex 0 (a vertex of two patches: undetermined).
+TEST(Orientation, ConsistentPathAgreesWithTheWalk) {
+  const Mesh a = torus(10, 5), b = torus(8, 6, Vec3(5, 0, 0));
+  const int na = a.num_vertices(), nb = b.num_vertices();
+  VertexMatrix V(na + nb + 6, 3);
+  V << a.vertices(), b.vertices(), VertexMatrix::Zero(6, 3);
+  for (int i = 0; i < 3; ++i) {
+    V.row(na + nb + 2 * i) << 10 + i, 0, 0;
+    V.row(na + nb + 2 * i + 1) << 10 + i, 1, 0;
+  }
+  std::vector<std::array<int, 3>> faces;
+  const int fa = a.num_faces(), fb = b.num_faces();
+  for (int f = 0; f < std::max(fa, fb); ++f) {
+    if (f < fb) faces.push_back({b.faces()(f, 0) + na, b.faces()(f, 2) + na, b.faces()(f, 1) + na});
+    if (f < fa) faces.push_back({a.faces()(f, 0), a.faces()(f, 1), a.faces()(f, 2)});
+  }
+  const int s = na + nb;
+  for (int i = 0; i < 2; ++i) {
+    faces.push_back({s + 2 * i, s + 2 * i + 2, s + 2 * i + 3});
+    faces.push_back({s + 2 * i, s + 2 * i + 3, s + 2 * i + 1});
+  }
+  faces.push_back({0, s + 5, s + 4});  // the strip's last face, at vertex 0 of the first torus
+  FaceMatrix F(static_cast<Eigen::Index>(faces.size()), 3);
+  for (size_t f = 0; f < faces.size(); ++f)
+    F.row(static_cast<Eigen::Index>(f)) << faces[f][0], faces[f][1], faces[f][2];
+  const Mesh consistent(V, F);
+  ASSERT_TRUE(consistent.is_consistently_oriented());
+  FaceMatrix G = F;
+  std::swap(G(1, 1), G(1, 2));  // one face of the outward torus
+  const Mesh walked(V, G);
+  ASSERT_FALSE(walked.is_consistently_oriented());
+  const OrientationResult x = orient_mesh(consistent), y = orient_mesh(walked);
+  EXPECT_EQ(x.patches, 3);
+  EXPECT_EQ(x.patches, y.patches);
+  EXPECT_EQ(x.closed_patches, 2);
+  EXPECT_EQ(x.closed_patches, y.closed_patches);
+  EXPECT_EQ(x.faces_flipped, fb);
+  EXPECT_EQ(y.faces_flipped, fb + 1);
+  EXPECT_EQ(x.mesh.faces(), y.mesh.faces());
+  EXPECT_EQ(x.sign_undetermined, y.sign_undetermined);
+  EXPECT_EQ(x.vertices_undetermined, 1);
+  EXPECT_EQ(x.sign_undetermined[0], 1);
+  EXPECT_TRUE(x.mesh.is_consistently_oriented());
+  EXPECT_NEAR(x.mesh.signed_volume(), a.signed_volume() + b.signed_volume(), 1e-12);
 }
 
 TEST(Orientation, OpenPatchKeepsTheMajorityOrientation) {
