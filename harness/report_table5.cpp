@@ -313,6 +313,32 @@ void end_to_end_table(report::Section& s, const std::string& path) {
   s.table(std::move(tab));
 }
 
+// The limits table (bench/bench_limits.cpp): each stage of `curvbench estimate` at 1.44 million
+// vertices against the bound this machine's hardware sets on it.
+void limits_table(report::Section& s, const std::string& path) {
+  if (!fs::exists(path)) return;
+  const CsvTable t = read_csv_table(path);
+  s.heading("How far each stage is from the hardware's limit")
+      .text(
+          "`curvbench estimate` at 1.44 million vertices, one thread, each stage measured in "
+          "process (the minimum of 3) against the bound this machine sets on it, measured "
+          "alongside: a plain copy or write of the same bytes, memory and cache bandwidth, the "
+          "peak vector multiply-add rate (docs/performance.md). Data: `limits.csv`.");
+  report::Table tab;
+  tab.id = "limits";
+  tab.columns = {"stage", "measured (s)", "bound (s)", "bound", "measured / bound", "notes"};
+  tab.numeric = {false, true, true, false, true, false};
+  const size_t cs = t.col("stage"), cm = t.col("measured_seconds"), cb = t.col("bound_seconds"),
+               ck = t.col("bound_kind"), cr = t.col("ratio"), cn = t.col("notes");
+  for (size_t i = 0; i < t.rows.size(); ++i) {
+    const double m = t.number(i, cm), b = t.number(i, cb), r = t.number(i, cr);
+    tab.add({t.text(i, cs), report::Cell::number(m, fmt("%.3f", m)),
+             report::Cell::number(b, fmt("%.3f", b)), t.text(i, ck),
+             report::Cell::number(r, fmt("%.1f", r)), t.text(i, cn)});
+  }
+  s.table(std::move(tab));
+}
+
 }  // namespace
 
 report::Section table5_section(const std::string& results_dir) {
@@ -340,6 +366,7 @@ report::Section table5_section(const std::string& results_dir) {
   ratio_table(s, t);
   solver_table(s, rows, t);
   scaling_table(s, rows, read_timings(results_dir + "/table5_scaling.csv"));
+  limits_table(s, results_dir + "/limits.csv");
   end_to_end_table(s, results_dir + "/end_to_end.csv");
   return s;
 }

@@ -7,6 +7,8 @@
 //                               rows; its comment line "# machine: ..." names CPU, compiler and
 //                               build (bench/bench_estimators.cpp)
 //   results/table5_scaling.csv  the same columns: LHF-2 on torus-structured levels 5-6
+//   results/limits.csv          stage,measured_seconds,bound_seconds,bound_kind,ratio,notes: each
+//                               stage against the hardware's bound (bench/bench_limits.cpp)
 //   results/end_to_end.csv      threads,read_s,orientation_s,fit_s,write_s,wall_s,peak_rss_mb:
 //                               `curvbench estimate` on 1.44 million vertices (tools/bench.sh)
 //

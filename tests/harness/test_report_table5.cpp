@@ -50,6 +50,9 @@ TEST(ReportTable5, EverySubtableFromTheCsvs) {
   std::ofstream(dir / "end_to_end.csv")
       << "# test\nthreads,read_s,orientation_s,fit_s,write_s,wall_s,peak_rss_mb\n"
          "1,0.219,0.136,0.847,0.572,1.78,267\n";
+  std::ofstream(dir / "limits.csv")
+      << "# test\nstage,measured_seconds,bound_seconds,bound_kind,ratio,notes\n"
+         "orientation,0.030,0.015,one pass over the edges,2,consistent mesh\n";
   const report::Section s = table5_section(dir.string());
   EXPECT_EQ(s.id, "table5");
   const std::string md = report::to_markdown(s);
@@ -101,6 +104,14 @@ TEST(ReportTable5, EverySubtableFromTheCsvs) {
   EXPECT_EQ(e2e->rows[0][5].text, "0:01.78");
   EXPECT_DOUBLE_EQ(e2e->rows[0][5].value, 1.78);
   EXPECT_EQ(e2e->rows[0][6].value, 267);
+
+  // The limits table: each stage against its bound.
+  const report::Table* limits = table_of(s, "limits");
+  ASSERT_NE(limits, nullptr);
+  ASSERT_EQ(limits->rows.size(), 1u);
+  EXPECT_EQ(limits->rows[0][0].text, "orientation");
+  EXPECT_DOUBLE_EQ(limits->rows[0][1].value, 0.030);
+  EXPECT_DOUBLE_EQ(limits->rows[0][4].value, 2.0);
 
   // Without the optional files their subtables are left out; without the timings, a sentence.
   fs::remove(dir / "end_to_end.csv");
