@@ -18,4 +18,11 @@ double parse_double(const std::string& s, const std::string& where);
 /// Parses the whole token as an integer. Throws InputError "<where>: '<s>' is not an integer".
 long long parse_integer(const std::string& s, const std::string& where);
 
+/// A JSON string literal: quoted, with '"', '\\' and control characters escaped, and "</" as
+/// "<\/" so that it may sit inside an HTML <script> element.
+std::string json_string(const std::string& s);
+
+/// A JSON number in its shortest round-trip form ("0.1", "1e-300"), or null when not finite.
+std::string json_number(double x);
+
 }  // namespace curvbench

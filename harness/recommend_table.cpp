@@ -38,25 +38,6 @@ std::string seconds_text(double s) {
   return buf;
 }
 
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (static_cast<unsigned char>(c) < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", c);
-      out += buf;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
-
-std::string json_number(double x) {
-  return std::isfinite(x) ? format_double(x) : std::string("null");
-}
-
 // The columns the advice reads; the others (best_method, ...) are the same facts spelled out.
 constexpr const char* kColumns[] = {
     "quality",        "sigma_over_h",    "status",       "experiment",

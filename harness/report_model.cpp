@@ -1,8 +1,9 @@
 #include "harness/report_model.h"
 
-#include <charconv>
 #include <cstdio>
 #include <sstream>
+
+#include "core/text.h"
 
 namespace curvbench::report {
 
@@ -164,46 +165,6 @@ std::string escape_html(const std::string& s) {
     }
   }
   return out;
-}
-
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (size_t i = 0; i < s.size(); ++i) {
-    const char c = s[i];
-    switch (c) {
-      case '"':
-        out += "\\\"";
-        break;
-      case '\\':
-        out += "\\\\";
-        break;
-      case '\n':
-        out += "\\n";
-        break;
-      case '\t':
-        out += "\\t";
-        break;
-      case '/':
-        out += i > 0 && s[i - 1] == '<' ? "\\/" : "/";
-        break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\u%04x", c);
-          out += buf;
-        } else {
-          out += c;
-        }
-    }
-  }
-  return out + "\"";
-}
-
-std::string json_number(double x) {
-  if (!std::isfinite(x)) return "null";
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, x);
-  return std::string(buf, r.ptr);
 }
 
 std::string markdown_to_html(const std::string& markdown, std::string (*link)(const std::string&)) {

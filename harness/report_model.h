@@ -13,6 +13,8 @@
 #include <variant>
 #include <vector>
 
+#include "core/text.h"
+
 namespace curvbench::report {
 
 /// One table cell: its text (inline markdown) and, when it shows a number, the number (sorting
@@ -145,9 +147,8 @@ std::string markdown_to_html(const std::string& markdown,
 
 /// Text escaped for HTML element content and attribute values.
 std::string escape_html(const std::string& s);
-/// A JSON string literal (quoted, escaped; "</" written as "<\/" so it can sit in a <script>).
-std::string json_string(const std::string& s);
-/// A JSON number, or null when not finite (shortest round-trip form).
-std::string json_number(double x);
+// JSON strings and numbers: core/text.h json_string, json_number.
+using curvbench::json_number;
+using curvbench::json_string;
 
 }  // namespace curvbench::report

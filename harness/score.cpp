@@ -246,20 +246,7 @@ ScoreResult score_files(const std::string& mesh_path, const std::string& estimat
 std::string score_json(const ScoreResult& r, const std::string& mesh_path,
                        const std::string& estimates_path) {
   auto num = [](double x) { return std::isfinite(x) ? format_double(x) : std::string("null"); };
-  auto str = [](const std::string& s) {
-    std::string out = "\"";
-    for (char c : s) {
-      if (c == '"' || c == '\\') out += '\\';
-      if (static_cast<unsigned char>(c) < 0x20) {
-        char buf[8];
-        std::snprintf(buf, sizeof buf, "\\u%04x", c);
-        out += buf;
-      } else {
-        out += c;
-      }
-    }
-    return out + "\"";
-  };
+  const auto str = [](const std::string& s) { return json_string(s); };
   std::string j = "{\"mesh\": " + str(mesh_path) + ", \"estimates\": " + str(estimates_path) +
                   ", \"vertex_set\": " + str(to_string(r.vertex_set)) +
                   ", \"vertices\": " + std::to_string(r.vertices_in_set) + ", \"errors\": [";
