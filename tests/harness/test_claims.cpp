@@ -995,7 +995,7 @@ TEST(ClaimCounts, BandsChoicesAndIncompatiblePairs) {
       alternative("iso-levels", "16-128", adopted, {{"E2", rep}, {"B5", no}}),
       alternative("noisy-rings", "quadratic", adopted, {{"E4", rep}}),
       alternative("noise-alpha", "uniform-0.1", adopted, {{"E5", rep}, {"E9", no}}),
-      alternative("noise-alpha", "gaussian-0.033", adopted, {{"E5", rep}, {"E9", no}})};
+      alternative("noise-alpha", "gaussian-0.1", adopted, {{"E5", rep}, {"E9", no}})};
   const ClaimCounts n = claim_counts(adopted, alts);
   EXPECT_EQ(n.total, 12);
   EXPECT_EQ(n.reread_bands, 8);
@@ -1022,8 +1022,8 @@ TEST(ClaimCounts, BandsChoicesAndIncompatiblePairs) {
   EXPECT_EQ(n.incompatible[2].a, "E5");
   EXPECT_EQ(n.incompatible[2].b, "E9");
   EXPECT_EQ(n.incompatible[2].why,
-            "E5 needs noise-alpha = uniform-0.1 or gaussian-0.033; E9 needs noise-alpha = "
-            "gaussian-0.1");
+            "E5 needs noise-alpha = uniform-0.1 or gaussian-0.1; E9 needs noise-alpha = "
+            "gaussian-0.033");
 
   const std::string md = claims_markdown(adopted, "test", alts);
   EXPECT_NE(md.find("**Summary:** 7 of 12 claims reproduced under the bands fixed in advance and "
@@ -1033,8 +1033,8 @@ TEST(ClaimCounts, BandsChoicesAndIncompatiblePairs) {
                     "reproduces together."),
             std::string::npos)
       << md.substr(0, 2000);
-  EXPECT_NE(md.find("  - E5 and E9: E5 needs noise-alpha = uniform-0.1 or gaussian-0.033; E9 "
-                    "needs noise-alpha = gaussian-0.1.\n"),
+  EXPECT_NE(md.find("  - E5 and E9: E5 needs noise-alpha = uniform-0.1 or gaussian-0.1; E9 "
+                    "needs noise-alpha = gaussian-0.033.\n"),
             std::string::npos);
   EXPECT_EQ(md.find("some reading"), std::string::npos);
 }
