@@ -62,6 +62,7 @@ bench: build
 
 experiments-deep: build
 	@$(BUILD)/curvbench run --all --experiments-dir experiments/deep --output results/deep \
+	  --table4-max 16 \
 	  --no-readings $(RUN_ARGS)
 	@$(BUILD)/curvbench run --claims-only --output results
 
