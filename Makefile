@@ -30,7 +30,12 @@ FUZZ_SECONDS ?= 60
 FUZZ_CXX ?= clang++
 SLURM_EXPERIMENTS ?= tests/cluster/experiments
 
-.PHONY: site sweeps all deps configure build test experiments bench clean format test-sanitize fuzz install realmeshes \
+# `make experiments-deep` (opt-in, not part of `make experiments`' time): levels 5-6 of the bump
+# for claims D5 and D6 (experiments/deep/: LHF-4 and LSCM-4, all vertices and the boundary ring,
+# three bump meshes, levels 1-6; level 6 has 263169 vertices) -> results/deep/. CLAIMS.md's D5 and
+# D6 Why lines read the rates from level 5 to 6 from there when present (re-render with
+# `curvbench run --claims-only --output results`); without it they say where they would come from.
+.PHONY: experiments-deep site sweeps all deps configure build test experiments bench clean format test-sanitize fuzz install realmeshes \
 	test-slurm
 
 all: build
@@ -55,6 +60,12 @@ experiments: build
 
 bench: build
 	@bash tools/bench.sh $(BUILD)
+
+experiments-deep: build
+	@$(BUILD)/curvbench run --all --experiments-dir experiments/deep --output results/deep \
+	  --table4-max 16 \
+	  --no-readings $(RUN_ARGS)
+	@$(BUILD)/curvbench run --claims-only --output results
 
 # The results site (results/site/index.html) re-rendered from the committed CSVs in seconds,
 # computing nothing (`curvbench report --site-only`); `make experiments` writes it too.

@@ -40,6 +40,7 @@ int main(int argc, char** argv) {
   add(&cli::add_methods_command);
   add(&cli::add_recommend_command);
   add(&cli::add_report_command);
+  add(&cli::add_safeguard_command);
 
   try {
     app.parse(argc, argv);

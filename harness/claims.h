@@ -142,7 +142,7 @@ struct ReadingPick {
 
 /// Two claims that no one consistent choice of readings reproduces together, each reproduced
 /// under some choice; `why` names the choices each needs, e.g. "E5 needs noise-alpha =
-/// uniform-0.1 or gaussian-0.033; E9 needs noise-alpha = gaussian-0.1".
+/// uniform-0.1 or gaussian-0.1; E9 needs noise-alpha = gaussian-0.033".
 struct IncompatiblePair {
   std::string a, b, why;
   /// false when a choice that picks two alternatives touching one of the claims (never run

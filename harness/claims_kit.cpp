@@ -279,7 +279,7 @@ std::vector<ErrorRow> error_rows_in(const std::string& dir) {
 
 }  // namespace
 
-Data::Data(const std::string& dir, const std::string& overlay) {
+Data::Data(const std::string& dir, const std::string& overlay) : dir_(dir) {
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) return;
   rows_ = error_rows_in(dir);

@@ -140,6 +140,11 @@ class Data {
 
   std::optional<CsvTable> table2, table4, table5;
 
+  /// The results folder read (the base, not the overlay): where the diagnostics that are not
+  /// error CSVs of this folder are looked for (results/deep/, results/readings/, the firing CSV
+  /// of the safeguard).
+  const std::string& dir() const { return dir_; }
+
  private:
   void build_series();
   void build_timing();
@@ -148,6 +153,7 @@ class Data {
   std::vector<Series> series_;
   std::map<std::string, TimingSeries> timing_;
   std::string timing_family_;
+  std::string dir_;
 };
 
 // ---- per-level values and the check kinds -----------------------------------------------------

@@ -3,9 +3,14 @@
 // (degrees 3, 4) and fig13-14 (boundary vertices).
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <map>
 #include <optional>
+#include <set>
 
 #include "harness/claims_kit.h"
+#include "harness/safeguard_fires.h"
+#include "meshgen/bump_grid.h"
 
 namespace curvbench::claims {
 namespace {
@@ -130,6 +135,155 @@ std::vector<WhyFinding> why_d2(const Data& d, const std::vector<std::string>& to
                      join(torus_rates, ", ") +
                      ", below the symmetric-stencil rate 2 themselves, so a bump whose interior "
                      "is as symmetric as the 4-8 mesh's ends level with them");
+}
+
+// ---- the safeguard (the reading `safeguard`, docs/claims.md) and the deep levels ----------------
+
+constexpr const char* kFiresCsv = "diag-safeguard-fires.csv";
+constexpr const char* kDeepFolder = "deep";
+constexpr const char* kDeepD5 = "diag-deep-d5-level6";
+constexpr const char* kDeepD6 = "diag-deep-d6-level6";
+
+// The error rows of a results subfolder (a reading's run, results/deep/), or none.
+std::optional<Data> folder_data(const Data& d, const std::string& sub) {
+  std::error_code ec;
+  const std::string path = d.dir() + "/" + sub;
+  if (d.dir().empty() || !std::filesystem::is_directory(path, ec)) return std::nullopt;
+  return Data(path);
+}
+
+// The series restricted to levels [a, b].
+Series levels_of(const Series& s, int a, int b) {
+  Series out = s;
+  std::erase_if(out.points, [&](const Point& p) { return p.level < a || p.level > b; });
+  return out;
+}
+
+// "LSCM-4 H 3.02, normal 4.10" on bump-48 over the levels of `s`'s source under each safeguard
+// choice: the adopted from d, the alternatives from results/readings/safeguard=<choice>/ (or "not
+// run"). `series` picks the series of a Data.
+template <class SeriesOf>
+std::string safeguard_rates(const Data& d, const std::vector<std::string>& methods,
+                            SeriesOf series) {
+  std::vector<std::string> parts;
+  for (const char* choice : {"condition-1e-3", "rjj-only", "1e-8"}) {
+    const bool adopted = std::string(choice) == "condition-1e-3";
+    const std::string folder = std::string("readings/safeguard=") + choice;
+    std::optional<Data> alt;
+    if (!adopted) alt = folder_data(d, folder);
+    const Data* src = adopted ? &d : alt ? &*alt : nullptr;
+    std::vector<std::string> rates;
+    for (const std::string& m : methods)
+      for (const char* q : {"H", "normal"}) {
+        const Series* s = src ? series(*src, m, q) : nullptr;
+        rates.push_back(m + " " + q + " " + (s ? f2(s->rate()) : std::string("n/a")));
+      }
+    parts.push_back(
+        std::string(choice) + (adopted ? " (adopted)" : "") + ": " +
+        (src ? join(rates, ", ") : "not run here (results/" + folder + "/, make experiments)"));
+  }
+  return join(parts, "; ");
+}
+
+// Where the condition test cuts a stencil (results/diag-safeguard-fires.csv) for `method` on
+// bump-48: per level the vertices cut and their condition numbers, whether the cut points agree
+// with the coarser level's on the points both levels have (the 4-8 grids nest), and the runs of
+// consecutive levels over which they do (the stencil is one and the same). Empty without the CSV.
+struct Fires {
+  std::string text;
+  std::vector<std::pair<int, int>> same_runs;  ///< [first, last] level, >= 2 levels each
+};
+Fires safeguard_fires_on_bump48(const Data& d, const std::string& method) {
+  Fires out;
+  std::error_code ec;
+  const std::string path = d.dir() + "/" + kFiresCsv;
+  if (d.dir().empty() || !std::filesystem::exists(path, ec)) return out;
+  std::map<int, std::set<std::pair<long, long>>> cut;  // level -> grid points (i, j) at level 6
+  std::map<int, std::vector<double>> condition;
+  std::map<int, int> boundary;
+  for (const SafeguardFire& f : read_safeguard_fires_csv(path)) {
+    if (f.family != kBump48 || upper(f.method) != upper(method)) continue;
+    cut[f.level];
+    if (f.vertex < 0) continue;
+    const double n = bump_grid_size(max_bump_level());  // finest grid: exact integer indices
+    cut[f.level].insert({std::lround(f.x * n), std::lround(f.y * n)});
+    condition[f.level].push_back(f.condition);
+    boundary[f.level] += f.boundary;
+  }
+  if (cut.empty()) return out;
+  std::vector<std::string> levels;
+  std::vector<bool> same_as_previous;
+  int previous = -1;
+  for (const auto& [level, points] : cut) {
+    const auto& c = condition[level];
+    std::string line = "level " + std::to_string(level) + ": " + std::to_string(points.size());
+    if (!c.empty())
+      line += " (" + std::to_string(boundary[level]) + " on the boundary; condition " +
+              f2(*std::min_element(c.begin(), c.end())) + "-" +
+              f2(*std::max_element(c.begin(), c.end())) + ")";
+    bool same = false;
+    if (previous == level - 1) {
+      // The points of the coarser level: a multiple of its grid step on the finest grid.
+      const long step = bump_grid_size(max_bump_level()) / bump_grid_size(level - 1);
+      std::set<std::pair<long, long>> here;
+      for (const auto& p : points)
+        if (p.first % step == 0 && p.second % step == 0) here.insert(p);
+      same = here == cut.at(level - 1);
+      if (!same) line += ", not cut alike at the points of level " + std::to_string(level - 1);
+    }
+    same_as_previous.push_back(same);
+    levels.push_back(line);
+    previous = level;
+  }
+  // Runs of levels whose consecutive pairs agree.
+  const std::vector<int> ls = [&] {
+    std::vector<int> v;
+    for (const auto& [level, points] : cut) v.push_back(level);
+    return v;
+  }();
+  size_t start = 0;
+  for (size_t i = 1; i <= ls.size(); ++i)
+    if (i == ls.size() || !same_as_previous[i]) {
+      if (i - 1 > start) out.same_runs.push_back({ls[start], ls[i - 1]});
+      start = i;
+    }
+  out.text = "the condition test cuts the first stencil of " + method + " on bump-48 at " +
+             join(levels, "; ") + " (" + kFiresCsv + ")";
+  return out;
+}
+
+// The rates of `series` over each run of levels where the stencils are the same, or "".
+template <class SeriesOf>
+std::string same_stencil_rates(const Fires& fires, const std::string& method, SeriesOf series) {
+  std::vector<std::string> parts;
+  for (const auto& [a, b] : fires.same_runs)
+    for (const char* q : {"H", "normal"})
+      if (const Series* s = series(method, q)) {
+        const Series part = levels_of(*s, a, b);
+        if (part.points.size() >= 2)
+          parts.push_back(q + (" over levels " + std::to_string(a) + "-" + std::to_string(b)) +
+                          " " + f2(part.rate()));
+      }
+  return join(parts, ", ");
+}
+
+// The level-to-level rate from level 5 to 6 of the deep run's series (results/deep/), or none.
+std::optional<double> deep_rate(const std::optional<Data>& deep, const std::string& experiment,
+                                const std::string& family, const std::string& method, const char* q,
+                                const std::string& vertex_set) {
+  if (!deep) return std::nullopt;
+  Check scratch;
+  const Series* s =
+      deep->find(scratch, query(experiment, family, method, q, "L2", "none", 0.0, vertex_set));
+  if (!s || s->experiment != experiment || !s->at(5) || !s->at(6)) return std::nullopt;
+  return levels_of(*s, 5, 6).rate();
+}
+
+// "where the deep levels would come from" when results/deep/ lacks them.
+std::string deep_absent(const std::string& experiment) {
+  return "levels 5-6 of " + experiment +
+         " are not in results/deep/ (make experiments-deep "
+         "writes them, experiments/deep/; opt-in, level 6 has 263169 vertices)";
 }
 
 // One diagnostic of D5: a cause when the rate gap holds on every bump under it (D5's check is
@@ -269,16 +423,73 @@ D5Finding d5_levels(const Data& d, const Band& band) {
   return f;
 }
 
-// D5's Why line from its three diagnostics.
+// The gap from level 5 to 6 (make experiments-deep, results/deep/): a cause if it holds on every
+// bump there; the LSCM-4 and LHF-4 H rates of the three bump meshes with it.
+D5Finding d5_deep(const Data& d, const Band& band) {
+  const std::optional<Data> deep = folder_data(d, kDeepFolder);
+  auto rate = [&](const std::string& fam, const std::string& m, const char* q) {
+    return deep_rate(deep, kDeepD5, fam, m, q, "all");
+  };
+  D5Finding f = d5_gaps(band, "LSCM-4", rate, true);
+  if (f.text.empty()) return {false, "two levels finer: " + deep_absent(kDeepD5), {}, false};
+  std::vector<std::string> rates;
+  for (const char* fam : {"bump-irregular", "bump-48", "bump-unstructured"})
+    for (const char* m : {"LSCM-4", "LHF-4"})
+      if (const auto r = rate(fam, m, "H"))
+        rates.push_back(std::string(fam) + " " + m + " " + f2(*r));
+  f.text = "two levels finer than the paper's four (make experiments-deep, results/deep/" +
+           std::string(kDeepD5) + ".csv), the H rates from level 5 to 6: " + join(rates, ", ") +
+           "; rate(LHF-4) - rate(LSCM-4) from level 5 to 6 is " + f.text;
+  return f;
+}
+
+// The safeguard on bump-48 (docs/claims.md, "The safeguard of the QR"): LHF-4's and LSCM-4's rates
+// over levels 1-4 (fig11-12) under the three safeguards, where the condition test cuts a stencil,
+// and the rates over the levels whose stencils are the same.
+std::optional<WhyFinding> d5_safeguard(const Data& d) {
+  const std::string rates = safeguard_rates(
+      d, {"LHF-4", "LSCM-4"}, [](const Data& src, const std::string& m, const char* q) {
+        Check scratch;
+        return bump(src, scratch, kBump48, m, q, "L2");
+      });
+  bool located = true;  // localised where the firing CSV says which levels mix stencils
+  std::string text =
+      "the safeguard of the QR (the reading safeguard, docs/claims.md): bump-48 "
+      "L2 rates over levels 1-4 (fig11-12) under " +
+      rates;
+  for (const char* m : {"LSCM-4", "LHF-4"}) {
+    const Fires fires = safeguard_fires_on_bump48(d, m);
+    if (fires.text.empty()) {
+      text += std::string("; where the condition test cuts a stencil is not here (") + kFiresCsv +
+              ", make experiments)";
+      located = false;
+      break;
+    }
+    text += "; " + fires.text;
+    const std::string same =
+        same_stencil_rates(fires, m, [&](const std::string& method, const char* q) {
+          Check scratch;
+          return bump(d, scratch, kBump48, method, q, "L2");
+        });
+    text += same.empty() ? ": no two consecutive levels with the same stencils, so every rate over "
+                           "levels 1-4 mixes stencils"
+                         : ": the rates over the levels with the same stencils: " + same;
+  }
+  return WhyFinding{located ? CauseKind::localised : CauseKind::tried, text};
+}
+
+// D5's Why line from its diagnostics.
 std::vector<WhyFinding> why_d5(const Data& d, const Band& band) {
   std::vector<WhyFinding> out;
-  for (const D5Finding& f : {d5_levels(d, band), d5_interior(d, band), d5_solver(d, band)}) {
+  for (const D5Finding& f :
+       {d5_levels(d, band), d5_deep(d, band), d5_interior(d, band), d5_solver(d, band)}) {
     if (f.text.empty()) continue;
     out.push_back({f.cause       ? CauseKind::cause_removed_passes
                    : f.localised ? CauseKind::localised
                                  : CauseKind::tried,
                    f.text});
   }
+  if (auto f = d5_safeguard(d)) out.push_back(std::move(*f));
   return out;
 }
 
@@ -347,6 +558,85 @@ std::vector<WhyFinding> why_d6_levels(const Data& d, const Band& normal_offset,
   if (finer.verdict() == Verdict::reproduced)
     return finding(CauseKind::cause_removed_passes, "the levels: " + numbers);
   return finding(CauseKind::tried, numbers + (open.empty() ? "" : ": " + join(open, "; ")));
+}
+
+// D6 two levels finer: the degree-4 boundary-ring rates from level 5 to 6 (results/deep/)
+// against D6's bands; tried (D6's check reads degrees 2 and 3 too), or where they would come
+// from.
+WhyFinding why_d6_deep(const Data& d, const Band& normal_offset, const Band& curvature_offset) {
+  const std::optional<Data> deep = folder_data(d, kDeepFolder);
+  std::vector<std::string> parts;
+  int in_band = 0, total = 0;
+  for (const char* fam : {"bump-irregular", "bump-48", "bump-unstructured"})
+    for (const char* m : {"LHF-4", "LSCM-4"})
+      for (const char* q : {"normal", "H", "K"}) {
+        const auto r = deep_rate(deep, kDeepD6, fam, m, q, "boundary-ring");
+        if (!r) continue;
+        const Band& off = std::string(q) == "normal" ? normal_offset : curvature_offset;
+        const bool ok = Band::in(4 + off.lo, 4 + off.hi, 2).holds(*r);
+        in_band += ok;
+        ++total;
+        parts.push_back(std::string(fam) + " " + m + " " + q + " " + f2(*r) + (ok ? "" : " (out)"));
+      }
+  if (total == 0) return {CauseKind::tried, "two levels finer: " + deep_absent(kDeepD6)};
+  return {CauseKind::tried,
+          "two levels finer than the paper's four (make experiments-deep, results/deep/" +
+              std::string(kDeepD6) + ".csv), the degree-4 boundary-ring rates from level 5 to 6: " +
+              join(parts, ", ") + "; " + std::to_string(in_band) + " of " + std::to_string(total) +
+              " in D6's bands (normals d - " + num(-normal_offset.lo) + " to d + " +
+              num(normal_offset.hi) + ", H and K d - " + num(-curvature_offset.lo) + " to d - " +
+              num(-curvature_offset.hi) + ")"};
+}
+
+// D6 and the safeguard on the 4-8 mesh's boundary (localised): the degree-4 boundary-ring rates
+// over levels 1-4 (fig13-14) under the three safeguards, where the condition test cuts a stencil,
+// and the boundary-ring rates over the levels whose stencils are the same.
+std::optional<WhyFinding> why_d6_safeguard(const Data& d) {
+  const auto ring_of = [](const Data& src, const std::string& m, const char* q) {
+    Check scratch;
+    return boundary_ring(src, scratch, kBump48, m, q);
+  };
+  Check probe;
+  if (!boundary_ring(d, probe, kBump48, "LHF-4", "H")) return std::nullopt;
+  bool located = true;  // localised where the firing CSV says which levels mix stencils
+  std::string text =
+      "on bump-48, the safeguard on the degree-4 stencils of the 4-8 mesh's boundary, which lie "
+      "on four grid lines (docs/claims.md): boundary-ring L2 rates over levels 1-4 (fig13-14) "
+      "under " +
+      safeguard_rates(d, {"LHF-4", "LSCM-4"}, ring_of);
+  for (const char* m : {"LHF-4", "LSCM-4"}) {
+    const Fires fires = safeguard_fires_on_bump48(d, m);
+    if (fires.text.empty()) {
+      text += std::string("; where the condition test cuts a stencil is not here (") + kFiresCsv +
+              ", make experiments)";
+      located = false;
+      break;
+    }
+    text += "; " + fires.text;
+    const std::string same = same_stencil_rates(
+        fires, m, [&](const std::string& method, const char* q) { return ring_of(d, method, q); });
+    text += same.empty()
+                ? ": no two consecutive levels with the same stencils, so every "
+                  "boundary-ring rate over levels 1-4 mixes stencils"
+                : ": the boundary-ring rates over the levels with the same stencils: " + same;
+  }
+  // One stencil per point over the levels: LHF-4 at 3.5 rings (diag-d6-level5's "LHF-4 3.5-ring"),
+  // whose stencils reach a fifth grid line.
+  const Fires fixed = safeguard_fires_on_bump48(d, "LHF-4 rings=3.5");
+  if (!fixed.text.empty()) {
+    const std::string same =
+        same_stencil_rates(fixed, "LHF-4 3.5-ring", [&](const std::string& method, const char* q) {
+          Check scratch;
+          return d.find(scratch,
+                        query(kLevel5Diag, kBump48, method, q, "L2", "none", 0.0, "boundary-ring"));
+        });
+    text += "; " + fixed.text +
+            (same.empty() ? std::string(": no two consecutive levels with the same stencils")
+                          : ": the boundary-ring rates of LHF-4 at 3.5 rings (diag-d6-level5) "
+                            "over the levels with the same stencils: " +
+                                same);
+  }
+  return WhyFinding{located ? CauseKind::localised : CauseKind::tried, text};
 }
 
 }  // namespace
@@ -493,26 +783,13 @@ std::vector<ClaimEntry> section5_2_claims() {
        {{"normal_rate_minus_degree", d6_normal}, {"curvature_rate_minus_degree", d6_curvature}},
        [=](const Data& d, Check& c) { claim_d6(d, c, d6_normal, d6_curvature, d6_margin, false); },
        {},
-       // One level finer (diag-d6-level5, diag-d5-level5); and how the safeguard's condition
-       // test changes the 4-8 boundary stencils of LHF-4 (docs/claims.md, "The safeguard on
-       // near-degenerate stencils").
+       // One level finer (diag-d6-level5, diag-d5-level5), two levels finer (results/deep/), and
+       // the safeguard on the 4-8 mesh's boundary stencils (docs/claims.md, "The safeguard on
+       // near-degenerate stencils", and the reading safeguard).
        [=](const Data& d) -> std::vector<WhyFinding> {
          std::vector<WhyFinding> found = why_d6_levels(d, d6_normal, d6_curvature, d6_margin);
-         std::vector<std::string> parts;
-         for (const char* q : {"normal", "H", "K"}) {
-           Check scratch;
-           const Series* s = boundary_ring(d, scratch, kBump48, "LHF-4", q);
-           if (!s) return found;
-           parts.push_back(std::string(q) + " " +
-                           s->detail().substr(s->detail().find("level-to-level")));
-         }
-         found.push_back(
-             {CauseKind::localised,
-              "on bump-48, the safeguard's condition test on the degree-4 stencils of the 4-8 "
-              "mesh's boundary, which lie on four grid lines (docs/claims.md): with the "
-              "tolerance fixed at 1e-3 it drops their quartic block from level 4 on only, so "
-              "the bump-48 LHF-4 boundary-ring rates mix two stencils (" +
-                  join(parts, "; ") + ")"});
+         found.push_back(why_d6_deep(d, d6_normal, d6_curvature));
+         if (auto f = why_d6_safeguard(d)) found.push_back(std::move(*f));
          return found;
        }});
   return out;

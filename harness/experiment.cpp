@@ -390,13 +390,16 @@ namespace {
 // lines, and the full sweeps (read with `full` only).
 constexpr const char* kDiagnosticsFolder = "diagnostics";
 constexpr const char* kSweepsFolder = "sweeps";
+// The deep levels of `make experiments-deep`: read only when named as the experiments folder.
+constexpr const char* kDeepFolder = "deep";
 }  // namespace
 
 std::string experiment_source_name(const Experiment& e) {
   const std::filesystem::path source(e.source);
   const std::string folder = source.parent_path().filename().string();
   std::string name = "experiments/";
-  if (folder == kDiagnosticsFolder || folder == kSweepsFolder) name.append(folder).append("/");
+  if (folder == kDiagnosticsFolder || folder == kSweepsFolder || folder == kDeepFolder)
+    name.append(folder).append("/");
   return name.append(source.filename().string());
 }
 

@@ -47,21 +47,35 @@ ReadingChoice family_swap(std::string name, std::string description, FamilySubst
   return {std::move(name), std::move(description), apply, std::move(swap)};
 }
 
-// The QR rank tolerance 1e-8 in place of 1e-3 for every fit of the paper's weighted least-squares
-// framework (LHF, LOP, LSCM) that does not set its own, in the experiments of the paper's
-// sections.
-constexpr double kLooseQrTolerance = 1e-8;
-bool qr_tolerance_1e_8(Experiment& e) {
+// The safeguarded QR of every fit of the paper's weighted least-squares framework (LHF, LOP,
+// LSCM) that keeps the default safeguard (neither its own tolerance nor its own condition test),
+// in the experiments of the paper's sections, changed by `set`.
+template <class Set>
+bool set_safeguard(Experiment& e, Set set) {
   if (e.section == "beyond") return false;
+  const EstimatorOptions defaults;
   bool changed = false;
   for (ExperimentMethod& m : e.methods) {
     if (m.is_external() || m.spec == kAllOperators) continue;
-    if (m.options.qr_tolerance != EstimatorOptions{}.qr_tolerance) continue;
+    if (m.options.qr_tolerance != defaults.qr_tolerance ||
+        m.options.qr_condition != defaults.qr_condition)
+      continue;
     if (!make_estimator(m.spec, m.options)->ring_fit()) continue;
-    m.options.qr_tolerance = kLooseQrTolerance;
+    set(m.options);
     changed = true;
   }
   return changed;
+}
+
+// The safeguard of the paper's time: the |R_jj| test at 1e-3 alone, no condition test.
+bool safeguard_rjj_only(Experiment& e) {
+  return set_safeguard(e, [](EstimatorOptions& o) { o.qr_condition = false; });
+}
+
+// The tolerance of the group's later codes, 1e-8, for both tests.
+constexpr double kLooseQrTolerance = 1e-8;
+bool safeguard_1e_8(Experiment& e) {
+  return set_safeguard(e, [](EstimatorOptions& o) { o.qr_tolerance = kLooseQrTolerance; });
 }
 
 // The noisy-data half ring for degree 2 only, where the experiment fits a higher degree.
@@ -75,11 +89,15 @@ bool noisy_rings_quadratic_only(Experiment& e) {
   return higher;
 }
 
+// The experiment's controlled noise (alpha h^k) drawn from `model`; false where it has none, or
+// already this model.
 std::function<bool(Experiment&)> set_noise_model(NoiseModel model) {
   return [model](Experiment& e) {
     if (std::none_of(e.meshes.begin(), e.meshes.end(),
                      [&](const ExperimentMesh& m) { return e.noise_order_of(m) > 0; }))
       return false;
+    const auto same = [&](const NoiseModel& x) { return !(x < model) && !(model < x); };
+    if (same(e.noise_model)) return false;
     e.noise_model = model;
     return true;
   };
@@ -128,14 +146,17 @@ const std::vector<Reading>& readings() {
       {"noise-alpha",
        "The distribution of the controlled noise",
        "§5.3: alpha is \"a random number between 0 and 0.1 with Gaussian distribution\"",
-       {{"gaussian-0.1", "alpha = 0.1 N(0,1)", unchanged, {}},
+       {{"gaussian-0.033",
+         "alpha = (0.1/3) N(0,1): |alpha| < 0.1 at three standard deviations",
+         unchanged,
+         {}},
+        {"gaussian-0.1",
+         "alpha = 0.1 N(0,1): 0.1 as the standard deviation (32% of |alpha| above 0.1)",
+         set_noise_model({NoiseDistribution::gaussian, 0.1}),
+         {}},
         {"uniform-0.1",
          "alpha = 0.1 U[0,1): one-signed, in [0, 0.1)",
          set_noise_model({NoiseDistribution::uniform, 0.1}),
-         {}},
-        {"gaussian-0.033",
-         "alpha = (0.1/3) N(0,1): |alpha| < 0.1 at three standard deviations",
-         set_noise_model({NoiseDistribution::gaussian, 0.1 / 3}),
          {}}}},
       {"noise-h",
        "The h of the controlled noise",
@@ -159,16 +180,26 @@ const std::vector<Reading>& readings() {
                     "torus-unstructured-minval5: the same meshes with every valence-4 vertex "
                     "removed by edge flips",
                     {"torus-unstructured", "torus-unstructured-minval5"}, false)}},
-      {"qr-tolerance",
-       "The tolerance of the safeguarded QR",
+      {"safeguard",
+       "The safeguard of the QR",
        "§4.3.2: columns are removed from the right while the Vandermonde matrix has \"a large "
-       "condition number\"; the threshold is not given",
-       {{"1e-3",
-         "tol_R = 1e-3: a degree block is dropped when its R factor is that close to "
-         "singular relative to the column scale",
+       "condition number\", and the kept fit is \"well-conditioned\"; neither the test nor its "
+       "threshold is given",
+       {{"condition-1e-3",
+         "the |R_jj| test and the condition test ||R^-1||_F <= 1/tol, tol = 1e-3 (the kept "
+         "columns' smallest singular value >= 1e-3 of the column scale)",
          unchanged,
          {}},
-        {"1e-8", "tol_R = 1e-8 for every LHF, LOP and LSCM fit", qr_tolerance_1e_8, {}}}},
+        {"rjj-only",
+         "the |R_jj| test alone, tol = 1e-3 (qr-condition=no): the safeguard of the paper's "
+         "time, for every LHF, LOP and LSCM fit",
+         safeguard_rjj_only,
+         {}},
+        {"1e-8",
+         "both tests with tol = 1e-8 (qr-tol=1e-8), the group's later codes' tolerance, for "
+         "every LHF, LOP and LSCM fit",
+         safeguard_1e_8,
+         {}}}},
       {"irregular-bump",
        "The generator of the irregular bump mesh",
        "§5.2: two bump meshes, \"irregular\" and 4-8, \"both well-shaped\" with \"variations of "

@@ -28,8 +28,8 @@ int bump_grid_size(int level);
 /// Throws UsageError unless 1 <= level <= max_bump_level(); `family` names the generator.
 void check_bump_level(const std::string& family, int level);
 constexpr int max_bump_level() {
-  return 5;
-}  // N = 256
+  return 6;
+}  // N = 512: level 6 (263169 vertices) only for `make experiments-deep`
 
 /// Triangles given counter-clockwise in xy as an m x 3 face matrix in canonical order: each row
 /// rotated (orientation kept) so that its smallest index leads, rows sorted; the faces then depend

@@ -6,6 +6,9 @@ set -euo pipefail
 BUILD=${1:-build}
 shift || true
 start=$(date +%s)
+# Where the safeguarded QR's condition test cuts a stencil (D5's and D6's Why lines read it; about
+# 20 s of CPU), before the run that writes CLAIMS.md.
+"$BUILD/curvbench" safeguard-fires --output results/diag-safeguard-fires.csv
 "$BUILD/curvbench" run --all --output results "$@"
 # README.md's headline block from the new results (tools/readme_headline.py).
 /usr/bin/python3 "$(dirname "$0")/readme_headline.py" README.md results

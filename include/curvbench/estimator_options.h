@@ -54,6 +54,9 @@ inline constexpr const char* kKernelNames[] = {"batched", "scalar"};
   X(double, qr_tolerance, "qr-tol", 1e-3, ring_fits, result, 0.0, 1e300,                           \
     "safeguarded QR tolerance: the degree is lowered where |R_kk|, or the smallest singular "     \
     "value bound 1/||R^-1||_F of the kept columns, falls below it (section 5.4)")                 \
+  X(bool, qr_condition, "qr-condition", true, ring_fits, result, 0, 1,                             \
+    "the safeguarded QR's condition test ||R^-1||_F <= 1/qr-tol (no: the |R_kk| test alone, the "  \
+    "safeguard of the paper's time)")                                                              \
   X(double, weight_power, "weight-power", -1.0, ring_fits, result, -1e300, 1e300,                  \
     "exponent p of the distance weights (|u|^2+eps)^(-p); negative: eq. (15)'s d/4")               \
   X(bool, normal_safeguard, "safeguard", true, ring_fits, result, 0, 1,                            \

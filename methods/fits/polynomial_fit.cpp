@@ -28,10 +28,12 @@ FitResult fit_polynomial(const RowVector& u, const RowVector& v, const RhsMatrix
 
   CoeffMatrix& X = scratch.X;
   if (settings.solver == LsqSolver::safeguarded_qr) {
-    const QrSolveResult qr =
-        safeguarded_qr_solve(A, B, settings.degree, ic, settings.qr_tolerance, X, scratch.scale);
+    const QrSolveResult qr = safeguarded_qr_solve(A, B, settings.degree, ic, settings.qr_tolerance,
+                                                  X, scratch.scale, settings.qr_condition);
     result.degree = qr.degree;
     result.rank = qr.rank;
+    result.column_rank = qr.column_rank;
+    result.condition = qr.condition;
   } else {
     // Eq. (14): A = V~ S^-1, then the comparison solver, then c = S^-1 d.
     const int n = static_cast<int>(A.cols());

@@ -35,6 +35,7 @@ struct FitSettings {
   bool include_constant = true;  ///< fit c00 (else the fit passes through the origin)
   LsqSolver solver = LsqSolver::safeguarded_qr;
   double qr_tolerance = 1e-3;  ///< safeguarded QR: |R_jj| and 1/||R^-1||_F threshold
+  bool qr_condition = true;    ///< safeguarded QR: the ||R^-1||_F test (else |R_jj| alone)
   /// Column scaling for the SVD and eigen solvers (the QR always uses the 2-norm, eq. 14).
   ColumnScaling scaling = ColumnScaling::two_norm;
   double threshold = 1e-8;          ///< SVD singular-value / eigenvalue cut-off
@@ -45,9 +46,11 @@ struct FitSettings {
 enum TaylorRow { kF = 0, kFu = 1, kFv = 2, kFuu = 3, kFuv = 4, kFvv = 5 };
 
 struct FitResult {
-  int degree = 0;  ///< degree used; 0 = failure (taylor is then all zero)
-  int rank = 0;    ///< QR: columns accepted; SVD/eigen: singular values / eigenvalues kept
-  int rows = 0;    ///< m
+  int degree = 0;        ///< degree used; 0 = failure (taylor is then all zero)
+  int rank = 0;          ///< QR: columns accepted; SVD/eigen: singular values / eigenvalues kept
+  int column_rank = 0;   ///< QR: columns accepted by the |R_jj| test alone (QrSolveResult)
+  double condition = 0;  ///< QR: where the condition test cut, the columns' condition number
+  int rows = 0;          ///< m
   /// Taylor derivatives f, f_u, f_v, f_uu, f_uv, f_vv (TaylorRow) at (0, 0), one column per RHS
   /// (only the first k columns are set). Derivatives of order > degree are 0; f is 0 without the
   /// constant.

@@ -44,6 +44,7 @@ RingFitEstimator::RingFitEstimator(EstimatorOptions options, FitRoute route)
   settings_.degree = o.degree;
   settings_.include_constant = o.include_centre;
   settings_.qr_tolerance = o.qr_tolerance;
+  settings_.qr_condition = o.qr_condition;
 }
 
 void RingFitEstimator::set_solver(LsqSolver solver, ColumnScaling scaling, double threshold,
@@ -290,6 +291,7 @@ void RingFitEstimator::estimate_batch(const MeshContext& ctx, int first, int cou
   s.include_constant = options_.include_centre;
   s.rhs = k;
   s.tol = settings_.qr_tolerance;
+  s.condition = settings_.qr_condition;
   s.power = weight_exponent(d, options_.weight_power);
   constexpr int L = kBatchLanes;
   LocalFrame frames[L];

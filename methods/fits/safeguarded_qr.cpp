@@ -131,11 +131,15 @@ int factor(double* const* col, int n, int k, int m, double tol, double* rdiag) {
 // The columns have unit norm, so cond_2(A_k) <= sqrt(k) / tol: the kept fit has a bounded
 // condition number (Proposition 1). ||R_k^-1||_F grows with k, and ||R_{j+1}^-1||_F >= 1 / |R_jj|.
 // Column j of R^-1: z_j = 1 / R_jj, z_i = -(sum_{l=i+1..j} R_il z_l) / R_ii (R_il = col[l][i]).
-int conditioned_rank(double* const* col, const double* rdiag, int rank, double tol) {
+// Where the test cuts, `condition` gets sqrt(rank) ||R_rank^-1||_F over all `rank` columns (the
+// loop goes on past the cut, which the usual stencil never reaches).
+int conditioned_rank(double* const* col, const double* rdiag, int rank, double tol,
+                     double& condition) {
   if (!(tol > 0.0)) return rank;
   const double limit = 1.0 / (tol * tol);
   double inv_r[kMaxCols], z[kMaxCols];
   double inv2 = 0.0;  // ||R_k^-1||_F^2
+  int kept = rank;
   for (int j = 0; j < rank; ++j) {
     inv_r[j] = 1.0 / rdiag[j];
     z[j] = inv_r[j];
@@ -147,15 +151,17 @@ int conditioned_rank(double* const* col, const double* rdiag, int rank, double t
       norm2 += z[i] * z[i];
     }
     inv2 += norm2;
-    if (!(inv2 <= limit)) return j;
+    if (!(inv2 <= limit) && kept == rank) kept = j;
   }
-  return rank;
+  if (kept < rank) condition = std::sqrt(static_cast<double>(rank) * inv2);
+  return kept;
 }
 
 }  // namespace
 
 QrSolveResult safeguarded_qr_solve(FitMatrix& A, RhsMatrix& B, int degree, bool include_constant,
-                                   double tol, CoeffMatrix& X, ColVector& scale) {
+                                   double tol, CoeffMatrix& X, ColVector& scale,
+                                   bool condition_test) {
   QrSolveResult result;
   const int m = static_cast<int>(A.rows());
   const int k = static_cast<int>(B.cols());
@@ -176,8 +182,11 @@ QrSolveResult safeguarded_qr_solve(FitMatrix& A, RhsMatrix& B, int degree, bool 
   for (int c = 0; c < k; ++c) col[n + c] = B.data() + static_cast<std::ptrdiff_t>(c) * m;
   double rdiag[kMaxCols];
   // §4.3.2: the leading columns, so far free of a nearly dependent column, that are also well
-  // conditioned together.
-  int rank = conditioned_rank(col, rdiag, factor(col, n, k, m, tol, rdiag), tol);
+  // conditioned together (unless the condition test is off: the |R_jj| test alone).
+  result.column_rank = factor(col, n, k, m, tol, rdiag);
+  int rank = condition_test
+                 ? conditioned_rank(col, rdiag, result.column_rank, tol, result.condition)
+                 : result.column_rank;
   result.rank = rank;
   // Drop whole degree blocks from the right until the accepted columns cover the degree.
   while (rank < n) {

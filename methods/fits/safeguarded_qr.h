@@ -7,6 +7,7 @@
 //                   to the right-hand sides B in the same loop; stop at the first column j with
 //                   |R_jj| < tol (or j >= m): rank = j
 //   3b. condition:  rank = the largest k <= rank with ||R(0:k, 0:k)^-1||_F <= 1 / tol
+//                   (unless switched off: EstimatorOptions::qr_condition, the |R_jj| test alone)
 //   4. drop blocks: while rank < ncols(d): d--  (whole degree blocks, highest degree first);
 //                   d == 0 is a failure
 //   5. solve:       R(0:n, 0:n) y = (Q^T B)(0:n, :) with n = ncols(d); c_j = y_j / s_j
@@ -23,8 +24,13 @@
 namespace curvbench {
 
 struct QrSolveResult {
-  int degree = 0;  ///< degree used, 0 = failure (no degree >= 1 fit is well-conditioned)
-  int rank = 0;    ///< leading columns accepted by the safeguard (before dropping blocks)
+  int degree = 0;       ///< degree used, 0 = failure (no degree >= 1 fit is well-conditioned)
+  int rank = 0;         ///< leading columns accepted by the safeguard (before dropping blocks)
+  int column_rank = 0;  ///< leading columns accepted by the |R_jj| test alone (step 3)
+  /// sqrt(k) ||R_k^-1||_F of the k = column_rank columns accepted by step 3: their Frobenius
+  /// condition number ||A_k||_F ||A_k^+||_F (unit-norm columns); computed only where the
+  /// condition test runs and cuts (rank < column_rank), else 0.
+  double condition = 0.0;
 };
 
 /// Solves min ||A c - B|| for the monomial coefficients of a degree <= `degree` fit.
@@ -35,7 +41,10 @@ struct QrSolveResult {
 ///      0 x k on failure.
 ///   scale  out: column scaling factors (scratch).
 /// tol is the |R_jj| and 1 / ||R_k^-1||_F threshold (EstimatorOptions::qr_tolerance, default 1e-3).
+/// condition_test = false skips step 3b (EstimatorOptions::qr_condition): the |R_jj| test alone,
+/// the safeguard of the paper's time.
 QrSolveResult safeguarded_qr_solve(FitMatrix& A, RhsMatrix& B, int degree, bool include_constant,
-                                   double tol, CoeffMatrix& X, ColVector& scale);
+                                   double tol, CoeffMatrix& X, ColVector& scale,
+                                   bool condition_test = true);
 
 }  // namespace curvbench

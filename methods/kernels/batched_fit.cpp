@@ -343,7 +343,7 @@ void BatchedFitKernel(BatchedSystems& s) {
     // factor R_k S^-1 (safeguarded_qr.cpp). The norm grows with k, so the lane keeps the degree
     // iff the test passes for all n columns. The inverse of R S^-1 is S R^-1: its column j is S y
     // with R y = e_j.
-    if (s.tol > 0.0) {
+    if (s.tol > 0.0 && s.condition) {
       const V limit = hn::Set(d, 1.0 / (s.tol * s.tol));
       V inv2 = zero;
       for (int j = 0; j < n; ++j) {

@@ -46,6 +46,7 @@ struct BatchedSystems {
   bool include_constant = true;  ///< fit c00
   int rhs = 1;                   ///< 1 (height) or 3 (parametric)
   double tol = 1e-3;             ///< |R_jj| threshold
+  bool condition = true;         ///< the ||R^-1||_F test too (safeguarded_qr.h step 3b)
   double power = 0.5;            ///< weight exponent p (batched_weight_power_supported)
   int max_rows = 0;              ///< max over the lanes of rows[l]
   std::array<int, kBatchLanes> rows{};

@@ -41,6 +41,30 @@ TEST(Readings, EveryReadingHasTheAdoptedChoiceFirstAndItChangesNothing) {
   }
 }
 
+// noise-alpha's adopted choice, alpha = (0.1/3) N(0,1), is what the experiment files of the
+// paper's controlled noise write; the alternative gaussian-0.1 changes them, and changes nothing
+// that already draws alpha = 0.1 N(0,1).
+TEST(Readings, NoiseAlphaAdoptedIsTheExperimentFilesModel) {
+  const auto all = load_experiments(std::string(CURVBENCH_SOURCE_DIR) + "/experiments");
+  const ReadingChoice& wide = choice("noise-alpha", "gaussian-0.1");
+  EXPECT_EQ(choice("noise-alpha", "gaussian-0.033").name, readings()[2].choices[0].name);
+  int seen = 0;
+  for (const Experiment& e : all) {
+    if (e.name != "fig19-21" && e.name != "fig20-22") continue;
+    ++seen;
+    EXPECT_EQ(e.noise_model.distribution, NoiseDistribution::gaussian) << e.name;
+    EXPECT_EQ(e.noise_model.scale, 0.1 / 3) << e.name;
+    const auto changed = apply_reading({e}, wide);
+    ASSERT_EQ(changed.size(), 1u) << e.name;
+    EXPECT_EQ(changed[0].noise_model.scale, 0.1) << e.name;
+  }
+  EXPECT_EQ(seen, 2);
+  EXPECT_TRUE(
+      apply_reading(
+          {parse("noise order=2 seed=1 scale=0.1\nmesh bump-48 levels=1\nmethod lhf-2\n")}, wide)
+          .empty());
+}
+
 TEST(Readings, IsoLevelsShiftTheIsosurfaceToriOnly) {
   const Experiment e = parse(
       "mesh torus-iso levels=2,3,4,5\nmesh torus-iso-projected "
@@ -86,24 +110,42 @@ TEST(Readings, IrregularBumpSwapsTheFamilyInThePapersExperimentsOnly) {
       apply_reading({parse("mesh bump-irregular levels=1\nmethod lhf-2\n", "beyond")}, c).empty());
 }
 
-TEST(Readings, QrToleranceSetsEveryRingFitWithoutItsOwnTolerance) {
+TEST(Readings, SafeguardSetsEveryRingFitWithoutItsOwnSafeguard) {
   const Experiment e = parse(
       "mesh bump-48 levels=1\nmethod lhf-4\nmethod lop-2\nmethod lscm-3\nmethod xu-2\n"
-      "method jet-2\nmethod meyer\nmethod lhf-2 qr-tol=1e-5 label=\"own\"\n");
-  const ReadingChoice& c = choice("qr-tolerance", "1e-8");
-  const auto changed = apply_reading({e}, c);
-  ASSERT_EQ(changed.size(), 1u);
-  const Experiment& x = changed[0];
-  ASSERT_EQ(x.methods.size(), e.methods.size());
-  EXPECT_EQ(x.meshes.size(), e.meshes.size());  // every mesh line: the methods change
-  const double adopted = EstimatorOptions{}.qr_tolerance;
-  EXPECT_EQ(adopted, 1e-3);
-  for (size_t i = 0; i < 3; ++i) EXPECT_EQ(x.methods[i].options.qr_tolerance, 1e-8) << i;
-  for (size_t i = 3; i < 6; ++i) EXPECT_EQ(x.methods[i].options.qr_tolerance, adopted) << i;
-  EXPECT_EQ(x.methods[6].options.qr_tolerance, 1e-5);  // its own stays
-  // Nothing to change: no ring fit, or a study beyond the paper.
-  EXPECT_TRUE(apply_reading({parse("mesh bump-48 levels=1\nmethod meyer\n")}, c).empty());
-  EXPECT_TRUE(apply_reading({parse("mesh bump-48 levels=1\nmethod lhf-2\n", "beyond")}, c).empty());
+      "method jet-2\nmethod meyer\nmethod lhf-2 qr-tol=1e-5 label=\"own\"\n"
+      "method lhf-3 qr-condition=no label=\"own test\"\n");
+  const EstimatorOptions defaults;
+  EXPECT_EQ(defaults.qr_tolerance, 1e-3);
+  EXPECT_TRUE(defaults.qr_condition);
+  for (const char* name : {"1e-8", "rjj-only"}) {
+    SCOPED_TRACE(name);
+    const ReadingChoice& c = choice("safeguard", name);
+    const auto changed = apply_reading({e}, c);
+    ASSERT_EQ(changed.size(), 1u);
+    const Experiment& x = changed[0];
+    ASSERT_EQ(x.methods.size(), e.methods.size());
+    EXPECT_EQ(x.meshes.size(), e.meshes.size());  // every mesh line: the methods change
+    const bool loose = std::string(name) == "1e-8";
+    // The three ring fits get the choice's safeguard: one of the two settings changes.
+    for (size_t i = 0; i < 3; ++i) {
+      EXPECT_EQ(x.methods[i].options.qr_tolerance, loose ? 1e-8 : 1e-3) << i;
+      EXPECT_EQ(x.methods[i].options.qr_condition, loose) << i;
+    }
+    for (size_t i = 3; i < 6; ++i) {
+      EXPECT_EQ(x.methods[i].options.qr_tolerance, defaults.qr_tolerance) << i;
+      EXPECT_TRUE(x.methods[i].options.qr_condition) << i;
+    }
+    // A fit that sets its own tolerance or test keeps it.
+    EXPECT_EQ(x.methods[6].options.qr_tolerance, 1e-5);
+    EXPECT_TRUE(x.methods[6].options.qr_condition);
+    EXPECT_EQ(x.methods[7].options.qr_tolerance, 1e-3);
+    EXPECT_FALSE(x.methods[7].options.qr_condition);
+    // Nothing to change: no ring fit, or a study beyond the paper.
+    EXPECT_TRUE(apply_reading({parse("mesh bump-48 levels=1\nmethod meyer\n")}, c).empty());
+    EXPECT_TRUE(
+        apply_reading({parse("mesh bump-48 levels=1\nmethod lhf-2\n", "beyond")}, c).empty());
+  }
 }
 
 TEST(Readings, NoisyRingsQuadraticOnlyGivesDegreesThreeAndFourTheirOwnRings) {
@@ -134,10 +176,14 @@ TEST(Readings, NoiseAlphaSetsTheModelOfNoisyExperimentsOnly) {
   ASSERT_EQ(u.size(), 1u);
   EXPECT_EQ(u[0].noise_model.distribution, NoiseDistribution::uniform);
   EXPECT_EQ(u[0].noise_model.scale, 0.1);
-  const auto g = apply_reading({e}, choice("noise-alpha", "gaussian-0.033"));
+  // The adopted scale 0.1/3 (the experiment files write it) to 0.1.
+  const Experiment adopted = parse(
+      "noise order=2 seed=5 scale=0.03333333333333333\nmesh bump-48 levels=1\nmethod lhf-2\n");
+  EXPECT_EQ(adopted.noise_model.scale, 0.1 / 3);
+  const auto g = apply_reading({adopted}, choice("noise-alpha", "gaussian-0.1"));
   ASSERT_EQ(g.size(), 1u);
   EXPECT_EQ(g[0].noise_model.distribution, NoiseDistribution::gaussian);
-  EXPECT_DOUBLE_EQ(g[0].noise_model.scale, 0.1 / 3);
+  EXPECT_EQ(g[0].noise_model.scale, 0.1);
   EXPECT_TRUE(apply_reading({parse("mesh bump-48 levels=1\nmethod lhf-2\n")},
                             choice("noise-alpha", "uniform-0.1"))
                   .empty());

@@ -49,9 +49,9 @@ TEST(Generate, Families) {
   EXPECT_EQ(max_mesh_level("torus-jittered"), 6);
   EXPECT_EQ(max_mesh_level("torus-iso"), 5);
   EXPECT_EQ(max_mesh_level("torus-iso-projected"), 5);
-  EXPECT_EQ(max_mesh_level("bump-48"), 5);
-  EXPECT_EQ(max_mesh_level("bump-irregular"), 5);
-  EXPECT_EQ(max_mesh_level("bump-unstructured"), 5);
+  EXPECT_EQ(max_mesh_level("bump-48"), 6);
+  EXPECT_EQ(max_mesh_level("bump-irregular"), 6);
+  EXPECT_EQ(max_mesh_level("bump-unstructured"), 6);
   EXPECT_EQ(max_mesh_level("torus-unstructured"), 4);  // the paper's four well-shaped meshes
   EXPECT_EQ(max_mesh_level("torus-unstructured-minval5"), 4);
   EXPECT_EQ(max_mesh_level("torus-anisotropic"), 4);
@@ -118,8 +118,8 @@ TEST(Generate, ErrorsNameTheValidValues) {
   EXPECT_NE(usage_error(MeshSpec{"torus-structured", 0}).find("1..6"), std::string::npos);
   EXPECT_NE(usage_error(MeshSpec{"torus-structured", 7}).find("1..6"), std::string::npos);
   EXPECT_NE(usage_error(MeshSpec{"torus-iso", 6}).find("1..5"), std::string::npos);
-  EXPECT_NE(usage_error(MeshSpec{"bump-48", -1}).find("1..5"), std::string::npos);
-  EXPECT_NE(usage_error(MeshSpec{"bump-irregular", 6}).find("1..5"), std::string::npos);
+  EXPECT_NE(usage_error(MeshSpec{"bump-48", -1}).find("1..6"), std::string::npos);
+  EXPECT_NE(usage_error(MeshSpec{"bump-irregular", 7}).find("1..6"), std::string::npos);
   EXPECT_NE(usage_error(MeshSpec{"bump-48", 1, -1}).find("noise order"), std::string::npos);
   EXPECT_NE(usage_error(MeshSpec{"bump-48", 1, 5}).find("noise order"), std::string::npos);
   MeshSpec jitter{"bump-48"};

@@ -182,6 +182,15 @@ TEST(BatchedFit, EqualsScalarWhereTheConditionTestFires) {
     EXPECT_EQ(s[64].degree, 4) << method;
     EXPECT_EQ(s[64].ring, 3.5) << method;
     EXPECT_GT(s[64].points, 28) << method;
+    // qr-condition=no (the |R_jj| test alone): the batch keeps those lanes too, and the vertex
+    // keeps its 3-ring at degree 4.
+    o.qr_condition = false;
+    const auto rjj = run(mesh, method, o, Kernel::scalar);
+    const Comparison c_rjj = compare(rjj, run(mesh, method, o, Kernel::batched));
+    EXPECT_EQ(c_rjj.differing, 0) << method << "-4 qr-condition=no: " << c_rjj.first;
+    EXPECT_EQ(rjj[64].degree, 4) << method;
+    EXPECT_EQ(rjj[64].ring, 3.0) << method;
+    EXPECT_EQ(rjj[64].points, 28) << method;
   }
 }
 

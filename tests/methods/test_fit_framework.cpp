@@ -336,6 +336,19 @@ TEST(SafeguardedQr, FourGridLineBoundaryStencilDropsTheQuarticBlock) {
   EXPECT_EQ(r.degree, 3);  // the condition test of the kept factor drops the quartic block
   EXPECT_GE(r.rank, 10);
   EXPECT_LT(r.rank, 15);
+  // Every column passes |R_jj| >= tol, and the reported condition number of the 15 columns is
+  // within the bounds of cond_2 (unit-norm columns): cond_2 <= ||A||_F ||A^+||_F <= 15 cond_2.
+  EXPECT_EQ(r.column_rank, 15);
+  EXPECT_GE(r.condition, cond2 * (1 - 1e-9));
+  EXPECT_LE(r.condition, 15.0 * cond2 * (1 + 1e-9));
+  // Without the condition test (qr_condition = false, the paper-era safeguard) the quartic
+  // block stays, as it does on the same stencil at every tolerance the |R_jj| test passes.
+  settings.qr_condition = false;
+  const FitResult rjj = fit_polynomial(s.u, s.v, s.f, s.w, settings, scratch);
+  EXPECT_EQ(rjj.degree, 4);
+  EXPECT_EQ(rjj.rank, 15);
+  EXPECT_EQ(rjj.condition, 0.0);  // not computed: the test did not run
+  settings.qr_condition = true;
   // A tolerance below 1 / ||R^-1||_F keeps it.
   settings.qr_tolerance = 1e-4;
   EXPECT_EQ(fit_polynomial(s.u, s.v, s.f, s.w, settings, scratch).degree, 4);

@@ -55,6 +55,12 @@ TEST(VertexNormals, SingleMethodOptionsOnOtherMethodsAreErrors) {
   constant.quadric_constant = true;
   expect_error("meyer", constant, "quadric-constant applies to method 'quadric' only");
   EXPECT_TRUE(make_estimator("quadric", constant)->options().quadric_constant);
+  EstimatorOptions rjj_only;  // the safeguard's condition test off: ring fits only
+  rjj_only.qr_condition = false;
+  expect_error("jet-3", rjj_only, "qr-condition applies to the fits of the weighted");
+  expect_error("meyer", rjj_only, "qr-condition applies to the fits of the weighted");
+  for (const char* fit : {"lhf-4", "lop-2", "lscm-4"})
+    EXPECT_FALSE(make_estimator(fit, rjj_only)->options().qr_condition) << fit;
   EstimatorOptions ball;
   ball.ball_factor = 2.0;
   expect_error("jet-3", ball, "ball-factor applies to methods 'normal-cycle' and 'icc' only");
