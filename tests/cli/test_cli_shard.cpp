@@ -160,16 +160,13 @@ TEST_F(CliShard, ThreeShardProcessesThenTheReportEqualOneRun) {
   std::ofstream(copy / "timings" / "shard.csv", std::ios::app) << "row\n";
   const auto [bad_code, bad_text] = same(single, copy);
   EXPECT_EQ(bad_code, 1) << bad_text;
-  EXPECT_NE(bad_text.find("differs (before its section Choosing an estimator, or in line count): "
-                          "REPORT.md"),
-            std::string::npos)
-      << bad_text;
+  EXPECT_NE(bad_text.find("differs: REPORT.md"), std::string::npos) << bad_text;
   EXPECT_NE(bad_text.find("differs (row count): timings/shard.csv"), std::string::npos) << bad_text;
   EXPECT_EQ(got.size(), want.size());
 
   // The parts chosen by measured times: recommendations.csv from its column best_seconds (18)
-  // on, and REPORT.md's section "Choosing an estimator and a radius" (same line count) may
-  // differ; an error may not.
+  // on, report/sweeps.md's section "Choosing an estimator and a radius" (same line count) and the
+  // cells of the site's pages may differ; an error may not, nor a page's number of charts.
   const fs::path timed_a = root_ / "timed_a", timed_b = root_ / "timed_b";
   const std::string head = "# provenance\nquality,s,status,e,f,1,9,0.1,none,H,L2,3,";
   const auto write_timed = [&](const fs::path& d, const std::string& error,
@@ -177,8 +174,12 @@ TEST_F(CliShard, ThreeShardProcessesThenTheReportEqualOneRun) {
     fs::create_directories(d);
     std::ofstream(d / "recommendations.csv")
         << head << "LHF-2,rings,2,LHF-2 rings=2," << error << "," << seconds << ",ICC\n";
-    std::ofstream(d / "REPORT.md")
+    fs::create_directories(d / "report");
+    std::ofstream(d / "report" / "sweeps.md")
         << "# r\n\n## Choosing an estimator and a radius\n\n| " << seconds << " |\n";
+    fs::create_directories(d / "site");
+    std::ofstream(d / "site" / "cost.html") << "<section><canvas></canvas><table><tr><td>"
+                                            << seconds << "</td></tr></table></section>\n";
   };
   write_timed(timed_a, "0.001", "0.0046");
   write_timed(timed_b, "0.001", "0.0099");
@@ -189,6 +190,9 @@ TEST_F(CliShard, ThreeShardProcessesThenTheReportEqualOneRun) {
   EXPECT_NE(timed_text.find("differs (before best_seconds): recommendations.csv"),
             std::string::npos)
       << timed_text;
+  std::ofstream(timed_b / "site" / "cost.html", std::ios::app) << "<canvas></canvas>\n";
+  EXPECT_NE(same(timed_a, timed_b).second.find("differs (number of <canvas): site/cost.html"),
+            std::string::npos);
 
   // A store missing one case: the report fails and names it.
   const auto ids = lines(run_cli("run shard --list-cases --shard 2/3" + common_).output);
