@@ -239,8 +239,9 @@ struct MethodInfo {
 const MethodInfo& method_info(const std::string& name_or_label);
 
 /// The group of a method label as the result CSVs spell it ("LHF-2", "Meyer", "LSCM-fast-4",
-/// case-insensitive, a trailing degree ignored); MethodGroup::outside when no registered
-/// method has that name.
+/// case-insensitive, a trailing degree ignored), a variant's label included ("LHF-2
+/// (1.5-ring)", "LHF-2 rings=3", "ICC-ball2": the longest registered name that starts it);
+/// MethodGroup::outside when no registered method starts it.
 MethodGroup method_group(const std::string& label);
 
 /// Every registered method, in registry order.

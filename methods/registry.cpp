@@ -89,10 +89,9 @@ struct Registration {
 // The registry: the lines of CURVBENCH_ESTIMATORS, then any register_estimator() additions.
 std::vector<Registration>& registry() {
 #define CURVBENCH_REGISTER(name, lo, hi, bench, cost, group, radius, factory, summary) \
-  Registration{                                                                    \
-      {name, lo, hi, bench_degrees(bench), cost, summary, MethodGroup::group,        \
-       NeighbourhoodSize::radius},                                                   \
-      &factory},
+  Registration{{name, lo, hi, bench_degrees(bench), cost, summary, MethodGroup::group, \
+                NeighbourhoodSize::radius},                                            \
+               &factory},
   static std::vector<Registration> table = {CURVBENCH_ESTIMATORS(CURVBENCH_REGISTER)};
 #undef CURVBENCH_REGISTER
   return table;
@@ -176,8 +175,9 @@ std::unique_ptr<Estimator> make_estimator(const std::string& name, EstimatorOpti
 void register_estimator(const MethodInfo& info, EstimatorFactory factory) {
   if (info.name.empty() || info.name != lower(info.name) || factory == nullptr ||
       info.name.find_first_of(" ,=\"#") != std::string::npos)
-    throw UsageError("register_estimator: a method needs a lower-case name without spaces, "
-                     "commas, '=', quotes or '#', and a factory");
+    throw UsageError(
+        "register_estimator: a method needs a lower-case name without spaces, "
+        "commas, '=', quotes or '#', and a factory");
   if (info.name == "external" || info.name == "all-operators")
     throw UsageError("register_estimator: '" + info.name + "' is a keyword of experiment files");
   if (find(info.name) != nullptr)
@@ -217,6 +217,22 @@ const Registration* find_label(const std::string& label) {
   return nullptr;
 }
 
+// The registration whose name or label starts a variant's label ("LHF-2 (1.5-ring)", "LHF-2
+// rings=3", "ICC-ball2"): the longest name followed by '-' or ' '; nullptr when none.
+const Registration* find_variant(const std::string& label) {
+  if (const Registration* r = find_label(label.substr(0, label.find(' ')))) return r;
+  const std::string base = lower(label);
+  const Registration* best = nullptr;
+  for (const Registration& r : registry()) {
+    const std::string& n = r.info.name;
+    if (base.size() > n.size() && base.compare(0, n.size(), n) == 0 &&
+        (base[n.size()] == '-' || base[n.size()] == ' ') &&
+        (best == nullptr || n.size() > best->info.name.size()))
+      best = &r;
+  }
+  return best;
+}
+
 }  // namespace
 
 const MethodInfo& method_info(const std::string& name_or_label) {
@@ -225,7 +241,7 @@ const MethodInfo& method_info(const std::string& name_or_label) {
 }
 
 MethodGroup method_group(const std::string& label) {
-  const Registration* r = find_label(label);
+  const Registration* r = find_variant(label);
   return r == nullptr ? MethodGroup::outside : r->info.group;
 }
 

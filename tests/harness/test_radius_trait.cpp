@@ -24,6 +24,18 @@ TEST(RadiusTrait, EveryMethodDeclaresItsNeighbourhoodSize) {
   EXPECT_THROW(method_info("no-such-method"), UsageError);
 }
 
+TEST(MethodGroup, VariantsBelongToTheirMethodsGroup) {
+  EXPECT_EQ(method_group("LHF-2"), MethodGroup::paper_fit);
+  EXPECT_EQ(method_group("LSCM-fast-4"), MethodGroup::paper_fit);
+  EXPECT_EQ(method_group("LHF-2 (1.5-ring)"), MethodGroup::paper_fit);
+  EXPECT_EQ(method_group("LHF-2 rings=3"), MethodGroup::paper_fit);
+  EXPECT_EQ(method_group("Jet-4"), MethodGroup::jet);
+  EXPECT_EQ(method_group("ICC-ball2"), MethodGroup::discrete);
+  EXPECT_EQ(method_group("Normal-cycle ball-factor=4"), MethodGroup::discrete);
+  EXPECT_EQ(method_group("vtk-curvatures"), MethodGroup::outside);
+  EXPECT_EQ(method_group("lhfx"), MethodGroup::outside);
+}
+
 TEST(RadiusTrait, RadiusScalingSizesEachMethodByItsDeclaration) {
   Experiment e;
   e.radius_alpha = 0.5;
