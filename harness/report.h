@@ -23,6 +23,9 @@ namespace curvbench {
 struct ReportOptions {
   std::string results_dir = "results";
   bool plots = true;  ///< render PNG and SVG with gnuplot (skipped with a warning if missing)
+  /// Write the tables derived on the way (best_radius.csv, recommendations.csv); false renders
+  /// only (`curvbench report --site-only`, `make site`: the results folder is left as it is).
+  bool write_tables = true;
   /// Polled before each plot; true = give up (REPORT.md is then not written).
   std::function<bool()> stop;
 };

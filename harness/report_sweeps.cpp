@@ -424,13 +424,13 @@ bool sweeps_section(const std::vector<Experiment>& experiments, const ReportOpti
     }
   }
   if (any_radius) {
-    write_best_radius_csv(dir + "/best_radius.csv", all_best);
+    if (options.write_tables) write_best_radius_csv(dir + "/best_radius.csv", all_best);
     const std::vector<Recommendation> recs = recommendations(radius_rows, timings);
     // The recommendations follow as a part of this section, under a heading of its level.
     report::Section choosing = recommendations_section(recs);
     out.heading(choosing.title, 0);
     for (report::Block& b : choosing.blocks) out.blocks.push_back(std::move(b));
-    write_recommendations_csv(dir + "/recommendations.csv", recs);
+    if (options.write_tables) write_recommendations_csv(dir + "/recommendations.csv", recs);
   }
   return true;
 }

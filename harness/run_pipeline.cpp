@@ -389,6 +389,7 @@ RenderResult render_results(const RenderOptions& o) {
   ReportOptions rep;
   rep.results_dir = o.output;
   rep.plots = o.plots && o.markdown;
+  rep.write_tables = o.markdown;
   rep.stop = o.stop;
   say("[report] building the report" + std::string(rep.plots ? " and its plots" : ""));
   const std::optional<ReportContent> content = build_report(o.experiments, rep);

@@ -36,8 +36,17 @@ TEST(CliReport, ReRendersTheSiteAndNamesABadCsv) {
   const std::string report = "report --results " + results.string() + " --experiments-dir " +
                              (dir / "experiments").string() + " --no-plots";
   fs::remove_all(results / "site");
+  // --site-only writes the site and nothing else into the results folder.
+  const auto stamp = [&] {
+    std::string s;
+    for (const auto& e : fs::directory_iterator(results))
+      if (e.is_regular_file()) s += e.path().filename().string() + ":" + slurp(e.path()) + "\n";
+    return s;
+  };
+  const std::string before = stamp();
   auto r = run_cli(report + " --site-only");
   ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(stamp(), before) << "a file of the results folder changed";
   ASSERT_TRUE(fs::exists(results / "site" / "exp-small.html"));
   const std::string site = slurp(results / "site" / "exp-small.html");
   EXPECT_NE(site.find("<canvas data-plot=\"small-h_bump-48\""), std::string::npos);
