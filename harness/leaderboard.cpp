@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <iterator>
 #include <map>
 #include <set>
 #include <sstream>
@@ -121,7 +120,8 @@ std::vector<LeaderRow> leaderboard_rows(const std::vector<Experiment>& experimen
   struct Cell {
     double error = -INFINITY, rate = INFINITY, us = std::nan("");
     int largest = -1, finest = 0;
-    std::string meshes, experiment;
+    std::set<std::string> meshes;  // each once, sorted (a family may run at several noises)
+    std::string experiment;
   };
   std::map<std::tuple<std::string, std::string, std::string, std::string>, Cell> cells;
   for (const auto& [k, s] : series) {
@@ -145,7 +145,7 @@ std::vector<LeaderRow> leaderboard_rows(const std::vector<Experiment>& experimen
       c.finest = last.level;
     }
     c.rate = std::isfinite(rate) ? std::min(c.rate, rate) : std::nan("");
-    c.meshes += (c.meshes.empty() ? "" : " ") + k.family;
+    c.meshes.insert(k.family);
     if (last.vertices > c.largest) {
       c.largest = last.vertices;
       const auto t = us.find({s.experiment, family, last.level, k.method});
@@ -160,11 +160,8 @@ std::vector<LeaderRow> leaderboard_rows(const std::vector<Experiment>& experimen
           const auto it = cells.find({m, cls.id, q, n});
           if (it == cells.end()) continue;
           const Cell& c = it->second;
-          // The meshes ' '-separated, each once, sorted (a family may run at several noises).
-          std::istringstream words(c.meshes);
-          std::set<std::string> uniq{std::istream_iterator<std::string>(words), {}};
           std::string meshes;
-          for (const auto& w : uniq) meshes += (meshes.empty() ? "" : " ") + w;
+          for (const auto& w : c.meshes) meshes += (meshes.empty() ? "" : " ") + w;
           out.push_back({m, to_string(method_group(m)), cls.id, q, n, c.error, c.rate, c.us, meshes,
                          c.experiment, c.finest});
         }

@@ -49,12 +49,6 @@ void markdown_table(std::ostringstream& out, const Table& t) {
   out << "\n";
 }
 
-// Position just after the closing `delim` from `from`, or npos.
-size_t closing(const std::string& s, size_t from, const std::string& delim) {
-  const size_t at = s.find(delim, from);
-  return at == std::string::npos ? at : at;
-}
-
 std::string link_target(const std::string& target, std::string (*link)(const std::string&)) {
   return link ? link(target) : target;
 }
@@ -66,21 +60,21 @@ std::string inline_html(const std::string& s, std::string (*link)(const std::str
   while (i < s.size()) {
     const char c = s[i];
     if (c == '`') {
-      const size_t end = closing(s, i + 1, "`");
+      const size_t end = s.find('`', i + 1);
       if (end != std::string::npos) {
         out += "<code>" + escape_html(s.substr(i + 1, end - i - 1)) + "</code>";
         i = end + 1;
         continue;
       }
     } else if (c == '*' && i + 1 < s.size() && s[i + 1] == '*') {
-      const size_t end = closing(s, i + 2, "**");
+      const size_t end = s.find("**", i + 2);
       if (end != std::string::npos && end > i + 2) {
         out += "<strong>" + inline_html(s.substr(i + 2, end - i - 2), link) + "</strong>";
         i = end + 2;
         continue;
       }
     } else if (c == '*' && i + 1 < s.size() && s[i + 1] != ' ') {
-      const size_t end = closing(s, i + 1, "*");
+      const size_t end = s.find('*', i + 1);
       if (end != std::string::npos && end > i + 1) {
         out += "<em>" + inline_html(s.substr(i + 1, end - i - 1), link) + "</em>";
         i = end + 1;
