@@ -15,7 +15,7 @@
 //   --table5_dir=DIR      write DIR/table5_timing.csv (Table 5's levels, with the rows of
 //                         --table5_extra) and DIR/table5_scaling.csv (the scaling sweep's levels
 //                         5-6) after the run; CSV only (the report renders them:
-//                         harness/report_table5.h)
+//                         harness/report/table5.h)
 //   --table5_extra=FILE   rows written by bench_solvers (QR vs SVD) to merge into the first
 //   --build_info=TEXT     build type and flags, in the CSV's comment line "# machine: ..."
 // seconds in the CSV = median of the wall times of every timed whole-mesh pass (all
@@ -202,7 +202,7 @@ void register_all() {
 // ---- results/table5_timing.csv ---------------------------------------------------------------
 
 // The machine, compiler and build of the run, for table5_timing.csv's comment line
-// "# machine: ..." (the report's Table 5 quotes it: harness/report_table5.h).
+// "# machine: ..." (the report's Table 5 quotes it: harness/report/table5.h).
 std::string machine_comment(const std::string& build_info) {
   std::string cpu = "unknown";
   std::ifstream in("/proc/cpuinfo");
@@ -240,7 +240,7 @@ int main(int argc, char** argv) {
         const std::vector<Table5Row> more = read_rows(extra);
         rows.insert(rows.end(), more.begin(), more.end());
       }
-      // CSV only: the report renders Table 5 from these (harness/report_table5.h).
+      // CSV only: the report renders Table 5 from these (harness/report/table5.h).
       write_file_atomic(dir + "/table5_timing.csv", format_rows(rows, machine_comment(build_info)));
       write_file_atomic(dir + "/table5_scaling.csv", format_rows(rows_from_samples(g_scaling)));
       std::fprintf(stderr,

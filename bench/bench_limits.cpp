@@ -38,9 +38,9 @@
 
 #include "core/atomic_file.h"
 #include "core/text.h"
-#include "harness/estimate_columns.h"
-#include "harness/estimate_npy.h"
-#include "harness/shortest_double.h"
+#include "harness/model/estimate_columns.h"
+#include "harness/model/estimate_npy.h"
+#include "harness/model/shortest_double.h"
 #include "mesh/io.h"
 #include "mesh/orientation.h"
 #include "mesh/read_soup.h"
@@ -362,7 +362,7 @@ int run(int argc, char** argv) {
         }
       },
       [&] { text.reserve(8192 * 600); });
-  // The doubles alone, through harness/shortest_double.h and through libstdc++'s std::to_chars
+  // The doubles alone, through harness/model/shortest_double.h and through libstdc++'s std::to_chars
   // (the CSV's formatter before it, the same bytes), for the ratio in the notes.
   std::vector<char> chars(std::size_t{8192} * 13 * 64);
   const auto doubles_seconds = [&](auto&& put) {

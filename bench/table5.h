@@ -24,7 +24,7 @@
 #include <benchmark/benchmark.h>
 
 #include "core/build_info.h"
-#include "harness/results_table.h"
+#include "harness/model/results_table.h"
 
 namespace curvbench::bench {
 

@@ -5,8 +5,8 @@
 // add_estimator_option_flags).
 //
 // CSV: a header, then one row per vertex; PLY: the mesh with per-vertex properties; NPY: one
-// record per vertex (harness/estimate_npy.h); all from the column table of
-// harness/estimate_columns.h (--columns: only those asked for), written block by block as the
+// record per vertex (harness/model/estimate_npy.h); all from the column table of
+// harness/model/estimate_columns.h (--columns: only those asked for), written block by block as the
 // estimates come
 // (--block vertices at a time; the bytes do not depend on it or on --threads). The file is written
 // to a temporary name and renamed, so a failed run never leaves a truncated OUT. A one-line summary
@@ -35,10 +35,10 @@
 #include "cli/estimator_flags.h"
 #include "core/errors.h"
 #include "core/text.h"
-#include "harness/estimate_columns.h"
-#include "harness/estimate_npy.h"
-#include "harness/recommend_table.h"
-#include "harness/results_table.h"
+#include "harness/model/estimate_columns.h"
+#include "harness/model/estimate_npy.h"
+#include "harness/report/recommend_table.h"
+#include "harness/model/results_table.h"
 #include "mesh/colormap.h"
 #include "mesh/io.h"
 #include "mesh/mesh_checks.h"
@@ -78,7 +78,7 @@ VertexColors color_of(const std::string& quantity, std::span<const VertexEstimat
 }
 
 // --method auto: the estimator and radius the default recommendations table gives the mesh
-// (harness/recommend_table.h, as `curvbench recommend`), said on stderr.
+// (harness/report/recommend_table.h, as `curvbench recommend`), said on stderr.
 std::unique_ptr<Estimator> auto_estimator(const std::string& path, const Mesh& mesh,
                                           const EstimatorOptions& given) {
   const Advice a = advise(mesh, std::nan(""), default_recommendations());

@@ -1,5 +1,5 @@
 // `curvbench recommend MESH [--noise SIGMA_OVER_H] [--results DIR] [--format text|csv|json]`: the
-// advice of the recommendations table for a mesh (harness/recommend_table.h): its quality class
+// advice of the recommendations table for a mesh (harness/report/recommend_table.h): its quality class
 // from its triangle angles (classify_mesh), its noise given or estimated
 // (estimate_sigma_over_h), the estimator and radius of the table's row for them, the error the
 // sweep measured, and the `curvbench estimate` command line that runs them.
@@ -14,7 +14,7 @@
 #include "cli/commands.h"
 #include "core/errors.h"
 #include "core/text.h"
-#include "harness/recommend_table.h"
+#include "harness/report/recommend_table.h"
 
 namespace curvbench::cli {
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "cli/commands.h"
-#include "harness/experiment.h"
+#include "harness/model/experiment.h"
 #include "harness/run_pipeline.h"
 
 namespace curvbench::cli {

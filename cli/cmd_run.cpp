@@ -141,7 +141,7 @@ Command add_run_command(CLI::App& app) {
   sub->add_flag("--no-plots", args->no_plots, "Do not render plots");
   sub->add_flag("--no-readings", args->no_readings,
                 "Do not run the experiments under the alternative readings of the paper "
-                "(harness/readings.cpp) into <output>/readings/; CLAIMS.md still reads any "
+                "(harness/readings/readings.cpp) into <output>/readings/; CLAIMS.md still reads any "
                 "that are there");
   sub->add_flag("--force", args->force,
                 "Recompute every case instead of reusing the finished ones in <output>/.cache");

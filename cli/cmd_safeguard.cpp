@@ -1,5 +1,5 @@
 // `curvbench safeguard-fires [--output FILE]`: where the safeguarded QR's condition test cuts a
-// stencil (harness/safeguard_fires.h): LHF-4 and LSCM-4 on both bumps at levels 1-4, the vertices
+// stencil (harness/run/safeguard_fires.h): LHF-4 and LSCM-4 on both bumps at levels 1-4, the vertices
 // whose first stencil it cuts, with the condition numbers. `make experiments` writes
 // results/diag-safeguard-fires.csv with it.
 #include <cstdio>
@@ -8,7 +8,7 @@
 
 #include "cli/commands.h"
 #include "core/atomic_file.h"
-#include "harness/safeguard_fires.h"
+#include "harness/run/safeguard_fires.h"
 
 namespace curvbench::cli {
 

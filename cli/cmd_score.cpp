@@ -1,12 +1,12 @@
 // `curvbench score MESH.ply --estimates EST.csv [--vertex-set all|interior|boundary-ring]
 //  [--json]`: the errors of an outside estimator's per-vertex estimates against the exact
-// quantities of a mesh written by `curvbench mesh` (harness/score.h).
+// quantities of a mesh written by `curvbench mesh` (harness/model/score.h).
 #include <cstdio>
 #include <memory>
 #include <string>
 
 #include "cli/commands.h"
-#include "harness/score.h"
+#include "harness/model/score.h"
 
 namespace curvbench::cli {
 

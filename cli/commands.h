@@ -1,5 +1,5 @@
 // Subcommands of the `curvbench` executable. Each registers itself on the CLI11 app and returns
-// the callback run when it is selected; harness/main.cpp maps exceptions to exit codes
+// the callback run when it is selected; cli/main.cpp maps exceptions to exit codes
 // (InputError/UsageError -> 2, anything else -> 1).
 #pragma once
 

@@ -2,7 +2,7 @@
 # the public headers (include/curvbench/ only; the layers' internal headers are not installed),
 # the CMake package (find_package(curvbench CONFIG) -> curvbench::curvbench, shared, and
 # curvbench::curvbench_static), the curvbench command, the Python module and the recommendations
-# table they read (share/curvbench/recommendations.csv: harness/recommend_table.h looks there,
+# table they read (share/curvbench/recommendations.csv: harness/report/recommend_table.h looks there,
 # under the prefix of the program, not under CMAKE_INSTALL_DATADIR).
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)

@@ -12,7 +12,7 @@ namespace curvbench {
 
 /// The temporary name under which `path` is written before the rename: "<path>.tmp.<pid>" (or
 /// "<path>.<k>.tmp.<pid>" when the process already writes `path` elsewhere). Files of this form
-/// left by a killed process are swept by remove_stale_temp_files (harness/results_table.h).
+/// left by a killed process are swept by remove_stale_temp_files (harness/model/results_table.h).
 std::string temp_path(const std::string& path);
 
 /// A file written under a unique temporary name in the target's folder (created exclusively)

@@ -1,5 +1,5 @@
 #include "harness/run_pipeline.h"
-#include "harness/well_shaped_torus_table.h"
+#include "harness/report/well_shaped_torus_table.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -9,13 +9,13 @@
 
 #include "core/build_info.h"
 #include "core/errors.h"
-#include "harness/case_store.h"
-#include "harness/claims.h"
-#include "harness/leaderboard.h"
-#include "harness/readings.h"
-#include "harness/report.h"
-#include "harness/report_pages.h"
-#include "harness/results_table.h"
+#include "harness/run/case_store.h"
+#include "harness/claims/claims.h"
+#include "harness/report/leaderboard.h"
+#include "harness/readings/readings.h"
+#include "harness/report/report.h"
+#include "harness/report/pages.h"
+#include "harness/model/results_table.h"
 
 namespace curvbench {
 

@@ -18,9 +18,9 @@
 #include <string>
 #include <vector>
 
-#include "harness/claims.h"
-#include "harness/experiment.h"
-#include "harness/runner.h"
+#include "harness/claims/claims.h"
+#include "harness/model/experiment.h"
+#include "harness/run/runner.h"
 
 namespace curvbench {
 

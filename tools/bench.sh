@@ -5,7 +5,7 @@
 #                               (a "# machine: ..." comment line names CPU, compiler and flags)
 #   results/table5_scaling.csv  the same columns, the scaling sweep's levels 5-6
 #   results/end_to_end.csv      curvbench estimate on 1.44 million vertices, per stage
-# (CSV only: `curvbench report` renders Table 5 from them, harness/report_table5.h)
+# (CSV only: `curvbench report` renders Table 5 from them, harness/report/table5.h)
 #   results/limits.csv          per stage of `curvbench estimate` at 1.44M vertices: measured time
 #                               and the bound the hardware sets (bench/bench_limits.cpp)
 # and, after `make experiments`, rewrites REPORT.md and CLAIMS.md from its case store so that the
@@ -63,7 +63,7 @@ done
 # orientation, neighbourhoods+fit, write; estimation and writing alternate block by block, each
 # stage is the sum of its own parts), the wall time and the peak resident set size
 # (/usr/bin/time -v), written to results/end_to_end.csv (the report renders it with Table 5:
-# harness/report_table5.h):
+# harness/report/table5.h):
 #   threads,read_s,orientation_s,fit_s,write_s,wall_s,peak_rss_mb
 mesh="$OUT/torus-structured-6.ply"
 [[ -f "$mesh" ]] || "$BUILD/curvbench" mesh --family torus-structured --level 6 --output "$mesh" > /dev/null

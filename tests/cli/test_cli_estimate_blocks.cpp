@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "core/errors.h"
-#include "harness/estimate_columns.h"
+#include "harness/model/estimate_columns.h"
 #include "mesh/io.h"
 #include "methods/estimate_oriented.h"
 #include "methods/estimator.h"

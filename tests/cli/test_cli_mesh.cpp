@@ -56,7 +56,7 @@ TEST(CliMesh, PlyCarriesExactQuantitiesAndNoiseIsSeeded) {
 TEST(CliMesh, Table4MatchesThePaper) {
   const auto r = run_cli("mesh --table4 --max-grid 64");
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  // The report's Table 4 section (harness/report.h table4_section): our values next to the
+  // The report's Table 4 section (harness/report/report.h table4_section): our values next to the
   // paper's printed ones; the computed RMS errors round to the paper's 3.60e-3, 1.12e-3, 2.59e-4.
   for (const char* s : {"# Table 4.", "| 16^3 | 320 / 320 | 3.60e-03 / 3.60e-3 |",
                         "| 32^3 | 1760 / 1760 | 1.12e-03 / 1.12e-3 |",

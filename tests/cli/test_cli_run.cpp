@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "harness/results_table.h"
+#include "harness/model/results_table.h"
 #include "tests/cli/cli_runner.h"
 
 namespace curvbench {

@@ -204,7 +204,7 @@ TEST_F(CliShard, ThreeShardProcessesThenTheReportEqualOneRun) {
   EXPECT_NE(r.output.find(ids.front()), std::string::npos) << r.output;
 }
 
-// The alternative readings (harness/readings.h) are cases too: each shard computes its part of
+// The alternative readings (harness/readings/readings.h) are cases too: each shard computes its part of
 // them into the store's readings/ folder, and the report writes their CSVs as one run does.
 TEST_F(CliShard, ShardsComputeTheReadingsToo) {
   const fs::path dir = root_ / "reading-experiments";

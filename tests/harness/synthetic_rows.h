@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "harness/results_table.h"
+#include "harness/model/results_table.h"
 
 namespace curvbench::testing {
 

@@ -14,9 +14,9 @@
 #include <set>
 
 #include "core/build_info.h"
-#include "harness/case_store.h"
-#include "harness/results_table.h"
-#include "harness/runner.h"
+#include "harness/run/case_store.h"
+#include "harness/model/results_table.h"
+#include "harness/run/runner.h"
 #include "mesh/io.h"
 #include "methods/option_schema.h"
 #include "tests/cli/cli_runner.h"

@@ -1,8 +1,8 @@
-// Claims evaluator (harness/claims.h) on synthetic result CSVs: errors e = C h^p with chosen
+// Claims evaluator (harness/claims/claims.h) on synthetic result CSVs: errors e = C h^p with chosen
 // rates, written with write_error_csv into a temporary folder, plus hand-written Table 2/4/5.
 // An "ideal" set is built to satisfy every band of the registry (docs/claims.md; the bands are read
 // back with claim_band); the tests then break one property at a time and check that the right
-// claim flips. The paper's tables come from harness/paper_tables.h.
+// claim flips. The paper's tables come from harness/model/paper_tables.h.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -17,9 +17,9 @@
 #include <vector>
 
 #include "core/errors.h"
-#include "harness/claims.h"
-#include "harness/paper_tables.h"
-#include "harness/results_table.h"
+#include "harness/claims/claims.h"
+#include "harness/model/paper_tables.h"
+#include "harness/model/results_table.h"
 
 namespace curvbench {
 namespace {

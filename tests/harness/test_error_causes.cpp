@@ -12,10 +12,11 @@
 #include <variant>
 #include <vector>
 
-#include "harness/case_store.h"
-#include "harness/error_causes.h"
-#include "harness/report_model.h"
-#include "harness/runner.h"
+#include "harness/run/case_store.h"
+#include "harness/model/error_causes.h"
+#include "harness/report/causes.h"
+#include "harness/report/model.h"
+#include "harness/run/runner.h"
 #include "mesh/io.h"
 #include "mesh/mesh_checks.h"
 #include "methods/estimator.h"

@@ -9,10 +9,10 @@
 #include <string>
 
 #include "core/errors.h"
-#include "harness/case_store.h"
-#include "harness/experiment.h"
-#include "harness/results_table.h"
-#include "harness/runner.h"
+#include "harness/run/case_store.h"
+#include "harness/model/experiment.h"
+#include "harness/model/results_table.h"
+#include "harness/run/runner.h"
 #include "meshgen/generate.h"
 #include "methods/estimator.h"
 #include "tests/cli/cli_runner.h"

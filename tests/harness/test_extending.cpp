@@ -8,8 +8,8 @@
 #include <string>
 
 #include "core/errors.h"
-#include "harness/experiment.h"
-#include "harness/runner.h"
+#include "harness/model/experiment.h"
+#include "harness/run/runner.h"
 #include "meshgen/generate.h"
 #include "methods/estimator.h"
 #include "surfaces/sphere.h"

@@ -1,4 +1,4 @@
-// Outside estimators as experiment methods (`method external`, harness/external_estimator.h):
+// Outside estimators as experiment methods (`method external`, harness/run/external_estimator.h):
 // the worked example (experiments/examples/, Python + numpy) runs end to end and its rows are
 // what `curvbench score` gives for the script's output; failures are typed errors naming the
 // case; the case store keys on the command and the script's content; a command exiting 77
@@ -16,10 +16,10 @@
 #include <tuple>
 #include <vector>
 
-#include "harness/experiment.h"
-#include "harness/external_estimator.h"
-#include "harness/results_table.h"
-#include "harness/score.h"
+#include "harness/model/experiment.h"
+#include "harness/run/external_estimator.h"
+#include "harness/model/results_table.h"
+#include "harness/model/score.h"
 #include "meshgen/generate.h"
 #include "tests/cli/cli_runner.h"
 

@@ -1,4 +1,4 @@
-// The leaderboard (harness/leaderboard.h) and the report's pages (harness/report_pages.h): a class
+// The leaderboard (harness/report/leaderboard.h) and the report's pages (harness/report/pages.h): a class
 // with several meshes shows each estimator's worst; the CSV round-trips; the site is written
 // whole or not at all; the summary names the winners.
 #include <gtest/gtest.h>
@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "core/errors.h"
-#include "harness/experiment.h"
-#include "harness/leaderboard.h"
-#include "harness/report_pages.h"
+#include "harness/model/experiment.h"
+#include "harness/report/leaderboard.h"
+#include "harness/report/pages.h"
 #include "harness/run_pipeline.h"
 #include "tests/cli/cli_runner.h"
 #include "tests/harness/synthetic_rows.h"

@@ -6,9 +6,9 @@
 #include <string>
 
 #include "core/errors.h"
-#include "harness/case_store.h"
-#include "harness/experiment.h"
-#include "harness/runner.h"
+#include "harness/run/case_store.h"
+#include "harness/model/experiment.h"
+#include "harness/run/runner.h"
 
 namespace curvbench {
 namespace {

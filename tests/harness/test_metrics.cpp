@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "core/errors.h"
-#include "harness/metrics.h"
+#include "harness/model/metrics.h"
 
 namespace curvbench {
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "harness/plot_styles.h"
+#include "harness/report/plot_styles.h"
 #include "methods/estimator.h"
 
 namespace curvbench {

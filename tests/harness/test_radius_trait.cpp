@@ -1,13 +1,13 @@
 // The neighbourhood size as a declared trait (methods/estimator.h NeighbourhoodSize, one column of
-// the registry line): radius scaling (harness/runner.h scale_radius) sizes each method through
+// the registry line): radius scaling (harness/run/runner.h scale_radius) sizes each method through
 // its declaration, n = c h^(alpha - 1) edge lengths as half rings, whole rings or a ball factor.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "core/errors.h"
-#include "harness/experiment.h"
-#include "harness/runner.h"
+#include "harness/model/experiment.h"
+#include "harness/run/runner.h"
 #include "methods/estimator.h"
 
 namespace curvbench {

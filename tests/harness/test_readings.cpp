@@ -1,4 +1,4 @@
-// The readings of the paper's unstated choices (harness/readings.h): each alternative changes
+// The readings of the paper's unstated choices (harness/readings/readings.h): each alternative changes
 // the experiments as documented (levels, noise model, noisy-data rings) and only those, the
 // experiment files accept the options they set, and the runner honours them.
 #include <gtest/gtest.h>
@@ -6,9 +6,9 @@
 #include <string>
 
 #include "core/errors.h"
-#include "harness/experiment.h"
-#include "harness/readings.h"
-#include "harness/runner.h"
+#include "harness/model/experiment.h"
+#include "harness/readings/readings.h"
+#include "harness/run/runner.h"
 #include "methods/estimator.h"
 
 namespace curvbench {

@@ -1,4 +1,4 @@
-// Recommendations (harness/recommend.h): the table is what the sweep rows and timings imply (best,
+// Recommendations (harness/report/recommend.h): the table is what the sweep rows and timings imply (best,
 // cheapest within 2x, ties, a missing timing, a noise level not swept), the CSV carries it, and
 // the mesh classification and noise estimate on the families the table stands for.
 #include <gtest/gtest.h>
@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "core/errors.h"
-#include "harness/recommend.h"
-#include "harness/results_table.h"
+#include "harness/report/recommend.h"
+#include "harness/model/results_table.h"
 #include "meshgen/generate.h"
 #include "meshgen/noise.h"
 #include "tests/cli/cli_runner.h"

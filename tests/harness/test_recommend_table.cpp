@@ -1,4 +1,4 @@
-// The recommendations table read back and the advice (harness/recommend_table.h): a table
+// The recommendations table read back and the advice (harness/report/recommend_table.h): a table
 // written by write_recommendations_csv reads back to the same picks; the committed table's case
 // labels resolve to the method and radius its own columns name; truncated, foreign and
 // inconsistent tables fail naming the file and line; a label becomes the estimate flags and a
@@ -13,8 +13,8 @@
 
 #include "core/errors.h"
 #include "core/text.h"
-#include "harness/experiment.h"
-#include "harness/recommend_table.h"
+#include "harness/model/experiment.h"
+#include "harness/report/recommend_table.h"
 #include "mesh/io.h"
 #include "meshgen/generate.h"
 #include "methods/estimator.h"

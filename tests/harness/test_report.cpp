@@ -1,4 +1,4 @@
-// build_report (harness/report.h): an experiment's section from its CSV, rendered to markdown:
+// build_report (harness/report/report.h): an experiment's section from its CSV, rendered to markdown:
 // the panel caption, the family's caption from the family table, one row per method with its
 // errors per level and the rate between the first and last level; one table per vertex set;
 // a missing CSV is said; a stop request gives nothing.
@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "harness/experiment.h"
-#include "harness/report.h"
-#include "harness/results_table.h"
+#include "harness/model/experiment.h"
+#include "harness/report/report.h"
+#include "harness/model/results_table.h"
 #include "meshgen/generate.h"
 #include "tests/cli/cli_runner.h"
 #include "tests/harness/synthetic_rows.h"

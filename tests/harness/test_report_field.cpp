@@ -1,4 +1,4 @@
-// The REPORT.md section "The estimators in common use" (harness/report_field.h): finest-level
+// The REPORT.md section "The estimators in common use" (harness/report/field.h): finest-level
 // errors with rates, the time per vertex from the timings CSV, and the generated words about
 // convergence follow the numbers and the stated thresholds.
 #include <gtest/gtest.h>
@@ -10,9 +10,9 @@
 #include <variant>
 #include <vector>
 
-#include "harness/report_field.h"
-#include "harness/report_model.h"
-#include "harness/results_table.h"
+#include "harness/report/field.h"
+#include "harness/report/model.h"
+#include "harness/model/results_table.h"
 #include "tests/cli/cli_runner.h"
 #include "tests/harness/synthetic_rows.h"
 
@@ -26,7 +26,7 @@ std::vector<ErrorRow> series(const std::string& method, double e0, double rate) 
   return testing::synthetic_series("field-estimators-test", "bump-irregular", method, e0, rate);
 }
 
-// The field sections (harness/report_field.h) of `experiments` from the CSVs in `dir`, no plots.
+// The field sections (harness/report/field.h) of `experiments` from the CSVs in `dir`, no plots.
 report::Section field_section(const fs::path& dir, const std::vector<Experiment>& experiments) {
   ReportOptions options;
   options.results_dir = dir.string();

@@ -1,11 +1,11 @@
-// The report model (harness/report_model.h): one section, two renderers. The markdown and the
+// The report model (harness/report/model.h): one section, two renderers. The markdown and the
 // HTML of a section carry the same cells, links and best marks; text is escaped; JSON numbers are
 // shortest round-trip and non-finite ones null.
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "harness/report_model.h"
+#include "harness/report/model.h"
 
 namespace curvbench::report {
 namespace {

@@ -1,8 +1,8 @@
 // The REPORT.md section "Neighbourhoods that shrink more slowly than h"
-// (harness/report_radius_scaling.h): the bounds of docs/algorithms.md §15, the rates per alpha
+// (harness/report/radius_scaling.h): the bounds of docs/algorithms.md §15, the rates per alpha
 // from the errors CSVs, and the table that sets them side by side.
-#include "harness/report_model.h"
-#include "harness/report_radius_scaling.h"
+#include "harness/report/model.h"
+#include "harness/report/radius_scaling.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The REPORT.md section "Sweeps at a fixed mesh" (harness/report_sweeps.h): labels read back into
+// The REPORT.md section "Sweeps at a fixed mesh" (harness/report/sweeps.h): labels read back into
 // method and radius, the best radius per (family, noise, quantity) and best_radius.csv follow the
 // rows.
 #include <gtest/gtest.h>
@@ -10,9 +10,9 @@
 #include <variant>
 #include <vector>
 
-#include "harness/report_model.h"
-#include "harness/report_sweeps.h"
-#include "harness/results_table.h"
+#include "harness/report/model.h"
+#include "harness/report/sweeps.h"
+#include "harness/model/results_table.h"
 #include "tests/cli/cli_runner.h"
 
 namespace curvbench {
@@ -143,7 +143,7 @@ TEST(ReportSweeps, SectionAndCsvFromTheResults) {
   const CsvTable t = read_csv_table((dir / "best_radius.csv").string());
   EXPECT_EQ(t.rows.size(), 6u);
   EXPECT_EQ(missing, 0);
-  // Then the recommendations (harness/recommend.h) from the same rows and the timings CSV.
+  // Then the recommendations (harness/report/recommend.h) from the same rows and the timings CSV.
   const auto choosing = text.find("## Choosing an estimator and a radius");
   ASSERT_NE(choosing, std::string::npos) << text;
   EXPECT_GT(choosing, text.find("## Sweeps at a fixed mesh"));

@@ -1,7 +1,7 @@
-// The report's Table 5 (harness/report_table5.h) from the CSVs of `make bench`: our times with
+// The report's Table 5 (harness/report/table5.h) from the CSVs of `make bench`: our times with
 // the paper's beside, the ratios with the paper's, QR against SVD, scaling over the levels of
 // both timing files, the end-to-end rows, the machine line; every number in its cell.
-#include "harness/report_table5.h"
+#include "harness/report/table5.h"
 
 #include <gtest/gtest.h>
 

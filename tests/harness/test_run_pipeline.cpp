@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "core/errors.h"
-#include "harness/experiment.h"
+#include "harness/model/experiment.h"
 #include "harness/run_pipeline.h"
 #include "tests/cli/cli_runner.h"
 

@@ -1,5 +1,5 @@
-// Where the safeguard's condition test fires (harness/safeguard_fires.h).
-#include "harness/safeguard_fires.h"
+// Where the safeguard's condition test fires (harness/run/safeguard_fires.h).
+#include "harness/run/safeguard_fires.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Scoring outside estimates (harness/score.h, `curvbench score`): the errors of a `curvbench
+// Scoring outside estimates (harness/model/score.h, `curvbench score`): the errors of a `curvbench
 // estimate` CSV equal the runner's for the same case; the exact values score zero; NaN rows are
 // counted as failed and left out; every bad input exits 2 with one line naming row and column.
 #include <gtest/gtest.h>
@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "harness/runner.h"
-#include "harness/score.h"
+#include "harness/run/runner.h"
+#include "harness/model/score.h"
 #include "tests/cli/cli_runner.h"
 
 namespace curvbench {

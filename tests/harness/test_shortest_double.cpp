@@ -1,4 +1,4 @@
-// harness/shortest_double.h: the estimate CSV's numbers are std::to_chars's bytes, exactly.
+// harness/model/shortest_double.h: the estimate CSV's numbers are std::to_chars's bytes, exactly.
 #include <gtest/gtest.h>
 
 #include <charconv>
@@ -9,7 +9,7 @@
 #include <random>
 #include <string>
 
-#include "harness/shortest_double.h"
+#include "harness/model/shortest_double.h"
 
 namespace curvbench {
 namespace {

@@ -1,7 +1,7 @@
-// The section of the well-shaped torus meshes (harness/well_shaped_torus_table.h) from its CSV:
+// The section of the well-shaped torus meshes (harness/report/well_shaped_torus_table.h) from its CSV:
 // the words, one row per family and level with the counts against the paper's, and the numbers
 // in the cells.
-#include "harness/well_shaped_torus_table.h"
+#include "harness/report/well_shaped_torus_table.h"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include <string>
 #include <variant>
 
-#include "harness/report_model.h"
+#include "harness/report/model.h"
 #include "tests/cli/cli_runner.h"
 
 namespace curvbench {

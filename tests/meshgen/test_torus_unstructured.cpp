@@ -8,7 +8,7 @@
 #include <set>
 
 #include "core/errors.h"
-#include "harness/paper_tables.h"
+#include "harness/model/paper_tables.h"
 #include "meshgen/generate.h"
 #include "meshgen/torus_unstructured.h"
 #include "tests/meshgen/identical_matrices.h"

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/errors.h"
-#include "harness/paper_tables.h"
+#include "harness/model/paper_tables.h"
 #include "mesh/mesh_checks.h"
 #include "meshgen/generate.h"
 #include "meshgen/torus_unstructured.h"

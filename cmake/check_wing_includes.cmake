@@ -1,0 +1,50 @@
+# Checks that harness/'s wings include only downward (CMakeLists.txt, "harness/ in wings"):
+#   model     -> (no wing)
+#   run       -> model
+#   readings  -> model
+#   claims    -> readings, model
+#   report    -> model
+#   harness/  (the pipeline) -> any wing
+# Every `#include "harness/<wing>/..."` in HARNESS_DIR/<wing>/ outside its allowed list is an
+# error; so is an include of the pipeline (harness/<file>.h) from a wing.
+#   cmake -DHARNESS_DIR=<path to harness> -P cmake/check_wing_includes.cmake
+if(NOT HARNESS_DIR)
+  message(FATAL_ERROR "check_wing_includes: pass -DHARNESS_DIR=<path>")
+endif()
+set(_allowed_model "")
+set(_allowed_run model)
+set(_allowed_readings model)
+set(_allowed_claims readings model)
+set(_allowed_report model)
+set(_violations "")
+set(_checked 0)
+foreach(_wing model run readings claims report)
+  file(GLOB _files ${HARNESS_DIR}/${_wing}/*.h ${HARNESS_DIR}/${_wing}/*.cpp)
+  foreach(_file ${_files})
+    math(EXPR _checked "${_checked} + 1")
+    file(STRINGS ${_file} _lines REGEX "^[ \t]*#[ \t]*include[ \t]*\"harness/")
+    foreach(_line ${_lines})
+      string(REGEX REPLACE "^[ \t]*#[ \t]*include[ \t]*\"harness/([^\"]*)\".*$" "\\1" _target "${_line}")
+      if(_target MATCHES "^([a-z_]+)/")
+        set(_to ${CMAKE_MATCH_1})
+        if(_to STREQUAL _wing)
+          continue()
+        endif()
+        list(FIND _allowed_${_wing} ${_to} _at)
+        if(_at EQUAL -1)
+          list(APPEND _violations "${_file}: ${_wing} includes harness/${_target}")
+        endif()
+      else()
+        list(APPEND _violations "${_file}: ${_wing} includes the pipeline harness/${_target}")
+      endif()
+    endforeach()
+  endforeach()
+endforeach()
+if(_checked EQUAL 0)
+  message(FATAL_ERROR "check_wing_includes: no wing files under ${HARNESS_DIR}")
+endif()
+if(_violations)
+  list(JOIN _violations "\n  " _text)
+  message(FATAL_ERROR "harness wings include upward or sideways:\n  ${_text}")
+endif()
+message(STATUS "check_wing_includes: ${_checked} files, every include downward")

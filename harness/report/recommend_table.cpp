@@ -1,0 +1,396 @@
+#include "harness/report/recommend_table.h"
+
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+#include <dlfcn.h>
+#include <sys/auxv.h>
+
+#include "core/errors.h"
+#include "core/text.h"
+#include "harness/report/sweeps.h"
+#include "harness/model/results_table.h"
+#include "mesh/io.h"
+#include "methods/estimator.h"
+#include "methods/option_schema.h"
+
+namespace curvbench {
+
+namespace {
+
+bool same_level(double a, double b) {
+  return std::fabs(a - b) <= 1e-9 * std::fmax(1.0, b);
+}
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+std::string seconds_text(double s) {
+  if (!std::isfinite(s)) return "no timing";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g s", s);
+  return buf;
+}
+
+// The columns the advice reads; the others (best_method, ...) are the same facts spelled out.
+constexpr const char* kColumns[] = {
+    "quality",        "sigma_over_h",    "status",       "experiment",
+    "family",         "level",           "vertices",     "h",
+    "noise",          "quantity",        "norm",         "cases",
+    "best_label",     "best_error",      "best_seconds", "cheapest_label",
+    "cheapest_error", "cheapest_seconds"};
+
+}  // namespace
+
+RecommendationTable parse_recommendations_csv(const std::string& text, const std::string& name) {
+  RecommendationTable table;
+  table.name = name;
+  // The provenance: the first line, when it is a comment.
+  if (text.rfind('#', 0) == 0) {
+    std::string first = text.substr(0, text.find('\n'));
+    if (!first.empty() && first.back() == '\r') first.pop_back();
+    first.erase(0, first.find_first_not_of("# "));
+    table.provenance = first;
+  }
+  const CsvTable t = parse_csv_table(text, name);
+  table.header = t.header;
+  std::vector<size_t> c;
+  for (const char* column : kColumns) {
+    bool found = false;
+    for (size_t i = 0; i < t.header.size() && !found; ++i)
+      if (t.header[i] == column) {
+        c.push_back(i);
+        found = true;
+      }
+    if (!found)
+      throw InputError(name + ": no column '" + column +
+                       "' (not a recommendations.csv of this curvbench)");
+  }
+  const auto& classes = quality_classes();
+  const auto& levels = recommendation_noise_levels();
+  for (size_t i = 0; i < t.rows.size(); ++i) {
+    const std::string where = name + ":" + std::to_string(t.lines[i]);
+    RecommendationRow r;
+    r.line = t.lines[i];
+    r.fields = t.rows[i];
+    r.quality = t.text(i, c[0]);
+    bool known = false;
+    std::string names;
+    for (const std::string& q : classes) {
+      known = known || q == r.quality;
+      names += (names.empty() ? "" : ", ") + q;
+    }
+    if (!known) throw InputError(where + ": quality '" + r.quality + "' is not one of " + names);
+    r.sigma_over_h = t.number(i, c[1]);
+    bool level = false;
+    for (double l : levels) level = level || same_level(r.sigma_over_h, l);
+    if (!level)
+      throw InputError(where + ": sigma_over_h " + t.text(i, c[1]) +
+                       " is not a noise level of the table (0, 0.01, 0.03, 0.1)");
+    for (const RecommendationRow& other : table.rows)
+      if (other.quality == r.quality && same_level(other.sigma_over_h, r.sigma_over_h))
+        throw InputError(where + ": a second row for quality " + r.quality + " at sigma/h " +
+                         format_g(r.sigma_over_h) + " (the first is line " +
+                         std::to_string(other.line) + ")");
+    const std::string& status = t.text(i, c[2]);
+    if (status != "swept" && status != "not swept")
+      throw InputError(where + ": status '" + status + "' is neither 'swept' nor 'not swept'");
+    r.swept = status == "swept";
+    if (r.swept) {
+      r.experiment = t.text(i, c[3]);
+      r.family = t.text(i, c[4]);
+      r.level = t.integer(i, c[5]);
+      r.vertices = t.integer(i, c[6]);
+      r.h = t.number(i, c[7]);
+      r.noise = t.text(i, c[8]);
+      r.quantity = t.text(i, c[9]);
+      r.norm = t.text(i, c[10]);
+      r.cases = t.integer(i, c[11]);
+      r.best_label = t.text(i, c[12]);
+      r.best_error = t.number(i, c[13]);
+      r.best_seconds = t.number(i, c[14]);
+      r.cheapest_label = t.text(i, c[15]);
+      if (!r.cheapest_label.empty()) {
+        r.cheapest_error = t.number(i, c[16]);
+        r.cheapest_seconds = t.number(i, c[17]);
+      }
+      for (const std::string* label : {&r.best_label, &r.cheapest_label}) {
+        if (label->empty() && label == &r.cheapest_label) continue;
+        try {
+          (void)estimator_choice(*label);
+        } catch (const UsageError& e) {
+          throw InputError(where + ": case '" + *label +
+                           "' is no estimator curvbench estimate runs (" + e.what() + ")");
+        }
+      }
+    }
+    table.rows.push_back(std::move(r));
+  }
+  for (const std::string& q : classes)
+    for (double l : levels) {
+      bool found = false;
+      for (const RecommendationRow& r : table.rows)
+        found = found || (r.quality == q && same_level(r.sigma_over_h, l));
+      if (!found)
+        throw InputError(name + ": no row for quality " + q + " at sigma/h " + format_g(l) +
+                         " (a truncated table? `make experiments` writes a whole one)");
+    }
+  return table;
+}
+
+RecommendationTable read_recommendations_csv(const std::string& results_dir) {
+  const std::string path = (std::filesystem::path(results_dir) / "recommendations.csv").string();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw InputError(path + ": not found (`make experiments` writes it into results/)");
+  return parse_recommendations_csv(read_file(path), path);
+}
+
+std::vector<std::string> recommendations_search_paths() {
+  namespace fs = std::filesystem;
+  // The file of the code running this function: the executable it is linked into (curvbench),
+  // or the shared object (libcurvbench.so, the Python module).
+  static const int anchor = 0;
+  Dl_info self{}, main_program{};
+  fs::path object;
+  std::error_code ec;
+  if (dladdr(&anchor, &self) != 0 && self.dli_fname != nullptr) {
+    const bool in_main =
+        dladdr(reinterpret_cast<const void*>(getauxval(AT_PHDR)), &main_program) != 0 &&
+        main_program.dli_fbase == self.dli_fbase;
+    object = in_main ? fs::read_symlink("/proc/self/exe", ec) : fs::absolute(self.dli_fname, ec);
+    if (ec) object.clear();
+  }
+  std::vector<std::string> paths;
+  if (!object.empty()) {
+    fs::path dir = fs::weakly_canonical(object, ec).parent_path();
+    for (int up = 0; up < 3 && !dir.empty(); ++up, dir = dir.parent_path()) {
+      paths.push_back((dir.parent_path() / "share" / "curvbench" / "recommendations.csv").string());
+      if (dir == dir.root_path()) break;
+    }
+  }
+  paths.push_back(std::string(CURVBENCH_SOURCE_RESULTS) + "/recommendations.csv");
+  return paths;
+}
+
+std::string default_recommendations_path() {
+  std::error_code ec;
+  for (const std::string& p : recommendations_search_paths())
+    if (std::filesystem::is_regular_file(p, ec)) return p;
+  return "";
+}
+
+RecommendationTable default_recommendations() {
+  const std::string path = default_recommendations_path();
+  if (path.empty()) {
+    std::string looked;
+    for (const std::string& p : recommendations_search_paths())
+      looked += (looked.empty() ? "" : ", ") + p;
+    throw InputError("no recommendations.csv found (looked in " + looked + "); give --results DIR");
+  }
+  return parse_recommendations_csv(read_file(path), path);
+}
+
+std::string recommendations_provenance(const std::string& path) {
+  std::ifstream in(path);
+  std::string first;
+  if (!std::getline(in, first) || first.rfind('#', 0) != 0) return "";
+  if (!first.empty() && first.back() == '\r') first.pop_back();
+  first.erase(0, first.find_first_not_of("# "));
+  return first;
+}
+
+std::vector<std::string> EstimatorChoice::flags() const {
+  std::vector<std::string> f{"--method", method};
+  if (!parameter.empty()) {
+    f.push_back("--" + parameter);
+    f.push_back(format_g(radius));
+  }
+  return f;
+}
+
+std::string EstimatorChoice::text() const {
+  const std::string name = parse_sweep_label(label).method;
+  if (parameter.empty()) return name + " at its own neighbourhood (no radius option)";
+  if (parameter == "rings") return name + ", rings " + format_g(radius);
+  return name + ", ball factor C = " + format_g(radius) + " (a ball of radius C h)";
+}
+
+EstimatorChoice estimator_choice(const std::string& label) {
+  const SweepLabel l = parse_sweep_label(label);
+  EstimatorChoice c;
+  c.label = label;
+  c.method = lower(l.method);
+  c.parameter = l.parameter;
+  c.radius = l.radius;
+  if (c.method.empty() || c.method.find(' ') != std::string::npos)
+    throw UsageError("'" + label + "' is not a method label with an optional radius");
+  if (c.parameter == "rings") set_option(c.options, "rings", format_double(c.radius));
+  if (c.parameter == "ball-factor") set_option(c.options, "ball-factor", format_double(c.radius));
+  (void)make_estimator(c.method, c.options);  // throws UsageError for what it cannot make
+  return c;
+}
+
+Advice advise(const Mesh& mesh, double noise, const RecommendationTable& table) {
+  if (!std::isnan(noise) && !(noise >= 0 && std::isfinite(noise)))
+    throw UsageError("noise " + format_g(noise) + ": sigma/h must be finite and >= 0");
+  Advice a;
+  a.mesh_class = classify_mesh(mesh);
+  a.noise_estimated = std::isnan(noise);
+  a.sigma_over_h = a.noise_estimated ? estimate_sigma_over_h(mesh) : noise;
+  a.noise_level = nearest_noise_level(a.sigma_over_h);
+  a.table = table.name;
+  a.provenance = table.provenance;
+  a.header = table.header;
+  a.vertices = mesh.num_vertices();
+  a.h = mesh.mean_edge_length();
+  for (const RecommendationRow& r : table.rows)
+    if (r.quality == a.mesh_class.quality && same_level(r.sigma_over_h, a.noise_level)) {
+      a.row = r;
+      if (r.swept) {
+        a.has_choice = true;
+        a.choice = estimator_choice(r.best_label);
+      }
+      return a;
+    }
+  // parse_recommendations_csv checked that every cell has a row.
+  throw InputError(table.name + ": no row for quality " + a.mesh_class.quality + " at sigma/h " +
+                   format_g(a.noise_level));
+}
+
+bool is_auto_method(const std::string& method) {
+  return lower(method) == "auto";
+}
+
+EstimatorOptions auto_options(const EstimatorChoice& choice, const EstimatorOptions& given,
+                              bool python_keywords) {
+  EstimatorOptions out = choice.options;
+  for (const OptionInfo& info : estimator_option_schema()) {
+    if (info.role == OptionRole::run) {
+      set_option(out, info.name, option_text(given, info));
+      continue;
+    }
+    if (!option_is_default(given, info)) {
+      std::string runs;
+      for (const OptionInfo& o : estimator_option_schema())
+        if (o.role == OptionRole::run)
+          runs += (runs.empty() ? "" : ", ") + (python_keywords ? o.python_name : "--" + o.name);
+      throw UsageError(
+          "method auto chooses the estimator and its radius from the recommendations: " +
+          (python_keywords ? info.python_name : "--" + info.name) +
+          " cannot be given with it (only " + runs + "; or name the method)");
+    }
+  }
+  return out;
+}
+
+std::string shell_quote(const std::string& word) {
+  bool plain = !word.empty();
+  for (char ch : word) {
+    const auto u = static_cast<unsigned char>(ch);
+    plain = plain && (std::isalnum(u) || std::string("_./:=+,@%-").find(ch) != std::string::npos);
+  }
+  if (plain) return word;
+  std::string out = "'";
+  for (char ch : word) out += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+  return out + "'";
+}
+
+std::string advice_output_path(const std::string& mesh_path) {
+  std::filesystem::path p(mesh_path);
+  p.replace_extension(".curvatures.csv");
+  return p.string();
+}
+
+std::string estimate_command(const std::string& program, const std::string& mesh_path,
+                             const EstimatorChoice& choice, bool skip_invalid,
+                             const std::string& output) {
+  std::vector<std::string> words{program, "estimate", mesh_path};
+  for (const std::string& f : choice.flags()) words.push_back(f);
+  if (skip_invalid) words.push_back("--skip-invalid");
+  words.push_back("--output");
+  words.push_back(output);
+  std::string s;
+  for (const std::string& w : words) {
+    if (!s.empty()) s += ' ';
+    s += shell_quote(w);  // appended, not operator+: GCC 12 warns falsely (-Wrestrict)
+  }
+  return s;
+}
+
+std::string advice_text(const Advice& a, const std::string& mesh_path, const std::string& command) {
+  const RecommendationRow& r = a.row;
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%d vertices, h = %.4g", a.vertices, a.h);
+  std::string s = "mesh:       " + mesh_path + " (" + buf + ")\n";
+  s += "class:      " + a.mesh_class.quality + " (" + a.mesh_class.reason + ")\n";
+  std::snprintf(buf, sizeof buf, "%.3g", a.sigma_over_h);
+  s += "noise:      sigma/h = " + std::string(buf) +
+       (a.noise_estimated ? " (estimated from the residuals of a degree-4 fit at each vertex)"
+                          : " (given)") +
+       ", nearest level of the table " + format_g(a.noise_level) + "\n";
+  if (!a.has_choice) {
+    s += "estimator:  none: no sweep ran for " + a.mesh_class.quality + " meshes at sigma/h " +
+         format_g(a.noise_level) +
+         " (`curvbench run --all --full` runs them all; then --results results)\n";
+  } else {
+    s += "estimator:  " + a.choice.text() + "; case `" + r.best_label +
+         "`, the most accurate of the " + std::to_string(r.cases) +
+         " cases (method and radius) the sweep compared\n";
+    s += "error:      relative " + r.norm + " error in " + r.quantity + " " +
+         scientific(r.best_error) + " (in " + seconds_text(r.best_seconds) + "), measured by " +
+         r.experiment + " on " + r.family + " level " + std::to_string(r.level) + " (" +
+         std::to_string(r.vertices) + " vertices, noise " + r.noise +
+         "), the mesh that stands for the " + r.quality + " class\n";
+    if (!r.cheapest_label.empty() && r.cheapest_label != r.best_label)
+      s += "faster:     `" + r.cheapest_label +
+           "`, the fastest case within 2x of that error: " + scientific(r.cheapest_error) + " in " +
+           seconds_text(r.cheapest_seconds) + "\n";
+  }
+  s += "table:      " + a.table + (a.provenance.empty() ? "" : ", " + a.provenance) + "\n";
+  if (!command.empty()) s += "run:        " + command + "\n";
+  return s;
+}
+
+std::string advice_json(const Advice& a, const std::string& mesh_path, const std::string& command) {
+  const RecommendationRow& r = a.row;
+  std::string j = "{\"mesh\": " + json_string(mesh_path) +
+                  ", \"vertices\": " + std::to_string(a.vertices) + ", \"h\": " + json_number(a.h) +
+                  ", \"quality\": " + json_string(a.mesh_class.quality) +
+                  ", \"quality_reason\": " + json_string(a.mesh_class.reason) +
+                  ", \"sigma_over_h\": " + json_number(a.sigma_over_h) +
+                  ", \"noise\": " + json_string(a.noise_estimated ? "estimated" : "given") +
+                  ", \"noise_level\": " + format_g(a.noise_level) +
+                  ", \"swept\": " + (a.has_choice ? "true" : "false");
+  if (a.has_choice) {
+    j += ", \"method\": " + json_string(a.choice.method) + ", \"options\": {";
+    if (!a.choice.parameter.empty())
+      j += json_string(a.choice.parameter) + ": " + json_number(a.choice.radius);
+    j += "}, \"label\": " + json_string(r.best_label) +
+         ", \"quantity\": " + json_string(r.quantity) + ", \"norm\": " + json_string(r.norm) +
+         ", \"error\": " + json_number(r.best_error) + ", \"command\": " + json_string(command);
+  } else {
+    j += ", \"method\": null, \"options\": {}, \"label\": null, \"quantity\": null, \"norm\": "
+         "null, \"error\": null, \"command\": null";
+  }
+  j += ", \"table\": " + json_string(a.table) + ", \"provenance\": " + json_string(a.provenance) +
+       ", \"row\": {";
+  for (size_t i = 0; i < a.header.size() && i < r.fields.size(); ++i)
+    j += std::string(i ? ", " : "") + json_string(a.header[i]) + ": " + json_string(r.fields[i]);
+  return j + "}}\n";
+}
+
+std::string advice_csv(const Advice& a) {
+  std::string header, row;
+  for (const std::string& h : a.header) header += (header.empty() ? "" : ",") + h;
+  for (size_t i = 0; i < a.row.fields.size(); ++i) row += (i ? "," : "") + a.row.fields[i];
+  return header + "\n" + row + "\n";
+}
+
+}  // namespace curvbench

@@ -1,0 +1,145 @@
+// The recommendations table read back (results/recommendations.csv, written by
+// write_recommendations_csv in harness/report/recommend.h) and the advice `curvbench recommend`,
+// `curvbench estimate --method auto` and Python's estimate(method="auto") give from it: the row
+// that matches a mesh's quality class and noise, the estimator and radius it names, and the
+// `curvbench estimate` command line that runs them.
+//
+// The default table is a file found from where the code runs, not from the working folder:
+// `make install` puts results/recommendations.csv into PREFIX/share/curvbench/, and a build
+// tree's program reads the source tree's results/ (recommendations_search_paths()); `--results
+// DIR` reads DIR/recommendations.csv instead. (Not compiled in: the executable's bytes name the
+// code of a dirty tree in the case store, harness/run/case_store.h, and a table compiled in would
+// change them at every `make experiments`.)
+#pragma once
+
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "curvbench/estimator_options.h"
+#include "harness/report/recommend.h"
+#include "mesh/mesh.h"
+
+namespace curvbench {
+
+/// One row of a recommendations CSV. The fields of a "not swept" row past `swept` are empty.
+struct RecommendationRow {
+  std::string quality;
+  double sigma_over_h = 0.0;
+  bool swept = false;
+  std::string experiment, family;  ///< the sweep and the mesh that stands for the quality class
+  int level = 0, vertices = 0;
+  double h = 0.0;
+  std::string noise, quantity, norm;  ///< "normal gauss 0.01h", "H", "L2"
+  int cases = 0;
+  std::string best_label;  ///< the most accurate case ("LHF-4 rings=2")
+  double best_error = std::numeric_limits<double>::quiet_NaN();
+  double best_seconds = std::numeric_limits<double>::quiet_NaN();
+  std::string cheapest_label;  ///< the fastest case within 2x of it ("" when none was timed)
+  double cheapest_error = std::numeric_limits<double>::quiet_NaN();
+  double cheapest_seconds = std::numeric_limits<double>::quiet_NaN();
+  int line = 0;                     ///< line of the file
+  std::vector<std::string> fields;  ///< the row as written, one field per header column
+};
+
+struct RecommendationTable {
+  std::string name;        ///< the file's path
+  std::string provenance;  ///< the file's first comment line, without "# " ("" when none)
+  std::vector<std::string> header;
+  std::vector<RecommendationRow> rows;  ///< one per quality class and noise level, file order
+};
+
+/// Parses a recommendations CSV; `name` names it in messages. Throws InputError
+/// "<name>[:<line>]: <problem>" for a table that is empty, lacks a column, has a row of another
+/// field count (a truncated file), a quality class or noise level the table does not have, a
+/// cell twice or missing, a field that is not a number, or a swept row whose best case names no
+/// estimator `curvbench estimate` can run (estimator_choice).
+RecommendationTable parse_recommendations_csv(const std::string& text, const std::string& name);
+/// DIR/recommendations.csv; throws InputError "<file>: not found" or as parse_recommendations_csv.
+RecommendationTable read_recommendations_csv(const std::string& results_dir);
+/// Where the default table is looked for, in order: P/share/curvbench/recommendations.csv for P
+/// the parent of the folder of the file running this code (the curvbench executable,
+/// libcurvbench.so or the Python module), then of the two folders above it (so that bin/, lib/
+/// and lib/python3.X/site-packages/ all find PREFIX/share/curvbench), then
+/// results/recommendations.csv of the source tree this code was built from.
+std::vector<std::string> recommendations_search_paths();
+/// The first of recommendations_search_paths() that exists ("" when none does).
+std::string default_recommendations_path();
+/// The table at default_recommendations_path(); throws InputError naming the places looked in
+/// when there is none, or as parse_recommendations_csv.
+RecommendationTable default_recommendations();
+/// The first line of a recommendations CSV when it is a comment, without "# " (the provenance:
+/// "curvbench 0.1.0 (git 747a679) GNU 12.2.0 Release, generated ..."); "" otherwise.
+std::string recommendations_provenance(const std::string& path);
+
+/// What `curvbench estimate` runs for a sweep's case label: "LHF-4 rings=2" -> method "lhf-4",
+/// rings 2; "ICC ball-factor=4" -> "icc", ball-factor 4; "Rusinkiewicz" -> "rusinkiewicz" at
+/// its 1-ring (parse_sweep_label, harness/report/sweeps.h). The sweeps' method lines set no
+/// other option (experiments/sweep_radius.exp), so the label is the whole estimator.
+struct EstimatorChoice {
+  std::string label;      ///< the case label, as in the table
+  std::string method;     ///< --method
+  std::string parameter;  ///< "rings", "ball-factor" or "" (the method's own neighbourhood)
+  double radius = std::numeric_limits<double>::quiet_NaN();  ///< NaN without a parameter
+  EstimatorOptions options;  ///< the radius set (rings or ball_factor), the rest default
+
+  /// The estimate flags: {"--method", "lhf-4", "--rings", "2"}.
+  std::vector<std::string> flags() const;
+  /// "LHF-4, rings 2", "ICC, ball factor C = 4", "Rusinkiewicz, its 1-ring".
+  std::string text() const;
+};
+/// Throws UsageError when the label names no method make_estimator() knows, or a radius the
+/// method does not take.
+EstimatorChoice estimator_choice(const std::string& label);
+
+/// The advice for a mesh: its class, its noise (given, or estimated when `noise` is NaN), the
+/// table's row for them and, when that row was swept, the estimator it recommends.
+struct Advice {
+  MeshClass mesh_class;
+  double sigma_over_h = 0.0;
+  bool noise_estimated = false;
+  double noise_level = 0.0;  ///< nearest_noise_level(sigma_over_h)
+  RecommendationRow row;
+  bool has_choice = false;          ///< false when the row is "not swept"
+  EstimatorChoice choice;           ///< the row's most accurate case
+  std::string table;                ///< the table's name
+  std::string provenance;           ///< the table's provenance
+  std::vector<std::string> header;  ///< the table's header (for the row's CSV and JSON)
+  int vertices = 0;                 ///< of the mesh
+  double h = 0.0;                   ///< its mean edge length
+};
+/// Throws InputError as classify_mesh and estimate_sigma_over_h do, UsageError for a negative or
+/// non-finite `noise`.
+Advice advise(const Mesh& mesh, double noise, const RecommendationTable& table);
+
+/// Whether `method` is "auto" (case-insensitive): the estimator and radius of the advice.
+bool is_auto_method(const std::string& method);
+/// The options of method "auto": the choice's, with the run options of `given` (threads,
+/// kernel). Throws UsageError naming an option of role "result" given away from its default (the
+/// choice is the whole estimator), spelled as a flag (--rings) or, with `python_keywords`, as
+/// Python's keyword (ball_factor).
+EstimatorOptions auto_options(const EstimatorChoice& choice, const EstimatorOptions& given,
+                              bool python_keywords);
+
+/// A word of a shell command, quoted with '...' when it holds anything but
+/// [A-Za-z0-9_./:=+,@%-] (empty: '').
+std::string shell_quote(const std::string& word);
+/// Where the printed command writes: the mesh's path with its extension replaced by
+/// ".curvatures.csv" ("meshes/bunny.off" -> "meshes/bunny.curvatures.csv").
+std::string advice_output_path(const std::string& mesh_path);
+/// `program estimate MESH --method M [--rings R | --ball-factor C] [--skip-invalid] --output OUT`,
+/// every word shell-quoted.
+std::string estimate_command(const std::string& program, const std::string& mesh_path,
+                             const EstimatorChoice& choice, bool skip_invalid,
+                             const std::string& output);
+
+/// The human text of `curvbench recommend` (see docs/cli.md): mesh, class and why, noise and
+/// why, estimator and radius, the error the sweep measured and on which mesh, the faster case
+/// within 2x, the table, and `command` (empty: none, e.g. a row not swept).
+std::string advice_text(const Advice& a, const std::string& mesh_path, const std::string& command);
+/// The same as one JSON object (NaN as null; "row": the table's fields by column, as strings).
+std::string advice_json(const Advice& a, const std::string& mesh_path, const std::string& command);
+/// The table's header and the advice's row, as two CSV lines.
+std::string advice_csv(const Advice& a);
+
+}  // namespace curvbench
