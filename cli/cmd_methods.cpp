@@ -1,7 +1,8 @@
-// `curvbench methods [--labels LO-HI] [--options]`: the registered estimators (name, degrees,
-// one line each) and the estimator options, both from their tables (methods/registry.cpp,
-// include/curvbench/estimator_options.h). --labels prints one label a line, each fit at each of
-// its degrees in LO..HI and each degree-free operator once, for scripts (tools/realmeshes.sh).
+// `curvbench methods [--labels LO-HI] [--options [--markdown flags|spellings]]`: the registered
+// estimators (name, degrees, one line each) and the estimator options, both from their tables
+// (methods/registry.cpp, include/curvbench/estimator_options.h). --labels prints one label a line,
+// each fit at each of its degrees in LO..HI and each degree-free operator once, for scripts
+// (tools/realmeshes.sh).
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -18,16 +19,25 @@ namespace {
 struct MethodsOptions {
   std::string labels;  // "LO-HI"
   bool options = false;
+  std::string markdown;  // "", "flags" or "spellings": the options as docs/cli.md's or
+                         // docs/methods.md's table
 };
 
 int run_methods(const MethodsOptions& o) {
   if (!o.labels.empty()) {
     const auto dash = o.labels.find('-');
     int lo = 0, hi = 0;
-    if (dash == std::string::npos ||
-        std::sscanf(o.labels.c_str(), "%d-%d", &lo, &hi) != 2 || lo < 1 || hi < lo)
+    if (dash == std::string::npos || std::sscanf(o.labels.c_str(), "%d-%d", &lo, &hi) != 2 ||
+        lo < 1 || hi < lo)
       throw UsageError("--labels " + o.labels + ": expected LO-HI, e.g. 2-4");
     for (const std::string& label : method_labels(lo, hi)) std::printf("%s\n", label.c_str());
+    return 0;
+  }
+  if (!o.markdown.empty()) {
+    std::fputs(option_table_markdown(o.markdown == "flags" ? OptionTableStyle::flags
+                                                           : OptionTableStyle::spellings)
+                   .c_str(),
+               stdout);
     return 0;
   }
   if (o.options) {
@@ -37,9 +47,8 @@ int run_methods(const MethodsOptions& o) {
     return 0;
   }
   for (const MethodInfo& m : method_table()) {
-    const std::string degrees = m.is_fit() ? std::to_string(m.min_degree) + ".." +
-                                                 std::to_string(m.max_degree)
-                                           : "-";
+    const std::string degrees =
+        m.is_fit() ? std::to_string(m.min_degree) + ".." + std::to_string(m.max_degree) : "-";
     std::printf("%-13s %-5s %s\n", m.name.c_str(), degrees.c_str(), m.summary.c_str());
   }
   return 0;
@@ -56,6 +65,10 @@ Command add_methods_command(CLI::App& app) {
                   "every degree-free operator once");
   sub->add_flag("--options", o->options,
                 "Print the estimator options (name, which methods take them, default, help)");
+  sub->add_option("--markdown", o->markdown,
+                  "With --options: print them as the markdown table of docs/cli.md (flags) or "
+                  "docs/methods.md (spellings)")
+      ->check(CLI::IsMember({"flags", "spellings"}));
   return [o]() { return run_methods(*o); };
 }
 

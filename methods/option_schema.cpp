@@ -72,7 +72,7 @@ struct EnumNames<Kernel> {
 };
 
 template <class E>
-  requires std::is_enum_v<E>
+requires std::is_enum_v<E>
 struct ValueText<E> {
   static constexpr OptionType type = OptionType::choice;
   static E parse(std::string_view s, const std::string& name) {
@@ -163,11 +163,12 @@ std::string python_name(std::string name) {
 }
 
 template <class T, T EstimatorOptions::*field>
-Option make_option(const char* name, std::string_view scope, std::string_view role,
-                   double lowest, double highest, const char* help) {
+Option make_option(const char* name, const char* field_name, std::string_view scope,
+                   std::string_view role, double lowest, double highest, const char* help) {
   using A = Access<T, field>;
   OptionInfo info;
   info.name = name;
+  info.field = field_name;
   info.python_name = python_name(name);
   info.type = A::Text::type;
   info.scope_name = std::string(scope);
@@ -207,7 +208,7 @@ Option make_option(const char* name, std::string_view scope, std::string_view ro
 
 const std::vector<Option>& options_table() {
 #define CURVBENCH_OPTION_ENTRY(type, field, name, fallback, scope, role, lowest, highest, help) \
-  make_option<type, &EstimatorOptions::field>(name, #scope, #role, lowest, highest, help),
+  make_option<type, &EstimatorOptions::field>(name, #field, #scope, #role, lowest, highest, help),
   static const std::vector<Option> table = {CURVBENCH_ESTIMATOR_OPTIONS(CURVBENCH_OPTION_ENTRY)};
 #undef CURVBENCH_OPTION_ENTRY
   return table;
@@ -245,6 +246,91 @@ const std::vector<OptionInfo>& estimator_option_schema() {
   return infos;
 }
 
+namespace {
+
+// A markdown table cell: '|' escaped.
+std::string cell(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '|') out += '\\';
+    out += c;
+  }
+  return out;
+}
+
+std::string taken_by(const OptionInfo& o) {
+  switch (o.scope) {
+    case OptionScope::all:
+      return "all";
+    case OptionScope::fits:
+      return "fits";
+    case OptionScope::ring_fits:
+      return "ring fits";
+    case OptionScope::operators:
+      return "operators";
+    case OptionScope::listed:
+      break;
+  }
+  std::string names;
+  for (const std::string& m : o.methods) names += (names.empty() ? "" : ", ") + m;
+  return names;
+}
+
+// The value a flag or key takes: N (integer), X (number), or the choices.
+std::string value_word(const OptionInfo& o) {
+  switch (o.type) {
+    case OptionType::integer:
+      return "N";
+    case OptionType::real:
+      return "X";
+    case OptionType::choice: {
+      std::string c;
+      for (const std::string& v : o.choices) c += (c.empty() ? "" : "|") + v;
+      return c;
+    }
+    case OptionType::boolean:
+      break;
+  }
+  return "";
+}
+
+// A boolean's flag sets it away from its default: --noisy (default no), --no-adaptive (yes).
+std::string flag(const OptionInfo& o) {
+  if (o.type == OptionType::boolean)
+    return o.default_text == "yes" ? "--no-" + o.name : "--" + o.name;
+  return "--" + o.name + " " + value_word(o);
+}
+
+std::string away_from_default(const OptionInfo& o) {
+  if (o.type == OptionType::boolean) return o.default_text == "yes" ? "no" : "yes";
+  return value_word(o);
+}
+
+}  // namespace
+
+std::string option_table_markdown(OptionTableStyle style) {
+  std::string md = style == OptionTableStyle::flags
+                       ? "| flag | taken by | default | meaning |\n|---|---|---|---|\n"
+                       : "| option | command line | experiment file | Python | C++ "
+                         "(`EstimatorOptions`) |\n|---|---|---|---|---|\n";
+  for (const Option& entry : options_table()) {
+    const OptionInfo& o = entry.info;
+    if (style == OptionTableStyle::flags) {
+      md += "| `" + cell(flag(o)) + "` | " + taken_by(o) + " | " + cell(o.default_text) + " | " +
+            cell(o.help) + " |\n";
+      continue;
+    }
+    const std::string value = away_from_default(o);
+    const std::string python = o.type == OptionType::boolean  ? (value == "yes" ? "True" : "False")
+                               : o.type == OptionType::choice ? "\"" + o.choices.back() + "\""
+                                                              : value;
+    md += "| " + o.name + " (" + taken_by(o) + ") | `" + cell(flag(o)) + "` | " +
+          (o.role == OptionRole::run ? std::string("-") : "`" + o.name + "=" + cell(value) + "`") +
+          " | `" + o.python_name + "=" + cell(python) + "` | `" + o.field + "` |\n";
+  }
+  return md;
+}
+
 const OptionInfo& option_info(std::string_view name) {
   return find_option(name).info;
 }
@@ -274,16 +360,15 @@ void validate_options(const EstimatorOptions& options) {
 void check_options_apply(const EstimatorOptions& options, const OptionTarget& target) {
   for (const Option& o : options_table()) {
     const OptionInfo& info = o.info;
-    const bool applies = info.scope == OptionScope::all ||
-                         (info.scope == OptionScope::fits && target.fit) ||
-                         (info.scope == OptionScope::ring_fits && target.ring_fit) ||
-                         (info.scope == OptionScope::operators && !target.fit) ||
-                         (info.scope == OptionScope::listed &&
-                          std::find(info.methods.begin(), info.methods.end(), target.name) !=
-                              info.methods.end());
+    const bool applies =
+        info.scope == OptionScope::all || (info.scope == OptionScope::fits && target.fit) ||
+        (info.scope == OptionScope::ring_fits && target.ring_fit) ||
+        (info.scope == OptionScope::operators && !target.fit) ||
+        (info.scope == OptionScope::listed &&
+         std::find(info.methods.begin(), info.methods.end(), target.name) != info.methods.end());
     if (!applies && !o.is_default(options))
-      throw UsageError(info.name + " applies to " + scope_text(info) + ", not to '" +
-                       target.name + "'");
+      throw UsageError(info.name + " applies to " + scope_text(info) + ", not to '" + target.name +
+                       "'");
   }
 }
 

@@ -23,6 +23,7 @@ enum class OptionRole : std::uint8_t { result, run };
 struct OptionInfo {
   std::string name;         ///< "ball-factor": the experiment key and the CLI flag --ball-factor
   std::string python_name;  ///< "ball_factor": Python's keyword (name with '_' for '-')
+  std::string field;        ///< "ball_factor": the member of EstimatorOptions (C++)
   OptionType type;
   OptionScope scope;
   std::string scope_name;  ///< "all", "fits", "ring-fits", "operators", or the methods' names
@@ -37,6 +38,13 @@ struct OptionInfo {
 
 /// Every option, in the table's order.
 const std::vector<OptionInfo>& estimator_option_schema();
+
+/// The option table as markdown, the one docs/cli.md and docs/methods.md carry between their
+/// marker lines (tests/methods/test_option_docs.cpp; `curvbench methods --options --markdown`):
+///   flags      | flag | taken by | default | meaning |  (docs/cli.md)
+///   spellings  | option | command line | experiment file | Python | C++ |  (docs/methods.md)
+enum class OptionTableStyle : std::uint8_t { flags, spellings };
+std::string option_table_markdown(OptionTableStyle style);
 
 /// The option called `name` (its name or Python name); throws UsageError naming the valid ones.
 const OptionInfo& option_info(std::string_view name);
