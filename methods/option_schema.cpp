@@ -8,6 +8,7 @@
 
 #include "core/errors.h"
 #include "core/text.h"
+#include "methods/estimator.h"
 
 namespace curvbench {
 
@@ -182,6 +183,8 @@ Option make_option(const char* name, const char* field_name, std::string_view sc
     info.scope = OptionScope::ring_fits;
   } else if (scope == "operators") {
     info.scope = OptionScope::operators;
+  } else if (scope == "ball_radius") {
+    info.scope = OptionScope::ball_radius;
   } else {  // "normal_cycle" or "normal_cycle|icc" (the stringified macro argument)
     info.scope = OptionScope::listed;
     std::string method;
@@ -222,17 +225,28 @@ const Option& find_option(std::string_view name) {
   throw UsageError("unknown option '" + std::string(name) + "' (valid: " + valid + ")");
 }
 
+// The registered methods whose neighbourhood is a ball (option scope ball_radius).
+std::vector<std::string> ball_radius_methods() {
+  std::vector<std::string> names;
+  for (const MethodInfo& m : method_table())
+    if (m.radius == NeighbourhoodSize::ball_factor) names.push_back(m.name);
+  return names;
+}
+
 std::string scope_text(const OptionInfo& info) {
   if (info.scope == OptionScope::fits) return "the fits only (the methods with a degree)";
   if (info.scope == OptionScope::ring_fits)
     return "the fits of the weighted least-squares framework only (lhf, lop, lscm)";
   if (info.scope == OptionScope::operators) return "the discrete operators only";
+  const std::vector<std::string> methods =
+      info.scope == OptionScope::ball_radius ? ball_radius_methods() : info.methods;
   std::string names;
-  for (size_t i = 0; i < info.methods.size(); ++i) {
-    if (i > 0) names += i + 1 == info.methods.size() ? " and " : ", ";
-    names += "'" + info.methods[i] + "'";
+  for (size_t i = 0; i < methods.size(); ++i) {
+    if (i > 0) names += i + 1 == methods.size() ? " and " : ", ";
+    names += "'" + methods[i] + "'";
   }
-  return (info.methods.size() == 1 ? "method " : "methods ") + names + " only";
+  return (methods.size() == 1 ? "method " : "methods ") + names + " only" +
+         (info.scope == OptionScope::ball_radius ? " (the methods sized by a ball)" : "");
 }
 
 }  // namespace
@@ -268,11 +282,14 @@ std::string taken_by(const OptionInfo& o) {
       return "ring fits";
     case OptionScope::operators:
       return "operators";
+    case OptionScope::ball_radius:
     case OptionScope::listed:
       break;
   }
   std::string names;
-  for (const std::string& m : o.methods) names += (names.empty() ? "" : ", ") + m;
+  for (const std::string& m :
+       o.scope == OptionScope::ball_radius ? ball_radius_methods() : o.methods)
+    names += (names.empty() ? "" : ", ") + m;
   return names;
 }
 
@@ -364,6 +381,7 @@ void check_options_apply(const EstimatorOptions& options, const OptionTarget& ta
         info.scope == OptionScope::all || (info.scope == OptionScope::fits && target.fit) ||
         (info.scope == OptionScope::ring_fits && target.ring_fit) ||
         (info.scope == OptionScope::operators && !target.fit) ||
+        (info.scope == OptionScope::ball_radius && target.ball_radius) ||
         (info.scope == OptionScope::listed &&
          std::find(info.methods.begin(), info.methods.end(), target.name) != info.methods.end());
     if (!applies && !o.is_default(options))

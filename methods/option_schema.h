@@ -15,7 +15,9 @@ namespace curvbench {
 enum class OptionType : std::uint8_t { boolean, integer, real, choice };
 /// Which methods take an option (a value other than its default elsewhere is an error):
 /// listed = the methods OptionInfo::methods names.
-enum class OptionScope : std::uint8_t { all, fits, ring_fits, operators, listed };
+/// ball_radius = the methods whose registry line declares their neighbourhood a ball of radius
+/// C h (NeighbourhoodSize::ball_factor).
+enum class OptionScope : std::uint8_t { all, fits, ring_fits, operators, ball_radius, listed };
 /// result: changes the estimates (experiment method lines, case keys); run: how they are
 /// computed, not what (threads, kernel).
 enum class OptionRole : std::uint8_t { result, run };
@@ -73,6 +75,7 @@ struct OptionTarget {
   std::string name;
   bool fit = false;
   bool ring_fit = false;
+  bool ball_radius = false;  ///< its registry line declares NeighbourhoodSize::ball_factor
 };
 
 /// Checks that every option set away from its default suits the method; throws UsageError

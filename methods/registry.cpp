@@ -108,9 +108,14 @@ std::string valid_names() {
   return s;
 }
 
-// Every option set away from its default must suit the method (methods/option_schema.h).
+const Registration* find(const std::string& name);
+
+// Every option set away from its default must suit the method (methods/option_schema.h); the
+// registry line says whether its neighbourhood is a ball (option ball-factor).
 std::unique_ptr<Estimator> checked(std::unique_ptr<Estimator> est) {
-  check_options_apply(est->options(), {est->name(), est->takes_degree(), est->ring_fit()});
+  const Registration* r = find(est->name());
+  const bool ball = r && r->info.radius == NeighbourhoodSize::ball_factor;
+  check_options_apply(est->options(), {est->name(), est->takes_degree(), est->ring_fit(), ball});
   return est;
 }
 

@@ -15,7 +15,9 @@
 //             all; fits (the degree-d fits); ring_fits (the fits of the paper's weighted
 //             least-squares framework on rings: LHF, LOP, LSCM; Estimator::ring_fit()); operators
 //             (the degree-free discrete operators); or the methods it names, each spelled as
-//             its name with '_' for '-', several joined by '|' (quadric, normal_cycle|icc)
+//             its name with '_' for '-', several joined by '|' (quadric); or ball_radius (the
+//             methods whose registry line declares a ball of radius C h as their neighbourhood,
+//             NeighbourhoodSize::ball_factor in methods/estimator.h)
 //   role      result: it changes the estimates (an experiment's method line may set it, and it
 //             is part of a stored case's key); run: how they are computed, not what (threads,
 //             kernel: the command line, C++ and Python only)
@@ -68,7 +70,7 @@ inline constexpr const char* kKernelNames[] = {"batched", "scalar"};
     "vertex normals of a discrete operator: area, angle or max (default: the method's own)")       \
   X(bool, quadric_constant, "quadric-constant", false, quadric, result, 0, 1,                      \
     "fit 6 coefficients (a constant term) instead of libigl's 5")                                  \
-  X(double, ball_factor, "ball-factor", 0.0, normal_cycle|icc, result, 0.0, 1e6,                   \
+  X(double, ball_factor, "ball-factor", 0.0, ball_radius, result, 0.0, 1e6,                        \
     "the ball of radius C times the mean edge length instead of the 1-ring (0: the 1-ring)")      \
   X(int, threads, "threads", 0, all, run, 0, 1 << 20,                                               \
     "OpenMP threads (0: all cores); the results do not depend on it")                             \
