@@ -39,6 +39,8 @@ const char* to_string(VertexStatus status) {
       return "partial";
     case VertexStatus::reprojected:
       return "reprojected";
+    case VertexStatus::normal_fallback:
+      return "normal_fallback";
   }
   return "unknown";
 }
@@ -63,8 +65,14 @@ double Estimator::half_rings(double rings, const std::string& method) {
 }
 
 std::string Estimator::label() const {
-  if (!takes_degree()) return display_name();
-  return display_name() + "-" + std::to_string(options_.degree);
+  std::string s =
+      takes_degree() ? display_name() + "-" + std::to_string(options_.degree) : display_name();
+  // An operator fed a fit's normals says so: "ICC (LHF-3 normals)".
+  if (options_.vertex_normals.fitted()) {
+    s.append(" (").append(make_estimator(options_.vertex_normals.fit, {})->label());
+    s.append(" normals)");
+  }
+  return s;
 }
 
 std::unique_ptr<MeshData> Estimator::prepare(const Mesh&, const VertexMatrix&, int) const {

@@ -50,10 +50,14 @@ enum class VertexStatus : std::uint8_t {
   reprojected = 7,  ///< LSCM: the map of the ring folded it (the fitted normal turned more than
                     ///< 90 degrees from the mesh's vertex normal); fitted on the ring's
                     ///< orthogonal projection onto the tangent plane instead (LOP's map)
+  normal_fallback = 8,  ///< an operator fed a fit's normals (option vertex-normals = lhf-3, ...):
+                        ///< the fit gave no normal at a vertex whose normal this estimate reads
+                        ///< (the vertex itself, or a corner of a face it sums); the operator's
+                        ///< own vertex normal stood in there; values finite
 };
 
 /// The number of VertexStatus values (arrays indexed by status).
-inline constexpr int kVertexStatusCount = 8;
+inline constexpr int kVertexStatusCount = 9;
 
 const char* to_string(VertexStatus status);
 

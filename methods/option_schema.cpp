@@ -1,6 +1,7 @@
 #include "methods/option_schema.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <span>
@@ -88,6 +89,41 @@ struct ValueText<E> {
   static std::vector<std::string> choices() {
     return {EnumNames<E>::names.begin(), EnumNames<E>::names.end()};
   }
+};
+
+// vertex-normals: a weighting's name, or the label of a degree-d fit whose normals the operator
+// takes, kept as the fit's own label in lower case ("LHF-3" -> "lhf-3", "lhf" -> "lhf-2").
+template <>
+struct ValueText<VertexNormalSource> {
+  using Weighting = ValueText<VertexNormals>;
+  static constexpr OptionType type = OptionType::choice;
+  static VertexNormalSource parse(std::string_view s, const std::string& name) {
+    for (const char* w : kVertexNormalsNames)
+      if (s == w) return Weighting::parse(s, name);
+    const std::string label(s);
+    bool fit = false;
+    try {
+      fit = method_info(label).is_fit();
+    } catch (const UsageError&) {
+      throw UsageError(name + ": unknown value '" + label +
+                       "' (valid: default, area, angle, max, or a fit's label such as lhf-3)");
+    }
+    if (!fit)
+      throw UsageError(name + ": '" + label +
+                       "' is not a fit (a fitted source is a fit's label such as lhf-3, jet-4)");
+    VertexNormalSource v;
+    try {
+      v.fit = make_estimator(label, EstimatorOptions{})->label();
+    } catch (const UsageError& e) {
+      throw UsageError(name + " " + label + ": " + e.what());
+    }
+    for (char& c : v.fit) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return v;
+  }
+  static std::string text(const VertexNormalSource& v) {
+    return v.fitted() ? v.fit : Weighting::text(v.weighting);
+  }
+  static std::vector<std::string> choices() { return Weighting::choices(); }
 };
 
 // ---- one option: its description and the functions that reach its field -------------------------

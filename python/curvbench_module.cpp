@@ -209,7 +209,8 @@ py::array numpy_status_names(const py::array_t<std::uint8_t>& codes) {
   const py::module_ np = py::module_::import("numpy");
   const py::object names =
       np.attr("array")(py::make_tuple("ok", "degree_reduced", "failed", "excluded", "disk_cut",
-                                      "sign_undetermined", "partial", "reprojected"));
+                                      "sign_undetermined", "partial", "reprojected",
+                                      "normal_fallback"));
   return names.attr("__getitem__")(codes);
 }
 
@@ -459,11 +460,13 @@ PYBIND11_MODULE(curvbench, m) {
           "disk), 'sign_undetermined' (finite, but the surface there cannot be "
           "oriented) or 'partial' (what can be determined there is finite, the rest "
           "NaN, e.g. Meyer's directions where its tensor fit is singular) or 'reprojected' "
-          "(LSCM: the map folded the ring, fitted on its projection instead).")
+          "(LSCM: the map folded the ring, fitted on its projection instead) or "
+          "'normal_fallback' (an operator fed a fit's normals: the fit gave none at a vertex "
+          "this estimate reads, the operator's own normal stood in).")
       .def_readonly(
           "status_code", &PyEstimate::status_code,
           "(n,) uint8 status as 0 ok, 1 degree_reduced, 2 failed, 3 excluded, 4 disk_cut, "
-          "5 sign_undetermined, 6 partial, 7 reprojected.")
+          "5 sign_undetermined, 6 partial, 7 reprojected, 8 normal_fallback.")
       .def_readonly("recommendation", &PyEstimate::recommendation,
                     "method='auto': the advice it followed, as curvbench.recommend() returns it "
                     "(method, options, label, the mesh's quality and noise, the sweep's error); "

@@ -31,7 +31,7 @@ CLEAN_ZERO = ("boundary edges", "non-manifold edges", "non-manifold vertices", "
               "duplicate vertices", "duplicate faces", "isolated vertices")
 CLEAN_MIN_VERTICES = 50
 STATUSES = ("ok", "degree_reduced", "failed", "excluded", "disk_cut", "sign_undetermined",
-            "partial", "reprojected")
+            "partial", "reprojected", "normal_fallback")
 # Causes in the order of `curvbench info`'s "hard for estimators" line, then a singular fit.
 CAUSE_ORDER = ("isolated vertex", "component of fewer than 7 vertices",
                "non-manifold neighbourhood", "zero-area faces only", "boundary vertex",

@@ -42,6 +42,7 @@ constexpr Entry kTable[] = {
     {"Goldfeather",  false, "#e7298a", 12, 2},
     {"Normal-cycle", false, "#555555", 14, 4},
     {"ICC",          false, "#66a61e", 3,  5},
+    {"ICC (LHF-3 normals)", false, "#66a61e", 12, 1}, {"Normal-cycle (LHF-3 normals)", false, "#555555", 6, 1},
     {"vtk-curvatures", false, "#17becf", 2, 5},
 };
 // The spare palette of the fallback styles: colours no entry above uses.

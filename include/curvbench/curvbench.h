@@ -41,10 +41,13 @@ enum class Status : std::uint8_t {
                 ///< directions where its edge tensor fit is singular, or only the normal)
   reprojected = 7,  ///< LSCM: the map folded the ring (its normal turned more than 90 degrees
                     ///< from the mesh's); fitted on the ring's projection onto the tangent plane
+  normal_fallback = 8,  ///< an operator fed a fit's normals (vertex_normals = "lhf-3", ...): the
+                        ///< fit gave no normal at a vertex this estimate reads; the operator's own
+                        ///< vertex normal stood in there; values finite
 };
 
 /// "ok", "degree_reduced", "failed", "excluded", "disk_cut", "sign_undetermined", "partial",
-/// "reprojected".
+/// "reprojected", "normal_fallback".
 const char* status_name(Status status);
 
 /// The method and its options. The options (degree, rings, noisy, threads, vertex_normals,

@@ -6,7 +6,8 @@
 // their help texts and their one validation (methods/option_schema.h; docs/extending.md).
 //
 // Each line: X(type, field, "name", default, scope, role, lowest, highest, "help")
-//   type      bool, int, double, or an enum below (text values: its *_names list)
+//   type      bool, int, double, an enum below (text values: its *_names list), or
+//             VertexNormalSource (a weighting's name or a fit's label)
 //   field     the member of EstimatorOptions
 //   name      the option's name: experiment key and CLI flag (--name); Python's keyword is the
 //             name with '-' as '_'
@@ -26,6 +27,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 
 namespace curvbench {
 
@@ -34,6 +36,19 @@ namespace curvbench {
 /// and Goldfeather, and for ICC, whose accuracy follows that of the normals).
 enum class VertexNormals : std::uint8_t { method_default, area, angle, max };
 inline constexpr const char* kVertexNormalsNames[] = {"default", "area", "angle", "max"};
+
+/// Where a discrete operator's vertex normals come from (option vertex-normals): a weighting of
+/// the face normals, or the normals of a degree-d fit run over the mesh first (`fit`, the fit's
+/// label in lower case as make_estimator reads it, e.g. "lhf-3"; empty: the weighting). Text: a
+/// weighting's name or the fit's label. ICC and the normal cycle take a fit's normals.
+struct VertexNormalSource {
+  VertexNormals weighting = VertexNormals::method_default;
+  std::string fit;
+  VertexNormalSource() = default;
+  VertexNormalSource(VertexNormals w) : weighting(w) {}  // NOLINT: implicit, a weighting
+  bool fitted() const { return !fit.empty(); }
+  friend bool operator==(const VertexNormalSource&, const VertexNormalSource&) = default;
+};
 
 /// How a fitting method solves its systems (LHF-d, LOP-d, d = 1..4; the others ignore it):
 /// batched = several vertices at once, one per SIMD lane, falling back to the scalar path for
@@ -65,9 +80,10 @@ inline constexpr const char* kKernelNames[] = {"batched", "scalar"};
     "weight gamma_i = max(0, m_i . m_0) of eq. (15): drop points whose normal turns away")         \
   X(bool, include_centre, "centre", true, ring_fits, result, 0, 1,                                 \
     "fit the constant term with the vertex as a row (no: interpolate through the vertex)")         \
-  X(VertexNormals, vertex_normals, "vertex-normals", VertexNormals::method_default, operators,     \
-    result, 0, 0,                                                                                  \
-    "vertex normals of a discrete operator: area, angle or max (default: the method's own)")       \
+  X(VertexNormalSource, vertex_normals, "vertex-normals", VertexNormals::method_default,          \
+    operators, result, 0, 0,                                                                       \
+    "vertex normals of a discrete operator: area, angle or max (default: the method's own), or "   \
+    "for icc and normal-cycle a fit's label (lhf-3, jet-4, ...) whose normals are fitted first")   \
   X(bool, quadric_constant, "quadric-constant", false, quadric, result, 0, 1,                      \
     "fit 6 coefficients (a constant term) instead of libigl's 5")                                  \
   X(double, ball_factor, "ball-factor", 0.0, ball_radius, result, 0.0, 1e6,                        \

@@ -40,9 +40,12 @@
 //                   1 if d_max <= r, 0 if d_min >= r, else (r - d_min)/(d_max - d_min); the
 //                   region grows face to face from v's faces (CGAL's breadth-first search) and
 //                   stops at faces of fraction 0. Normalised by the weighted mu0, not pi r^2.
-//   normals         Max's weights by default (option vertex-normals). The measures differentiate
-//                   the normal field across each face, so an O(eps) error of the vertex normals
-//                   becomes an O(eps/h) error of H and K: with area weights, whose normals are
+//   normals         Max's weights by default (option vertex-normals; or a fit's normals, e.g.
+//                   vertex-normals=lhf-3, operator_estimator.h: LHF-3's normals are O(h^3), and
+//                   H converges on the well-shaped torus, tests/methods/test_icc.cpp). The
+//                   measures differentiate the normal field across each face, so an O(eps)
+//                   error of the vertex normals becomes an O(eps/h) error of H and K: with area
+//                   weights, whose normals are
 //                   only first-order on the icosphere (error 5.9e-3 at level 4) and on jittered
 //                   meshes, H does not converge (sphere of radius 2, levels 2-4: 4.7%, 5.9%,
 //                   6.3%; jittered torus 31-37%), while Max's normals are exact at the vertices
@@ -52,7 +55,8 @@
 //                   (not offered here); DGtal's examples pass the normals in.
 // Boundary vertices: the measures are additive and need no closed 1-ring; a boundary vertex sums
 // the faces it has (as CGAL skips the null face), status ok, scored over every vertex.
-// Failed: a vertex without faces, mu0(B) <= 0, or non-finite values.
+// Failed: a vertex without faces, mu0(B) <= 0, or non-finite values. normal_fallback: with a
+// fit's normals, a corner of a summed face had none from the fit (its own normal stood in).
 // Determinism: every face's measures are computed by one thread into their own slot; a vertex
 // sums its faces in the order of Mesh::vertex_faces (1-ring) or of the breadth-first search
 // (ball), whatever the number of threads.
@@ -124,7 +128,7 @@ double fraction_in_ball(const Mesh& mesh, int f, const Vec3& c, double r) {
 class IccEstimator final : public OperatorEstimator {
  public:
   explicit IccEstimator(EstimatorOptions options)
-      : OperatorEstimator(options, VertexNormals::max) {}
+      : OperatorEstimator(options, VertexNormals::max, false, FittedNormals::accepted) {}
 
   std::string name() const override { return "icc"; }
   std::string display_name() const override { return "ICC"; }
@@ -168,8 +172,17 @@ class IccEstimator final : public OperatorEstimator {
     const auto& data = static_cast<const IccData&>(*ctx.data);
     IccMeasures sum;
     int used = 0;
+    // Whether a summed face has a corner whose fitted normal was replaced (normal_fallback).
+    bool fell_back = false;
+    const auto corners_fell_back = [&](int f) {
+      return data.fell_back(mesh.face_vertex(f, 0)) || data.fell_back(mesh.face_vertex(f, 1)) ||
+             data.fell_back(mesh.face_vertex(f, 2));
+    };
     if (!ball) {
-      for (int f : faces) sum.add(data.faces[static_cast<size_t>(f)]);
+      for (int f : faces) {
+        sum.add(data.faces[static_cast<size_t>(f)]);
+        fell_back = fell_back || corners_fell_back(f);
+      }
       used = static_cast<int>(faces.size());
     } else {
       auto& ws = static_cast<FaceBallWorkspace&>(base);
@@ -179,12 +192,14 @@ class IccEstimator final : public OperatorEstimator {
         const double w = fraction_in_ball(mesh, f, c, r);
         if (!(w > 0.0)) return;
         sum.add(data.faces[static_cast<size_t>(f)], w);
+        fell_back = fell_back || corners_fell_back(f);
         ++used;
         for (int k = 0; k < 3; ++k) enqueue(mesh.face_neighbor(f, k));
       });
     }
     const Curvature cv = icc_curvature(sum, data.normal(ctx, v));
     if (!set_operator_quantities(cv, computes(), used, ring, out)) set_failed(ring, used, out);
+    mark_fallback(fell_back, out);
   }
 };
 

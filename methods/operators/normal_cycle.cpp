@@ -21,9 +21,10 @@
 //          with a part inside the ball counts with the length of that part; |B| = pi r^2 (the
 //          area of the surface inside the ball up to O(r^2 kappa^2)).
 // Choices: the paper leaves the normal open (T's third eigenvector estimates it); we use the
-// area-weighted vertex normal (option EstimatorOptions::vertex_normals) for the tangent plane and
-// report it. No public code of the authors exists; the 1-ring variant is the one of Alliez et
-// al. 2003 ("Anisotropic polygonal remeshing"), the ball one the paper's.
+// area-weighted vertex normal (option EstimatorOptions::vertex_normals, which may also name a
+// fit whose normals to take, e.g. lhf-3: status normal_fallback where it gives none) for the
+// tangent plane and report it. No public code of the authors exists; the 1-ring variant is the
+// one of Alliez et al. 2003 ("Anisotropic polygonal remeshing"), the ball one the paper's.
 // Boundary: an edge of B without a second face has no dihedral angle; a vertex whose region
 // reaches the boundary is excluded (values NaN). Non-finite values: failed.
 // Cost: prepare(), one unit normal per face and one atan2 per interior edge; estimate(), 1-ring,
@@ -92,7 +93,7 @@ double length_in_ball(const Vec3& a, const Vec3& b, const Vec3& c, double r) {
 class NormalCycleEstimator final : public OperatorEstimator {
  public:
   explicit NormalCycleEstimator(EstimatorOptions options)
-      : OperatorEstimator(options, VertexNormals::area) {}
+      : OperatorEstimator(options, VertexNormals::area, false, FittedNormals::accepted) {}
 
   std::string name() const override { return "normal-cycle"; }
   std::string display_name() const override { return "Normal-cycle"; }
@@ -235,6 +236,7 @@ class NormalCycleEstimator final : public OperatorEstimator {
     cv.H = 0.5 * (cv.k1 + cv.k2);
     cv.K = cv.k1 * cv.k2;
     if (!set_operator_quantities(cv, computes(), edges, ring, out)) set_failed(ring, edges, out);
+    mark_fallback(data.fell_back(v), out);  // only v's own normal is read
   }
 };
 

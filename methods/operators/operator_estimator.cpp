@@ -2,6 +2,7 @@
 #include "methods/operators/operator_estimator.h"
 
 #include <string>
+#include <vector>
 
 #include "core/errors.h"
 #include "core/text.h"
@@ -11,7 +12,7 @@
 namespace curvbench {
 
 OperatorEstimator::OperatorEstimator(EstimatorOptions options, VertexNormals default_normals,
-                                     bool ring_option)
+                                     bool ring_option, FittedNormals fitted)
     : Estimator(options), default_normals_(default_normals) {
   if (options_.degree != 0)
     throw UsageError("a discrete operator takes no degree (got " + std::to_string(options_.degree) +
@@ -19,11 +20,26 @@ OperatorEstimator::OperatorEstimator(EstimatorOptions options, VertexNormals def
   if (!ring_option && options_.rings != 0.0 && options_.rings != 1.0)
     throw UsageError("this method uses the 1-ring only (got ring " + format_g(options_.rings) +
                      ")");
+  const std::string& fit = options_.vertex_normals.fit;
+  if (fit.empty()) return;
+  if (fitted == FittedNormals::refused)
+    throw UsageError("vertex-normals " + fit +
+                     ": a fit's normals apply to icc and normal-cycle only (this method takes "
+                     "area, angle or max)");
+  // The fit runs as the operator does (threads, kernel), and with its noisy input's ring.
+  EstimatorOptions fit_options;
+  fit_options.noisy = options_.noisy;
+  fit_options.threads = options_.threads;
+  fit_options.kernel = options_.kernel;
+  normal_fit_ = make_estimator(fit, fit_options);
+  if (!normal_fit_->takes_degree())
+    throw UsageError("vertex-normals: '" + fit +
+                     "' is not a fit (a fitted source is a fit's label such as lhf-3, jet-4)");
 }
 
 VertexNormals OperatorEstimator::normal_weighting() const {
-  return options_.vertex_normals == VertexNormals::method_default ? default_normals_
-                                                                  : options_.vertex_normals;
+  const VertexNormals w = options_.vertex_normals.weighting;
+  return w == VertexNormals::method_default ? default_normals_ : w;
 }
 
 std::unique_ptr<Workspace> OperatorEstimator::make_workspace(const Mesh&) const {
@@ -32,9 +48,28 @@ std::unique_ptr<Workspace> OperatorEstimator::make_workspace(const Mesh&) const 
 
 void OperatorEstimator::fill_mesh_data(const Mesh& mesh, int threads,
                                        OperatorMeshData& data) const {
-  // The area-weighted normals are MeshContext::approx_normals already.
-  if (normal_weighting() != VertexNormals::area)
-    data.normals = weighted_vertex_normals(mesh, normal_weighting(), threads);
+  if (normal_fit_ == nullptr) {
+    // The area-weighted normals are MeshContext::approx_normals already.
+    if (normal_weighting() != VertexNormals::area)
+      data.normals = weighted_vertex_normals(mesh, normal_weighting(), threads);
+    return;
+  }
+  // A fit's normals: turned to the side of the own normal, which stands in where there is none.
+  data.normals = weighted_vertex_normals(mesh, normal_weighting(), threads);
+  const std::vector<VertexEstimate> fitted = estimate_mesh(mesh, *normal_fit_);
+  const int n = mesh.num_vertices();
+  data.fallback.assign(static_cast<size_t>(n), 0);
+  for (int v = 0; v < n; ++v) {
+    const VertexEstimate& e = fitted[static_cast<size_t>(v)];
+    const bool usable = e.status != VertexStatus::failed && e.status != VertexStatus::excluded &&
+                        e.normal.allFinite() && e.normal.squaredNorm() > 0.0;
+    if (!usable) {
+      data.fallback[static_cast<size_t>(v)] = 1;
+      continue;
+    }
+    const Vec3 own = data.normals.row(v).transpose();
+    data.normals.row(v) = (own.dot(e.normal) < 0.0 ? Vec3(-e.normal) : e.normal).transpose();
+  }
 }
 
 std::unique_ptr<MeshData> OperatorEstimator::prepare(const Mesh& mesh, const VertexMatrix&,

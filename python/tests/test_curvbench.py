@@ -89,7 +89,7 @@ def test_shapes_dtypes_and_sign_convention():
     assert est.status.shape == (n,) and est.status_code.dtype == np.uint8
     assert set(est.status) <= {
         "ok", "degree_reduced", "failed", "excluded", "disk_cut", "sign_undetermined", "partial",
-        "reprojected"}
+        "reprojected", "normal_fallback"}
     assert np.all(est.k1 >= est.k2)
     # Outward normals on the closed torus: the estimate agrees with the exact normal.
     assert np.all(np.einsum("ij,ij->i", est.normal, exact.normal) > 0.9)
@@ -242,7 +242,8 @@ def test_options_of_single_methods_match_the_command_line(torus, tmp_path):
     for method, cli_args, kwargs in (
             ("meyer", ["--vertex-normals", "angle"], {"vertex_normals": "angle"}),
             ("quadric", ["--quadric-constant"], {"quadric_constant": True}),
-            ("normal-cycle", ["--ball-factor", "2"], {"ball_factor": 2.0})):
+            ("normal-cycle", ["--ball-factor", "2"], {"ball_factor": 2.0}),
+            ("icc", ["--vertex-normals", "lhf-3"], {"vertex_normals": "lhf-3"})):
         out = tmp_path / f"{method}.csv"
         r = cli("estimate", torus, "--method", method, *cli_args, "--output", out)
         assert r.returncode == 0, r.stderr
@@ -255,7 +256,13 @@ def test_options_of_single_methods_match_the_command_line(torus, tmp_path):
     with pytest.raises(curvbench.UsageError) as e:
         curvbench.estimate(V, F, method="lhf", vertex_normals="max")
     assert str(e.value) == want
-    for kwargs in ({"vertex_normals": "cot"}, {"quadric_constant": True}, {"ball_factor": 1.0}):
+    want = error_line("estimate", torus, "--method", "icc", "--vertex-normals", "meyer",
+                      "--output", tmp_path / "y.csv")
+    with pytest.raises(curvbench.UsageError) as e:
+        curvbench.estimate(V, F, method="icc", vertex_normals="meyer")  # not a fit
+    assert str(e.value) == want
+    for kwargs in ({"vertex_normals": "cot"}, {"vertex_normals": "lhf-3"},
+                   {"quadric_constant": True}, {"ball_factor": 1.0}):
         with pytest.raises(curvbench.UsageError):
             curvbench.estimate(V, F, method="meyer", **kwargs)
 

@@ -6,11 +6,15 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <string>
+#include <utility>
 
 #include "core/errors.h"
+#include "meshgen/generate.h"
 #include "method_test_util.h"
 #include "methods/estimator.h"
 #include "methods/operators/icc.h"
+#include "methods/option_schema.h"
 #include "operator_test_util.h"
 
 namespace curvbench {
@@ -293,6 +297,164 @@ TEST(Icc, ThreadIndependent) {
   expect_thread_independent("icc", ball(2.5), m);
   const GeneratedMesh g = torus_structured(2, true, 5);
   expect_thread_independent("icc", {}, g.mesh);
+}
+
+// ---- a fit's normals (option vertex-normals = lhf-3, ...)
+// ----------------------------------------
+
+EstimatorOptions fitted(const std::string& label) {
+  EstimatorOptions o;
+  set_option(o, "vertex-normals", label);
+  return o;
+}
+
+// The option reads a fit's label, keeps it as the fit's own label in lower case, and says so in
+// the method's label; anything else is a one-line UsageError.
+TEST(IccFittedNormals, OptionLabelAndErrors) {
+  EXPECT_EQ(fitted("LHF-3").vertex_normals.fit, "lhf-3");
+  EXPECT_EQ(fitted("lhf").vertex_normals.fit, "lhf-2");  // a fit's default degree
+  EXPECT_EQ(fitted("jet-4").vertex_normals.fit, "jet-4");
+  EXPECT_EQ(option_text(fitted("lop-2"), option_info("vertex-normals")), "lop-2");
+  EXPECT_EQ(fitted("angle").vertex_normals, VertexNormals::angle);
+  EXPECT_EQ(make_estimator("icc", fitted("lhf-3"))->label(), "ICC (LHF-3 normals)");
+  EXPECT_EQ(make_estimator("normal-cycle", fitted("jet-4"))->label(),
+            "Normal-cycle (Jet-4 normals)");
+  EXPECT_EQ(make_estimator("icc", {})->label(), "ICC");
+  const auto one_line_usage_error = [](const auto& f, const std::string& needle) {
+    try {
+      f();
+      ADD_FAILURE() << "no error for " << needle;
+    } catch (const UsageError& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+      EXPECT_NE(what.find(needle), std::string::npos) << what;
+    }
+  };
+  EstimatorOptions o;
+  for (const char* bad : {"nope", "meyer", "icc", "lhf-9", "jet-5", "icc-3"})
+    one_line_usage_error([&] { set_option(o, "vertex-normals", bad); }, "vertex-normals");
+  // The same refusals when the field is set directly (C++), at make_estimator.
+  for (const char* bad : {"meyer", "nope"}) {
+    EstimatorOptions direct;
+    direct.vertex_normals.fit = bad;
+    one_line_usage_error([&] { (void)make_estimator("icc", direct); }, "");
+  }
+  // Operators other than ICC and the normal cycle refuse a fit's normals; fits take no
+  // vertex-normals at all.
+  for (const char* op : {"meyer", "taubin", "rusinkiewicz", "quadric", "goldfeather"})
+    one_line_usage_error([&] { (void)make_estimator(op, fitted("lhf-3")); },
+                         "icc and normal-cycle");
+  one_line_usage_error([&] { (void)make_estimator("lhf-2", fitted("lhf-3")); }, "vertex-normals");
+}
+
+// The sign convention with LHF-3's normals on the sphere of radius 2 (k1 = k2 = H = -1/2,
+// outward normals; sphere_errors checks the status, k1 >= k2, H = (k1 + k2)/2 and the frame at
+// every vertex): a wrong sign would be a relative error of 2. The fitted normals are not exactly
+// radial (max error 1.1e-3, 2.9e-4, 4.3e-5 at levels 2-4: third order), so ICC's H is not exact
+// as with Max's normals but converges (2.5e-3, 1.3e-3, 3.5e-4); the normal cycle's 1-ring H
+// error comes from its dihedral angles, not its normals (2.9e-2, 2.6e-2, 2.3e-2). Inward faces
+// flip every sign (the fitted normals are turned to the faces' side).
+TEST(IccFittedNormals, SphereConvention) {
+  for (const char* method : {"icc", "normal-cycle"}) {
+    const auto est = make_estimator(method, fitted("lhf-3"));
+    SphereErrors prev;
+    for (int level = 2; level <= 4; ++level) {
+      const SphereErrors e = sphere_errors(*est, level, 2.0, /*k_is_product=*/false);
+      std::printf("%s lhf-3 normals sphere level %d: h %.3e  H %.3e  K %.3e  n %.3e\n", method,
+                  level, e.h, e.H, e.K, e.n);
+      EXPECT_LT(e.H, 0.05) << level;
+      if (level > 2) {
+        EXPECT_LT(e.n, prev.n / 3.0) << level;  // h halves: at least 3x smaller
+        if (std::string(method) == "icc") {
+          EXPECT_LT(e.H, prev.H) << level;
+        }
+      }
+      prev = e;
+    }
+    EXPECT_LT(prev.n, 1e-4);
+    expect_inward_flips_sign(*est);
+  }
+}
+
+// Same bytes for 1, 2 and 3 threads: the fit runs in prepare() under the operator's threads.
+TEST(IccFittedNormals, ThreadIndependent) {
+  const Mesh m = generate_mesh({"torus-unstructured", 1}).mesh;
+  for (const char* method : {"icc", "normal-cycle"})
+    for (const char* fit : {"lhf-3", "jet-3"}) {
+      EstimatorOptions o = fitted(fit);
+      o.ball_factor = std::string(fit) == "jet-3" ? 2.0 : 0.0;  // the 1-ring and a ball
+      o.threads = 1;
+      const auto a = estimate_mesh(m, *make_estimator(method, o));
+      for (int t : {2, 3}) {
+        o.threads = t;
+        const auto b = estimate_mesh(m, *make_estimator(method, o));
+        ASSERT_EQ(a.size(), b.size());
+        for (size_t i = 0; i < a.size(); ++i)
+          ASSERT_TRUE(bitwise_equal(a[i], b[i])) << method << " " << fit << " v " << i;
+      }
+    }
+}
+
+// Where the fit gives no normal (Xu-2 excludes boundary vertices), the operator's own normal
+// stands in: ICC marks every vertex whose summed faces have such a corner (the boundary vertices
+// and their neighbours) normal_fallback, with finite values; the others are ok.
+TEST(IccFittedNormals, FallbackWhereTheFitGivesNoNormal) {
+  const int N = 8;
+  const Mesh m = grid_mesh(N, 0.1, false, 0.1, 7, [](double x, double y) {
+    return Vec3(x, y, 0.3 * x * x - 0.2 * y * y);
+  });
+  const auto r = estimate_mesh(m, *make_estimator("icc", fitted("xu-2")));
+  int fallback = 0;
+  for (int v = 0; v < m.num_vertices(); ++v) {
+    const VertexEstimate& q = r[static_cast<size_t>(v)];
+    const int i = v % (N + 1), j = v / (N + 1);
+    const int from_boundary = std::min({i, j, N - i, N - j});
+    EXPECT_EQ(q.status, from_boundary <= 1 ? VertexStatus::normal_fallback : VertexStatus::ok) << v;
+    EXPECT_TRUE(std::isfinite(q.H) && std::isfinite(q.K) && q.normal.allFinite()) << v;
+    fallback += q.status == VertexStatus::normal_fallback;
+  }
+  EXPECT_EQ(fallback, (N + 1) * (N + 1) - (N - 3) * (N - 3));
+  EXPECT_STREQ(to_string(VertexStatus::normal_fallback), "normal_fallback");
+}
+
+// H L2 error ||H~ - H||_2 / ||H||_2 of `method` with `o` on a generated mesh, against the
+// exact surface (as tests/methods/test_convergence.cpp).
+double h_l2(const GeneratedMesh& gm, const std::string& method, const EstimatorOptions& o) {
+  const auto res = estimate_mesh(gm.mesh, *make_estimator(method, o));
+  double sh = 0.0, shh = 0.0;
+  for (int i = 0; i < gm.mesh.num_vertices(); ++i) {
+    const VertexEstimate& r = res[static_cast<size_t>(i)];
+    EXPECT_EQ(r.status, VertexStatus::ok) << method << " v " << i;
+    const SurfacePoint sp = gm.surface->evaluate(gm.exact_points.row(i).transpose());
+    sh += (r.H - sp.H) * (r.H - sp.H);
+    shh += sp.H * sp.H;
+  }
+  return std::sqrt(sh / shh);
+}
+
+// The goal of issue 36 item 4: on the well-shaped torus (torus-unstructured), levels 2 and 4,
+// ICC with its own (Max's) normals stalls in H L2 (2.78e-2, 2.71e-2: rate 0.02), ICC fed LHF-3's
+// normals converges (4.57e-3, 1.04e-3: rate 1.07).
+TEST(IccFittedNormals, ConvergesOnTheWellShapedTorusWithLhf3Normals) {
+  MeshSpec spec;
+  spec.family = "torus-unstructured";
+  spec.level = 2;
+  const GeneratedMesh coarse = generate_mesh(spec);
+  spec.level = 4;
+  const GeneratedMesh fine = generate_mesh(spec);
+  const double lh = std::log(coarse.mesh.mean_edge_length() / fine.mesh.mean_edge_length());
+  const auto rate = [&](const EstimatorOptions& o) {
+    const double e2 = h_l2(coarse, "icc", o), e4 = h_l2(fine, "icc", o);
+    const double r = std::log(e2 / e4) / lh;
+    std::printf("torus-unstructured %s: H L2 level 2 %.3e, level 4 %.3e, rate %.2f\n",
+                make_estimator("icc", o)->label().c_str(), e2, e4, r);
+    return std::pair{r, e4};
+  };
+  const auto [own_rate, own_e4] = rate({});
+  const auto [fit_rate, fit_e4] = rate(fitted("lhf-3"));
+  EXPECT_LT(own_rate, 0.3);
+  EXPECT_GE(fit_rate, 1.0);
+  EXPECT_LT(fit_e4, own_e4);
 }
 
 }  // namespace
