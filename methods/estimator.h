@@ -201,6 +201,11 @@ class Estimator {
 /// method it does not apply to (methods/option_schema.h).
 std::unique_ptr<Estimator> make_estimator(const std::string& name, EstimatorOptions options);
 
+/// The degree make_estimator(name, options) builds the estimator with (options().degree), without
+/// building it: the degree attached to the name, else options.degree, else 2 for a fit; 0 for a
+/// degree-free method. Throws make_estimator's UsageErrors for the name and the degree.
+int estimator_degree(const std::string& name, EstimatorOptions options);
+
 /// The family a method belongs to on the results site and in the leaderboard's filters.
 enum class MethodGroup {
   paper_fit,  ///< the paper's parameterization-based fits (LHF, LOP, Xu, LSCM)
