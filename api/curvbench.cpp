@@ -1,34 +1,140 @@
 // The public C++ API (include/curvbench/curvbench.h) over the library's layers.
 #include "curvbench/curvbench.h"
 
+#include <cmath>
 #include <utility>
 
 #include "api/make_api_estimator.h"
+#include "core/text.h"
 #include "curvbench/version.h"
+#include "harness/model/metrics.h"
+#include "harness/model/score.h"
+#include "harness/report/recommend_table.h"
 #include "mesh/io.h"
 #include "mesh/mesh.h"
+#include "meshgen/generate.h"
 #include "methods/estimate_oriented.h"
 #include "methods/estimator.h"
+#include "methods/option_schema.h"
 
 namespace curvbench {
 
-const char* status_name(Status status) {
-  return to_string(static_cast<VertexStatus>(status));
-}
+namespace {
 
-EstimateResult estimate(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
-                        const EstimateOptions& options) {
+Mesh to_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
   if (V.cols() != 3)
     throw InputError("V: expected n x 3 vertex positions, got " + std::to_string(V.rows()) + " x " +
                      std::to_string(V.cols()));
   if (F.cols() != 3)
     throw InputError("F: expected m x 3 triangle indices, got " + std::to_string(F.rows()) + " x " +
                      std::to_string(F.cols()));
-  const std::unique_ptr<Estimator> est = make_api_estimator(options);
-  Mesh mesh(VertexMatrix(V), FaceMatrix(F), "mesh");
+  return Mesh(VertexMatrix(V), FaceMatrix(F), "mesh");
+}
+
+MeshAdvice mesh_advice(const Advice& a) {
+  MeshAdvice r;
+  r.quality = a.mesh_class.quality;
+  r.quality_reason = a.mesh_class.reason;
+  r.sigma_over_h = a.sigma_over_h;
+  r.noise_estimated = a.noise_estimated;
+  r.noise_level = a.noise_level;
+  r.swept = a.has_choice;
+  r.table = a.table;
+  r.provenance = a.provenance;
+  if (!a.has_choice) return r;
+  r.method = a.choice.method;
+  r.parameter = a.choice.parameter;
+  r.radius = a.choice.radius;
+  r.label = a.row.best_label;
+  r.quantity = a.row.quantity;
+  r.norm = a.row.norm;
+  r.error = a.row.best_error;
+  r.experiment = a.row.experiment;
+  r.family = a.row.family;
+  r.level = a.row.level;
+  return r;
+}
+
+// The estimates as the harness's metrics read them.
+std::vector<VertexEstimate> vertex_estimates(const EstimateResult& r) {
+  std::vector<VertexEstimate> out(r.status.size());
+  for (size_t i = 0; i < out.size(); ++i) {
+    const auto k = static_cast<Eigen::Index>(i);
+    VertexEstimate& e = out[i];
+    e.normal = r.normal.row(k).transpose();
+    e.k1 = r.k1(k);
+    e.k2 = r.k2(k);
+    e.H = r.H(k);
+    e.K = r.K(k);
+    e.d1 = r.d1.row(k).transpose();
+    e.d2 = r.d2.row(k).transpose();
+    e.degree = r.degree(k);
+    e.points = r.points(k);
+    e.ring = r.ring(k);
+    e.status = r.status[i];
+  }
+  return out;
+}
+
+std::vector<SurfacePoint> surface_points(const ExactQuantities& x) {
+  std::vector<SurfacePoint> out(x.umbilic.size());
+  for (size_t i = 0; i < out.size(); ++i) {
+    const auto k = static_cast<Eigen::Index>(i);
+    SurfacePoint& p = out[i];
+    p.point = x.point.row(k).transpose();
+    p.normal = x.normal.row(k).transpose();
+    p.k1 = x.k1(k);
+    p.k2 = x.k2(k);
+    p.H = x.H(k);
+    p.K = x.K(k);
+    p.d1 = x.d1.row(k).transpose();
+    p.d2 = x.d2.row(k).transpose();
+    p.umbilic = x.umbilic[i];
+  }
+  return out;
+}
+
+const char* type_name(OptionType t) {
+  switch (t) {
+    case OptionType::boolean:
+      return "bool";
+    case OptionType::integer:
+      return "int";
+    case OptionType::real:
+      return "double";
+    case OptionType::choice:
+      return "choice";
+  }
+  return "choice";
+}
+
+}  // namespace
+
+const char* status_name(Status status) {
+  return to_string(status);
+}
+
+EstimateResult estimate(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
+                        const EstimateOptions& options) {
+  // Method "auto": the estimator of the advice for the mesh, chosen once the mesh is made.
+  const bool automatic = is_auto_method(options.method);
+  std::unique_ptr<Estimator> est = automatic ? nullptr : make_api_estimator(options);
+  Mesh mesh = to_mesh(V, F);
+  EstimateResult out;
+  if (automatic) {
+    const Advice advice = advise(mesh, std::nan(""), default_recommendations());
+    if (!advice.has_choice)
+      throw InputError(advice.table + ": no sweep ran for " + advice.mesh_class.quality +
+                       " meshes at sigma/h " + format_g(advice.noise_level) +
+                       ", so method='auto' has no choice; name the method");
+    EstimateOptions chosen;
+    static_cast<EstimatorOptions&>(chosen) = auto_options(advice.choice, options, true);
+    chosen.method = advice.choice.method;
+    est = make_api_estimator(chosen);
+    out.recommendation = mesh_advice(advice);
+  }
   const std::vector<VertexEstimate> res = estimate_oriented(std::move(mesh), *est).estimates;
   const Eigen::Index n = static_cast<Eigen::Index>(res.size());
-  EstimateResult out;
   out.method = est->label();
   out.normal.resize(n, 3);
   out.d1.resize(n, 3);
@@ -53,15 +159,104 @@ EstimateResult estimate(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
     out.degree(i) = e.degree;
     out.points(i) = e.points;
     out.ring(i) = e.ring;
-    out.status[static_cast<size_t>(i)] = static_cast<Status>(e.status);
+    out.status[static_cast<size_t>(i)] = e.status;
   }
   return out;
 }
 
-void read_mesh(const std::string& path, Eigen::MatrixXd& V, Eigen::MatrixXi& F) {
-  const Mesh mesh = read_mesh(path);
+void read_mesh(const std::string& path, Eigen::MatrixXd& V, Eigen::MatrixXi& F,
+               std::vector<std::string>* warnings) {
+  MeshReadReport report;
+  const Mesh mesh = read_mesh(path, &report);
   V = mesh.vertices();
   F = mesh.faces();
+  if (warnings) *warnings = read_warnings(path, report);
+}
+
+MeshAdvice recommend(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
+                         const RecommendOptions& options) {
+  const RecommendationTable table = options.results.empty()
+                                        ? default_recommendations()
+                                        : read_recommendations_csv(options.results);
+  return mesh_advice(advise(to_mesh(V, F), options.noise, table));
+}
+
+TestMesh generate_mesh(const TestMeshOptions& options) {
+  MeshSpec spec;
+  spec.family = options.family;
+  spec.level = options.level;
+  spec.noise_order = options.noise_order;
+  spec.seed = options.seed;
+  for (const auto& [name, value] : options.shape) set_mesh_option(spec.shape, name, value);
+  const GeneratedMesh g = generate_mesh(spec);
+  const int n = g.mesh.num_vertices();
+  TestMesh out;
+  out.V = g.mesh.vertices();
+  out.F = g.mesh.faces();
+  out.surface = g.surface->name();
+  out.description = g.description;
+  ExactQuantities& x = out.exact;
+  x.point.resize(n, 3);
+  x.normal.resize(n, 3);
+  x.d1.resize(n, 3);
+  x.d2.resize(n, 3);
+  x.k1.resize(n);
+  x.k2.resize(n);
+  x.H.resize(n);
+  x.K.resize(n);
+  x.umbilic.resize(static_cast<size_t>(n));
+  for (int v = 0; v < n; ++v) {
+    const SurfacePoint p = g.surface->evaluate(g.exact_points.row(v).transpose());
+    x.point.row(v) = p.point.transpose();
+    x.normal.row(v) = p.normal.transpose();
+    x.d1.row(v) = p.d1.transpose();
+    x.d2.row(v) = p.d2.transpose();
+    x.k1(v) = p.k1;
+    x.k2(v) = p.k2;
+    x.H(v) = p.H;
+    x.K(v) = p.K;
+    x.umbilic[static_cast<size_t>(v)] = p.umbilic;
+  }
+  return out;
+}
+
+std::vector<MeshOptionDescription> mesh_options() {
+  std::vector<MeshOptionDescription> out;
+  for (const MeshOptionInfo& o : mesh_option_table())
+    out.push_back({o.name, o.default_value, o.help});
+  return out;
+}
+
+std::vector<QuantityError> score(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
+                                 const ExactQuantities& exact, const EstimateResult& estimate,
+                                 const std::string& vertex_set) {
+  const VertexSet set = parse_vertex_set(vertex_set);
+  const Mesh mesh = to_mesh(V, F);
+  const size_t n = static_cast<size_t>(mesh.num_vertices());
+  if (estimate.status.size() != n || exact.umbilic.size() != n)
+    throw InputError("score: the estimate has " + std::to_string(estimate.status.size()) +
+                     " vertices, the exact answer " + std::to_string(exact.umbilic.size()) +
+                     ", the mesh " + std::to_string(n));
+  static constexpr Quantity kAll[] = {Quantity::normal, Quantity::H,  Quantity::K,
+                                      Quantity::k1,     Quantity::k2, Quantity::d1};
+  const ScoreResult r =
+      score_estimates(mesh, surface_points(exact), vertex_estimates(estimate), kAll, set);
+  std::vector<QuantityError> out;
+  for (const QuantityScore& s : r.scores)
+    out.push_back({to_string(s.quantity), s.l2.value, s.linf.value, s.l2.vertices, s.l2.excluded});
+  return out;
+}
+
+std::vector<OptionDescription> estimator_options() {
+  std::vector<OptionDescription> out;
+  for (const OptionInfo& o : estimator_option_schema())
+    out.push_back({o.name, o.python_name, type_name(o.type), o.default_text, o.help});
+  return out;
+}
+
+void set_estimator_option(EstimatorOptions& options, const std::string& name,
+                          const OptionValue& value) {
+  set_option_value(options, name, value);
 }
 
 std::vector<std::string> methods() {

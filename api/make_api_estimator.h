@@ -1,5 +1,4 @@
-// The estimator of a public EstimateOptions (include/curvbench/curvbench.h), shared by the C++
-// API and the Python module (python/).
+// The estimator of a public EstimateOptions (include/curvbench/curvbench.h), for the C++ API.
 #pragma once
 
 #include <memory>

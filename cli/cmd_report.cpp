@@ -14,11 +14,10 @@ namespace curvbench::cli {
 
 namespace {
 
+// The flags; those of render_results are bound straight into its options.
 struct ReportArgs {
-  std::string results = "results";
-  std::string site;
+  RenderOptions render;
   std::string experiments_dir = "experiments";
-  std::string chart_js = "/usr/share/javascript/chart.js/chart.min.js";
   bool site_only = false;
   bool no_plots = false;
 };
@@ -31,12 +30,13 @@ Command add_report_command(CLI::App& app) {
       "Re-render the report (REPORT.md, report/*.md, CLAIMS.md, leaderboard.csv, plots) and the "
       "results site from the CSVs of a results folder, computing nothing");
   auto a = std::make_shared<ReportArgs>();
-  sub->add_option("--results", a->results, "Results folder holding the CSVs")
+  sub->add_option("--results", a->render.output, "Results folder holding the CSVs")
       ->capture_default_str();
-  sub->add_option("--site", a->site, "Site folder (default: <results>/site)");
+  sub->add_option("--site", a->render.site_dir, "Site folder (default: <results>/site)");
   sub->add_option("--experiments-dir", a->experiments_dir, "Folder of .exp files")
       ->capture_default_str();
-  sub->add_option("--chart-js", a->chart_js, "Chart.js to copy into the site (libjs-chart.js)")
+  sub->add_option("--chart-js", a->render.chart_js,
+                  "Chart.js to copy into the site (libjs-chart.js)")
       ->capture_default_str();
   sub->add_flag("--site-only", a->site_only,
                 "Write only the site (seconds; the markdown files are left as they are)");
@@ -46,11 +46,8 @@ Command add_report_command(CLI::App& app) {
       "version (a missing column) stops the command with exit code 2, naming the file. The site "
       "is written into a temporary folder and renamed into place: nothing half written is left.");
   return [a]() {
-    RenderOptions o;
+    RenderOptions& o = a->render;
     o.experiments = load_experiments(a->experiments_dir);
-    o.output = a->results;
-    o.site_dir = a->site;
-    o.chart_js = a->chart_js;
     o.plots = !a->no_plots;
     o.markdown = !a->site_only;
     o.require_all = true;

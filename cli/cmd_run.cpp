@@ -73,23 +73,19 @@ std::string duration(double s) {
   return buf;
 }
 
+// The flags; those of the pipeline are bound straight into its options.
 struct RunArgs {
+  PipelineOptions pipeline;
   std::vector<std::string> experiments;
   bool all = false;
   bool list = false;
   bool list_cases = false;
   std::string shard;  ///< "K/N"
-  std::string cache;  ///< case store folder ("" = <output>/.cache)
-  bool report_only = false;
   bool claims_only = false;
   bool no_plots = false;
   bool no_readings = false;
-  bool force = false;
   bool full = false;
   std::string experiments_dir = "experiments";
-  std::string output = "results";
-  int threads = 0;
-  int table4_max = 256;
 };
 
 // Parses "K/N" (1 <= K <= N).
@@ -129,9 +125,9 @@ Command add_run_command(CLI::App& app) {
   sub->add_option("--shard", args->shard,
                   "Run only shard K of N (K/N, 1 <= K <= N): a fixed partition of the cases "
                   "balanced by expected cost; results go to the case store only");
-  sub->add_option("--cache", args->cache,
+  sub->add_option("--cache", args->pipeline.store_dir,
                   "Case store folder (default <output>/.cache); may be on a shared filesystem");
-  sub->add_flag("--report-only", args->report_only,
+  sub->add_flag("--report-only", args->pipeline.report_only,
                 "Compute nothing: write the experiment CSVs from the case store, then rates, "
                 "REPORT.md, plots and CLAIMS.md; fails naming the missing cases if the store is "
                 "incomplete (an experiment with no stored case keeps its existing CSV)");
@@ -139,18 +135,20 @@ Command add_run_command(CLI::App& app) {
                 "Compute nothing and rewrite nothing but <output>/CLAIMS.md, from the CSVs "
                 "already in <output> and <output>/readings/");
   sub->add_flag("--no-plots", args->no_plots, "Do not render plots");
-  sub->add_flag("--no-readings", args->no_readings,
-                "Do not run the experiments under the alternative readings of the paper "
-                "(harness/readings/readings.cpp) into <output>/readings/; CLAIMS.md still reads any "
-                "that are there");
-  sub->add_flag("--force", args->force,
+  sub->add_flag(
+      "--no-readings", args->no_readings,
+      "Do not run the experiments under the alternative readings of the paper "
+      "(harness/readings/readings.cpp) into <output>/readings/; CLAIMS.md still reads any "
+      "that are there");
+  sub->add_flag("--force", args->pipeline.run.force,
                 "Recompute every case instead of reusing the finished ones in <output>/.cache");
   sub->add_option("--experiments-dir", args->experiments_dir, "Folder of .exp files")
       ->capture_default_str();
-  sub->add_option("--output", args->output, "Results folder")->capture_default_str();
-  sub->add_option("--threads", args->threads, "OpenMP threads (0 = all cores)")
+  sub->add_option("--output", args->pipeline.output, "Results folder")->capture_default_str();
+  sub->add_option("--threads", args->pipeline.run.threads, "OpenMP threads (0 = all cores)")
       ->check(CLI::NonNegativeNumber);
-  sub->add_option("--table4-max", args->table4_max, "Largest isosurface grid for Table 4 (16..256)")
+  sub->add_option("--table4-max", args->pipeline.table4_max,
+                  "Largest isosurface grid for Table 4 (16..256)")
       ->check(CLI::IsMember({16, 32, 64, 128, 256}))
       ->capture_default_str();
   sub->footer(
@@ -165,10 +163,11 @@ Command add_run_command(CLI::App& app) {
 
   return [args]() {
     if (args->claims_only) {
-      if (args->report_only || !args->shard.empty() || !args->experiments.empty() || args->all)
+      if (args->pipeline.report_only || !args->shard.empty() || !args->experiments.empty() ||
+          args->all)
         throw UsageError("--claims-only takes no experiments, --all, --shard or --report-only");
       int rep = 0, notrep = 0, na = 0;
-      for (const auto& c : write_claims(args->output)) {
+      for (const auto& c : write_claims(args->pipeline.output)) {
         rep += c.verdict == Verdict::reproduced;
         notrep += c.verdict == Verdict::not_reproduced;
         na += c.verdict == Verdict::not_applicable;
@@ -176,7 +175,7 @@ Command add_run_command(CLI::App& app) {
       std::fprintf(stderr,
                    "[run] wrote %s/CLAIMS.md: %d reproduced, %d not reproduced, %d not "
                    "applicable\n",
-                   args->output.c_str(), rep, notrep, na);
+                   args->pipeline.output.c_str(), rep, notrep, na);
       return 0;
     }
     auto available = load_experiments(args->experiments_dir, args->full);
@@ -189,7 +188,8 @@ Command add_run_command(CLI::App& app) {
     const auto [shard, shard_count] =
         args->shard.empty() ? std::pair<int, int>{1, 1} : parse_shard(args->shard);
     std::vector<Experiment> selected;
-    if (args->all || (args->experiments.empty() && (args->report_only || args->list_cases))) {
+    if (args->all ||
+        (args->experiments.empty() && (args->pipeline.report_only || args->list_cases))) {
       selected = available;
     } else {
       if (args->experiments.empty())
@@ -224,21 +224,15 @@ Command add_run_command(CLI::App& app) {
                        [&](const Experiment& a) { return a.name == e.name; }))
         available.push_back(e);
 
-    PipelineOptions po;
+    PipelineOptions& po = args->pipeline;
     po.experiments = selected;
     po.available = available;
-    po.output = args->output;
-    po.store_dir = args->cache;
-    po.threads = args->threads;
-    po.table4_max = args->table4_max;
-    po.force = args->force;
     po.plots = !args->no_plots;
-    po.report_only = args->report_only;
     po.readings = !args->no_readings;
-    po.shard = shard;
-    po.shard_count = shard_count;
-    po.message = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
-    po.progress = [](const RunProgress& p) {
+    po.run.shard = shard;
+    po.run.shard_count = shard_count;
+    po.run.message = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
+    po.run.progress = [](const RunProgress& p) {
       const RunCase& c = *p.current;
       const char* method = (c.method->is_external() ? c.method->label : c.method->spec).c_str();
       if (p.reused)
@@ -254,7 +248,7 @@ Command add_run_command(CLI::App& app) {
                      method, p.vertices, p.case_seconds, duration(p.elapsed_seconds).c_str(),
                      duration(p.eta_seconds).c_str());
     };
-    po.stop = stop_requested;
+    po.run.stop = stop_requested;
     install_stop_handlers();
     const PipelineResult r = run_pipeline(po);
     return r.status == PipelineStatus::stopped ? stopped_exit_code() : 0;

@@ -14,6 +14,7 @@ install(FILES ${CURVBENCH_STATIC_ARCHIVE} DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(FILES ${PROJECT_SOURCE_DIR}/include/curvbench/curvbench.h
               ${PROJECT_SOURCE_DIR}/include/curvbench/estimator_options.h
               ${PROJECT_SOURCE_DIR}/include/curvbench/errors.h
+              ${PROJECT_SOURCE_DIR}/include/curvbench/status.h
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/curvbench)
 install(EXPORT curvbenchTargets NAMESPACE curvbench:: DESTINATION ${CURVBENCH_CMAKE_DIR})
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/curvbenchConfig.cmake.in

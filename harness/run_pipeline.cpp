@@ -9,13 +9,13 @@
 
 #include "core/build_info.h"
 #include "core/errors.h"
-#include "harness/run/case_store.h"
 #include "harness/claims/claims.h"
-#include "harness/report/leaderboard.h"
-#include "harness/readings/readings.h"
-#include "harness/report/report.h"
-#include "harness/report/pages.h"
 #include "harness/model/results_table.h"
+#include "harness/readings/readings.h"
+#include "harness/report/leaderboard.h"
+#include "harness/report/pages.h"
+#include "harness/report/report.h"
+#include "harness/run/case_store.h"
 
 namespace curvbench {
 
@@ -131,157 +131,156 @@ std::vector<ClaimResult> write_claims(const std::string& results_dir) {
   return claims;
 }
 
-PipelineResult run_pipeline(const PipelineOptions& o) {
-  const auto say = [&](const std::string& line) {
-    if (o.message) o.message(line);
-  };
-  const auto stop = [&] { return o.stop && o.stop(); };
-  const bool sharded = o.shard_count > 1;
-  if (sharded && o.report_only) throw UsageError("--shard and --report-only exclude each other");
-  if (sharded) shard_cases({}, o.shard, o.shard_count);  // validates K/N
-  const std::string store_dir =
+namespace {
+
+// One run of the pipeline: the options, read whole by every stage, and what the stages pass on.
+struct Pipeline {
+  explicit Pipeline(const PipelineOptions& options) : o(options) {}
+
+  const PipelineOptions& o;
+  bool sharded = o.run.shard_count > 1;
+  std::string store_dir =
       o.store_dir.empty() ? (fs::path(o.output) / ".cache").string() : o.store_dir;
   PipelineResult result;
-  if (!o.report_only)
-    result.total =
-        static_cast<int>(sharded ? list_case_ids(o.experiments, o.shard, o.shard_count).size()
-                                 : expand_cases(o.experiments).size());
-  fs::create_directories(o.output);
-  // Temporary files of an earlier run that was killed before it could rename them. Not in a
-  // shard: other shards (possibly on other hosts, whose process ids mean nothing here) may be
-  // writing into the same folders.
-  if (!sharded)
-    if (const int stale = remove_stale_temp_files(o.output); stale > 0)
-      say(format("[run] removed %d temporary files left by a killed run", stale));
+  /// Commands of outside estimators found unable to run here, carried into the readings' runs.
+  std::map<std::string, std::string> unavailable;
 
-  const auto stopped = [&](int done) {
+  void say(const std::string& line) const {
+    if (o.run.message) o.run.message(line);
+  }
+  bool stop_requested() const { return o.run.stop && o.run.stop(); }
+  /// Marks the run stopped after `done` cases, saying so; false, for the stage to return.
+  bool stopped(int done) {
     say(format("[run] interrupted after %d of %d cases (%d reused, %d computed); rerun to continue",
                done, result.total, result.reused, result.computed));
     result.status = PipelineStatus::stopped;
-    return result;
-  };
+    return false;
+  }
+  /// The runner's options of one run of cases into `store` (o.run whole, plus the store).
+  RunOptions run_options(const std::string& store) const {
+    RunOptions ro = o.run;
+    ro.store_dir = store;
+    ro.unavailable = unavailable;
+    ro.experiment_done = nullptr;
+    ro.causes_done = nullptr;
+    return ro;
+  }
+};
 
-  if (o.report_only) {
-    const CaseStore store(store_dir);
-    std::vector<SkippedMethod> skipped_now;
-    std::map<std::string, std::vector<CauseRow>> causes;
-    const auto rows = stored_rows(o.experiments, store, o.output, &causes, &skipped_now);
-    for (const auto& [name, r] : rows) {
-      write_error_csv(o.output + "/" + name + ".csv", r);
-      write_timing_csv(o.output + "/timings/" + name + ".csv", r);
-      write_cause_csv(o.output + "/errors_by_cause/" + name + ".csv", causes[name]);
-      say("[run] wrote " + o.output + "/" + name + ".csv from the case store");
-    }
-    write_skipped(o.output, o.experiments, skipped_now);
+// Report-only: each experiment's CSVs (errors, timings, errors by cause) and skipped.csv from
+// the case store.
+void write_from_store(const Pipeline& p) {
+  const PipelineOptions& o = p.o;
+  const CaseStore store(p.store_dir);
+  std::vector<SkippedMethod> skipped_now;
+  std::map<std::string, std::vector<CauseRow>> causes;
+  const auto rows = stored_rows(o.experiments, store, o.output, &causes, &skipped_now);
+  for (const auto& [name, r] : rows) {
+    write_error_csv(o.output + "/" + name + ".csv", r);
+    write_timing_csv(o.output + "/timings/" + name + ".csv", r);
+    write_cause_csv(o.output + "/errors_by_cause/" + name + ".csv", causes[name]);
+    p.say("[run] wrote " + o.output + "/" + name + ".csv from the case store");
   }
-  if (!sharded) {
-    say("[run] Table 2 (ring sizes)");
-    write_table2_csv(o.output + "/table2.csv");
-    if (stop()) return stopped(0);
-    say(format("[run] Table 4 (isosurface torus, n = 16..%d)", o.table4_max));
-    write_table4_csv(o.output + "/table4.csv", o.table4_max);
-    if (stop()) return stopped(0);
-    const auto uses_family = [](const Experiment& e, const std::string& family) {
-      return std::any_of(e.meshes.begin(), e.meshes.end(),
-                         [&](const ExperimentMesh& m) { return m.family == family; });
-    };
-    if (std::any_of(o.experiments.begin(), o.experiments.end(),
-                    [&](const Experiment& e) { return uses_family(e, "torus-unstructured"); })) {
-      say("[run] well-shaped torus meshes (torus-unstructured, levels 1-4)");
-      write_well_shaped_torus_csv(o.output + "/torus_unstructured.csv");
-      if (stop()) return stopped(0);
-    }
+  write_skipped(o.output, o.experiments, skipped_now);
+}
+
+// Tables 2 and 4 of the paper, and the well-shaped torus meshes when an experiment uses them.
+bool write_paper_tables(Pipeline& p) {
+  const PipelineOptions& o = p.o;
+  p.say("[run] Table 2 (ring sizes)");
+  write_table2_csv(o.output + "/table2.csv");
+  if (p.stop_requested()) return p.stopped(0);
+  p.say(format("[run] Table 4 (isosurface torus, n = 16..%d)", o.table4_max));
+  write_table4_csv(o.output + "/table4.csv", o.table4_max);
+  if (p.stop_requested()) return p.stopped(0);
+  const auto uses_family = [](const Experiment& e, const std::string& family) {
+    return std::any_of(e.meshes.begin(), e.meshes.end(),
+                       [&](const ExperimentMesh& m) { return m.family == family; });
+  };
+  if (std::any_of(o.experiments.begin(), o.experiments.end(),
+                  [&](const Experiment& e) { return uses_family(e, "torus-unstructured"); })) {
+    p.say("[run] well-shaped torus meshes (torus-unstructured, levels 1-4)");
+    write_well_shaped_torus_csv(o.output + "/torus_unstructured.csv");
+    if (p.stop_requested()) return p.stopped(0);
   }
-  // Commands of outside estimators found unable to run here, carried into the readings' runs.
-  std::map<std::string, std::string> unavailable;
-  if (!o.report_only) {
-    RunOptions ro;
-    ro.threads = o.threads;
-    ro.message = o.message;
-    ro.store_dir = store_dir;
-    ro.force = o.force;
-    ro.stop = o.stop;
-    ro.progress = o.progress;
-    ro.shard = o.shard;
-    ro.shard_count = o.shard_count;
-    const std::string out_dir = o.output;
-    // Each experiment's CSV lands as soon as its last case is done.
-    ro.experiment_done = [&say, out_dir](const Experiment& e, const std::vector<ErrorRow>& rows) {
-      write_error_csv(out_dir + "/" + e.name + ".csv", rows);
-      write_timing_csv(out_dir + "/timings/" + e.name + ".csv", rows);
-      say("[run] wrote " + out_dir + "/" + e.name + ".csv");
-    };
-    ro.causes_done = [out_dir](const Experiment& e, const std::vector<CauseRow>& rows) {
-      write_cause_csv(out_dir + "/errors_by_cause/" + e.name + ".csv", rows);
-    };
-    if (sharded)
-      say(format("[run] shard %d/%d: %d cases of %zu experiments", o.shard, o.shard_count,
-                 result.total, o.experiments.size()));
-    else
-      say(format("[run] %zu experiments, %d cases (method x mesh level)", o.experiments.size(),
-                 result.total));
-    const RunSummary done = run_experiments(o.experiments, ro);
-    result.total = done.total;
-    result.reused = done.reused;
-    result.computed = done.computed;
-    if (done.interrupted || stop()) return stopped(done.reused + done.computed + done.skipped);
-    say(format("[run] reused %d of %d cases, computed %d", done.reused, done.total, done.computed) +
+  return true;
+}
+
+// The experiments' cases under the adopted readings; each experiment's CSVs land as soon as its
+// last case is done.
+bool run_cases(Pipeline& p) {
+  const PipelineOptions& o = p.o;
+  RunOptions ro = p.run_options(p.store_dir);
+  const std::string out_dir = o.output;
+  ro.experiment_done = [&p, out_dir](const Experiment& e, const std::vector<ErrorRow>& rows) {
+    write_error_csv(out_dir + "/" + e.name + ".csv", rows);
+    write_timing_csv(out_dir + "/timings/" + e.name + ".csv", rows);
+    p.say("[run] wrote " + out_dir + "/" + e.name + ".csv");
+  };
+  ro.causes_done = [out_dir](const Experiment& e, const std::vector<CauseRow>& rows) {
+    write_cause_csv(out_dir + "/errors_by_cause/" + e.name + ".csv", rows);
+  };
+  if (p.sharded)
+    p.say(format("[run] shard %d/%d: %d cases of %zu experiments", o.run.shard, o.run.shard_count,
+                 p.result.total, o.experiments.size()));
+  else
+    p.say(format("[run] %zu experiments, %d cases (method x mesh level)", o.experiments.size(),
+                 p.result.total));
+  const RunSummary done = run_experiments(o.experiments, ro);
+  p.result.total = done.total;
+  p.result.reused = done.reused;
+  p.result.computed = done.computed;
+  if (done.interrupted || p.stop_requested())
+    return p.stopped(done.reused + done.computed + done.skipped);
+  p.say(format("[run] reused %d of %d cases, computed %d", done.reused, done.total, done.computed) +
         (done.skipped > 0
              ? format(", skipped %d (outside estimators that cannot run here)", done.skipped)
              : std::string()));
-    if (!sharded) write_skipped(o.output, o.experiments, done.skipped_methods);
-    unavailable = done.unavailable;
-  }
+  if (!p.sharded) write_skipped(o.output, o.experiments, done.skipped_methods);
+  p.unavailable = done.unavailable;
+  return true;
+}
 
-  // The alternative readings: the experiments each changes, in their own folder and case store
-  // (<store>/readings/<reading>=<choice>). A shard computes its part of each reading's cases too;
-  // --report-only writes each reading's CSVs from that store.
-  if (o.readings) {
-    for (const Reading& reading : readings())
-      for (size_t i = 1; i < reading.choices.size(); ++i) {
-        const ReadingChoice& choice = reading.choices[i];
-        const std::vector<Experiment> changed = apply_reading(o.experiments, choice);
-        if (changed.empty()) continue;
-        const std::string folder = reading_folder(o.output, reading, choice);
-        const std::string reading_store =
-            (fs::path(store_dir) / "readings" / fs::path(folder).filename()).string();
-        fs::create_directories(folder);
-        if (o.report_only) {
-          for (const auto& [name, r] : stored_rows(changed, CaseStore(reading_store), folder))
-            write_error_csv(folder + "/" + name + ".csv", r);
-          say(format("[run] reading %s=%s: wrote %zu CSVs from the case store", reading.id.c_str(),
+// The alternative readings: the experiments each changes, in their own folder and case store
+// (<store>/readings/<reading>=<choice>). A shard computes its part of each reading's cases too;
+// report-only writes each reading's CSVs from that store.
+bool run_readings(Pipeline& p) {
+  const PipelineOptions& o = p.o;
+  for (const Reading& reading : readings())
+    for (size_t i = 1; i < reading.choices.size(); ++i) {
+      const ReadingChoice& choice = reading.choices[i];
+      const std::vector<Experiment> changed = apply_reading(o.experiments, choice);
+      if (changed.empty()) continue;
+      const std::string folder = reading_folder(o.output, reading, choice);
+      const std::string reading_store =
+          (fs::path(p.store_dir) / "readings" / fs::path(folder).filename()).string();
+      fs::create_directories(folder);
+      if (o.report_only) {
+        for (const auto& [name, r] : stored_rows(changed, CaseStore(reading_store), folder))
+          write_error_csv(folder + "/" + name + ".csv", r);
+        p.say(format("[run] reading %s=%s: wrote %zu CSVs from the case store", reading.id.c_str(),
                      choice.name.c_str(), changed.size()));
-          continue;
-        }
-        say(format("[run] reading %s=%s: %zu experiments, %zu cases", reading.id.c_str(),
-                   choice.name.c_str(), changed.size(), expand_cases(changed).size()));
-        RunOptions ro;
-        ro.threads = o.threads;
-        ro.message = o.message;
-        ro.store_dir = reading_store;
-        ro.force = o.force;
-        ro.stop = o.stop;
-        ro.progress = o.progress;
-        ro.shard = o.shard;
-        ro.shard_count = o.shard_count;
-        ro.unavailable = unavailable;
-        if (!sharded)
-          ro.experiment_done = [folder](const Experiment& e, const std::vector<ErrorRow>& rows) {
-            write_error_csv(folder + "/" + e.name + ".csv", rows);
-          };
-        const RunSummary done = run_experiments(changed, ro);
-        if (done.interrupted || stop()) return stopped(done.reused + done.computed + done.skipped);
-        unavailable = done.unavailable;
+        continue;
       }
-  }
-  if (sharded) {
-    say("[run] shard " + std::to_string(o.shard) + "/" + std::to_string(o.shard_count) +
-        " done; stored in " + store_dir);
-    return result;
-  }
+      p.say(format("[run] reading %s=%s: %zu experiments, %zu cases", reading.id.c_str(),
+                   choice.name.c_str(), changed.size(), expand_cases(changed).size()));
+      RunOptions ro = p.run_options(reading_store);
+      if (!p.sharded)
+        ro.experiment_done = [folder](const Experiment& e, const std::vector<ErrorRow>& rows) {
+          write_error_csv(folder + "/" + e.name + ".csv", rows);
+        };
+      const RunSummary done = run_experiments(changed, ro);
+      if (done.interrupted || p.stop_requested())
+        return p.stopped(done.reused + done.computed + done.skipped);
+      p.unavailable = done.unavailable;
+    }
+  return true;
+}
 
-  // Rates over every experiment CSV present (all of them, not only the ones just run); not the
-  // sweeps, which have one level.
+// rates.csv, which the claims read: over every experiment CSV present (all of them, not only
+// the ones just run); not the sweeps, which have one level.
+void write_rates(const Pipeline& p) {
+  const PipelineOptions& o = p.o;
   std::vector<ErrorRow> all_rows;
   for (const auto& e : o.available) {
     if (!e.sweep.empty()) continue;
@@ -292,30 +291,67 @@ PipelineResult run_pipeline(const PipelineOptions& o) {
     }
   }
   write_rate_csv(o.output + "/rates.csv", compute_rates(all_rows));
+}
 
+// REPORT.md, the plots, CLAIMS.md and the site (render_results) over every available experiment.
+bool render(Pipeline& p) {
+  const PipelineOptions& o = p.o;
   RenderOptions ro;
   ro.experiments = o.available;
   ro.output = o.output;
   ro.plots = o.plots;
-  ro.message = o.message;
-  ro.stop = o.stop;
+  ro.message = o.run.message;
+  ro.stop = o.run.stop;
   const RenderResult rendered = render_results(ro);
-  if (rendered.stopped || stop()) {
-    say("[run] interrupted while writing the report (REPORT.md and CLAIMS.md not updated); "
+  if (rendered.stopped || p.stop_requested()) {
+    p.say(
+        "[run] interrupted while writing the report (REPORT.md and CLAIMS.md not updated); "
         "rerun to finish");
-    result.status = PipelineStatus::stopped;
-    return result;
+    p.result.status = PipelineStatus::stopped;
+    return false;
   }
-  result.report = rendered.report;
-  result.reproduced = rendered.reproduced;
-  result.not_reproduced = rendered.not_reproduced;
-  result.not_applicable = rendered.not_applicable;
-  say(
+  p.result.report = rendered.report;
+  p.result.reproduced = rendered.reproduced;
+  p.result.not_reproduced = rendered.not_reproduced;
+  p.result.not_applicable = rendered.not_applicable;
+  p.say(
       format("[run] wrote %s, %s/CLAIMS.md and %s: %d reproduced, %d not reproduced, %d not "
              "applicable",
-             rendered.report.c_str(), o.output.c_str(), rendered.site.c_str(), result.reproduced,
-             result.not_reproduced, result.not_applicable));
-  return result;
+             rendered.report.c_str(), o.output.c_str(), rendered.site.c_str(), p.result.reproduced,
+             p.result.not_reproduced, p.result.not_applicable));
+  return true;
+}
+
+}  // namespace
+
+PipelineResult run_pipeline(const PipelineOptions& o) {
+  Pipeline p(o);
+  if (p.sharded && o.report_only) throw UsageError("--shard and --report-only exclude each other");
+  if (p.sharded) shard_cases({}, o.run.shard, o.run.shard_count);  // validates K/N
+  if (!o.report_only)
+    p.result.total = static_cast<int>(
+        p.sharded ? list_case_ids(o.experiments, o.run.shard, o.run.shard_count).size()
+                  : expand_cases(o.experiments).size());
+  fs::create_directories(o.output);
+  // Temporary files of an earlier run that was killed before it could rename them. Not in a
+  // shard: other shards (possibly on other hosts, whose process ids mean nothing here) may be
+  // writing into the same folders.
+  if (!p.sharded)
+    if (const int stale = remove_stale_temp_files(o.output); stale > 0)
+      p.say(format("[run] removed %d temporary files left by a killed run", stale));
+
+  if (o.report_only) write_from_store(p);
+  if (!p.sharded && !write_paper_tables(p)) return p.result;
+  if (!o.report_only && !run_cases(p)) return p.result;
+  if (o.readings && !run_readings(p)) return p.result;
+  if (p.sharded) {
+    p.say("[run] shard " + std::to_string(o.run.shard) + "/" + std::to_string(o.run.shard_count) +
+          " done; stored in " + p.store_dir);
+    return p.result;
+  }
+  write_rates(p);
+  render(p);
+  return p.result;
 }
 
 namespace {

@@ -29,27 +29,23 @@ struct PipelineOptions {
   std::vector<Experiment> available;    ///< every experiment the report and rates cover
   std::string output = "results";       ///< results folder
   std::string store_dir;                ///< case store; empty = <output>/.cache
-  int threads = 0;                      ///< OpenMP threads (0 = all cores)
   int table4_max = 256;                 ///< largest isosurface grid of Table 4
-  bool force = false;                   ///< recompute every case
   bool plots = true;                    ///< render the plots (gnuplot)
   bool report_only = false;             ///< build the outputs from the store, compute nothing
   /// Also run, for each alternative reading (readings.h), the experiments it changes into
   /// <output>/readings/<reading>=<choice>/ (full runs only; CLAIMS.md reads whatever is there).
   bool readings = true;
-  int shard = 1;        ///< shard K (1-based) ...
-  int shard_count = 1;  ///< ... of N; N > 1 runs only that shard's cases
-  /// One line of progress ("[run] ..."), without newline.
-  std::function<void(const std::string&)> message;
-  /// Called after each case (runner.h).
-  std::function<void(const RunProgress&)> progress;
-  /// Polled between cases and plots; true = stop.
-  std::function<bool()> stop;
+  /// The runner's options, passed whole to every run of cases (the adopted reading's and each
+  /// alternative's): threads, force, shard K of N (run.shard_count > 1 runs only that shard's
+  /// cases), progress after each case, message for each line of progress ("[run] ...", without
+  /// newline) and stop, polled between cases and plots. The pipeline sets its store_dir,
+  /// experiment_done, causes_done and unavailable per run; their values here are ignored.
+  RunOptions run;
 };
 
 enum class PipelineStatus {
   done,     ///< every requested output written
-  stopped,  ///< options.stop() asked to stop; rerun to continue
+  stopped,  ///< options.run.stop() asked to stop; rerun to continue
 };
 
 struct PipelineResult {

@@ -21,6 +21,7 @@
 
 #include "core/types.h"
 #include "curvbench/estimator_options.h"
+#include "curvbench/status.h"
 #include "mesh/mesh.h"
 #include "mesh/rings.h"
 
@@ -29,36 +30,14 @@ namespace curvbench {
 class NeighbourhoodTable;  // mesh/neighbourhood_table.h
 class NeighbourhoodCache;
 
-/// Per-vertex outcome. New values go at the end (the numbers are stored in PLY output); add
-/// the word to to_string() in estimate_mesh.cpp.
-enum class VertexStatus : std::uint8_t {
-  ok = 0,                 ///< estimated (at the requested degree, for a fit); the quantities the
-                          ///< method computes (Estimator::computes()) are finite, the others NaN
-  degree_reduced = 1,     ///< the safeguard lowered the degree (>= 1); values are finite
-  failed = 2,             ///< no estimate possible (or estimate() threw): values NaN
-  excluded = 3,           ///< not computed by design (e.g. Xu at a boundary vertex): values NaN
-  disk_cut = 4,           ///< fitted at the requested degree on part of the ring's points: the
-                          ///< ring is not a topological disk, cut to one around the vertex (LSCM)
-  sign_undetermined = 5,  ///< an estimate (finite values; NaN where it would be partial), but the
-                          ///< surface around the vertex cannot be oriented (non-orientable or
-                          ///< non-manifold, mesh/orientation.h): the signs of the normal and the
-                          ///< curvatures are arbitrary
-  partial = 6,      ///< the quantities that can be determined at the vertex are finite, the rest of
-                    ///< what the method computes is NaN (e.g. Meyer's H and K where the edge tensor
-                    ///< fit of the directions is singular: d1, d2 NaN; or only the normal
-                    ///< where a fit of the curvatures is singular)
-  reprojected = 7,  ///< LSCM: the map of the ring folded it (the fitted normal turned more than
-                    ///< 90 degrees from the mesh's vertex normal); fitted on the ring's
-                    ///< orthogonal projection onto the tangent plane instead (LOP's map)
-  normal_fallback = 8,  ///< an operator fed a fit's normals (option vertex-normals = lhf-3, ...):
-                        ///< the fit gave no normal at a vertex whose normal this estimate reads
-                        ///< (the vertex itself, or a corner of a face it sums); the operator's
-                        ///< own vertex normal stood in there; values finite
-};
+/// Per-vertex outcome: the public enum (include/curvbench/status.h), whose numbers are stored
+/// in PLY output.
+using VertexStatus = Status;
 
 /// The number of VertexStatus values (arrays indexed by status).
-inline constexpr int kVertexStatusCount = 9;
+inline constexpr int kVertexStatusCount = kStatusCount;
 
+/// The word of a status: "ok", "degree_reduced", ... (the public status_name()).
 const char* to_string(VertexStatus status);
 
 /// The quantities a method computes. A quantity it does not compute is NaN in every row, also
@@ -204,6 +183,11 @@ class Estimator {
 /// or attached) for a degree-free method, an option out of its range, or an option set for a
 /// method it does not apply to (methods/option_schema.h).
 std::unique_ptr<Estimator> make_estimator(const std::string& name, EstimatorOptions options);
+
+/// The degree make_estimator(name, options) builds the estimator with (options().degree), without
+/// building it: the degree attached to the name, else options.degree, else 2 for a fit; 0 for a
+/// degree-free method. Throws make_estimator's UsageErrors for the name and the degree.
+int estimator_degree(const std::string& name, EstimatorOptions options);
 
 /// The family a method belongs to on the results site and in the leaderboard's filters.
 enum class MethodGroup {

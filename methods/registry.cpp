@@ -127,7 +127,12 @@ const Registration* find(const std::string& name) {
 
 }  // namespace
 
-std::unique_ptr<Estimator> make_estimator(const std::string& name, EstimatorOptions options) {
+namespace {
+
+// The registration make_estimator(name, options) builds from, with options.degree resolved as
+// it builds it: the degree attached to the name ("LHF-2"), else options.degree, else a fit's
+// default 2 (0 for a degree-free operator). Throws make_estimator's UsageErrors.
+const Registration& resolve(const std::string& name, EstimatorOptions& options) {
   validate_options(options);  // the option table's ranges, with its messages, first
   std::string base = lower(name);
   const Registration* reg = find(base);
@@ -162,7 +167,7 @@ std::unique_ptr<Estimator> make_estimator(const std::string& name, EstimatorOpti
     if (options.degree != 0)
       throw UsageError("method '" + info.name + "' takes no degree (got degree " +
                        std::to_string(options.degree) + "; it is not a polynomial fit)");
-    return checked(reg->make(options));
+    return *reg;
   }
   if (options.degree == 0 && !attached)
     options.degree = std::clamp(2, info.min_degree, info.max_degree);
@@ -174,7 +179,19 @@ std::unique_ptr<Estimator> make_estimator(const std::string& name, EstimatorOpti
     throw UsageError("method '" + info.name + "' does not support degree " +
                      std::to_string(options.degree) + " (valid: " + range + ")");
   }
-  return checked(reg->make(options));
+  return *reg;
+}
+
+}  // namespace
+
+std::unique_ptr<Estimator> make_estimator(const std::string& name, EstimatorOptions options) {
+  const Registration& reg = resolve(name, options);
+  return checked(reg.make(options));
+}
+
+int estimator_degree(const std::string& name, EstimatorOptions options) {
+  resolve(name, options);
+  return options.degree;
 }
 
 void register_estimator(const MethodInfo& info, EstimatorFactory factory) {

@@ -4,14 +4,15 @@
 //            include/curvbench/estimator_options.h: degree=4, rings=2.5, vertex_normals="max", ...)
 //   read_mesh(path) -> (V, F)
 //   mesh(family, level, noise_order=0, seed=1, **options) -> (V, F, Exact)   (options: the mesh
-//            option table of meshgen/generate.h: aspect=16, density=4)
+//            options, mesh_options(): aspect=16, density=4)
 //   score(exact_or_mesh, estimate, vertex_set="all") -> {quantity: {"L2", "Linf", ...}}
 //   recommend(V, F, noise=None, results=None) -> dict   (the advice of `curvbench recommend`;
 //            estimate(V, F, method="auto") follows it and keeps it in Estimate.recommendation)
 //   methods(), __version__
 //
-// Input arrays are read in place (any real dtype for V, any integer dtype for F, any strides)
-// and converted once, straight into the mesh the estimators run on; the GIL is released while
+// Everything goes through the public C++ API (include/curvbench/curvbench.h), the only
+// curvbench header included here. Input arrays are read in place (any real dtype for V, any
+// integer dtype for F, any strides) into the API's Eigen matrices; the GIL is released while
 // estimating. Errors: curvbench.Error (a ValueError) with subclasses MeshError (bad mesh or file:
 // the library's InputError) and UsageError (bad method, degree, option), with the command line's
 // one-line messages.
@@ -22,24 +23,14 @@
 #include <climits>
 #include <cmath>
 #include <cstdint>
-#include <memory>
+#include <cstdio>
 #include <optional>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
-#include "api/make_api_estimator.h"
-#include "core/errors.h"
-#include "core/text.h"
 #include "curvbench/curvbench.h"
-#include "harness/model/metrics.h"
-#include "harness/report/recommend_table.h"
-#include "mesh/io.h"
-#include "mesh/mesh.h"
-#include "meshgen/generate.h"
-#include "methods/estimate_oriented.h"
-#include "methods/estimator.h"
-#include "methods/option_schema.h"
 
 namespace py = pybind11;
 using namespace curvbench;
@@ -79,13 +70,13 @@ std::string dtype_name(const py::array& a) {
   return py::str(a.dtype()).cast<std::string>();
 }
 
-// V as the mesh's n x 3 double matrix: one conversion from any real dtype and any strides.
-VertexMatrix to_vertices(const py::handle& h) {
+// V as an n x 3 double matrix: one conversion from any real dtype and any strides.
+Eigen::MatrixXd to_vertices(const py::handle& h) {
   const py::array a = as_array(h, "V");
   check_shape(a, "V", "n");
   const char kind = a.dtype().kind();
   const auto n = a.shape(0);
-  VertexMatrix V(n, 3);
+  Eigen::MatrixXd V(n, 3);
   const auto fill = [&](auto tag) {
     using T = decltype(tag);
     for (py::ssize_t i = 0; i < n; ++i)
@@ -106,14 +97,14 @@ VertexMatrix to_vertices(const py::handle& h) {
   return V;
 }
 
-// F as the mesh's m x 3 int matrix from any integer dtype and any strides; indices outside the
-// int range get the mesh's own out-of-range message.
-FaceMatrix to_faces(const py::handle& h, py::ssize_t n) {
+// F as an m x 3 int matrix from any integer dtype and any strides; indices outside the int
+// range get the mesh's own out-of-range message.
+Eigen::MatrixXi to_faces(const py::handle& h, py::ssize_t n) {
   const py::array a = as_array(h, "F");
   check_shape(a, "F", "m");
   const char kind = a.dtype().kind();
   const auto m = a.shape(0);
-  FaceMatrix F(m, 3);
+  Eigen::MatrixXi F(m, 3);
   const auto fill = [&](auto tag) {
     using T = decltype(tag);
     for (py::ssize_t i = 0; i < m; ++i)
@@ -142,56 +133,61 @@ FaceMatrix to_faces(const py::handle& h, py::ssize_t n) {
   return F;
 }
 
-py::array_t<double> vec3_array(const std::vector<VertexEstimate>& est, Vec3 VertexEstimate::*f) {
-  py::array_t<double> out({static_cast<py::ssize_t>(est.size()), py::ssize_t{3}});
-  auto r = out.mutable_unchecked<2>();
-  for (size_t i = 0; i < est.size(); ++i)
-    for (int j = 0; j < 3; ++j) r(i, j) = (est[i].*f)(j);
+// An n x 3 matrix as an (n, 3) numpy array of T.
+template <typename T, typename Matrix>
+py::array_t<T> rows_array(const Matrix& m) {
+  py::array_t<T> out({static_cast<py::ssize_t>(m.rows()), py::ssize_t{3}});
+  auto r = out.template mutable_unchecked<2>();
+  for (Eigen::Index i = 0; i < m.rows(); ++i)
+    for (Eigen::Index j = 0; j < 3; ++j) r(i, j) = static_cast<T>(m(i, j));
   return out;
 }
 
-template <typename T, typename F>
-py::array_t<T> column(size_t n, F value) {
-  py::array_t<T> out(static_cast<py::ssize_t>(n));
+// A vector as an (n,) numpy array of T.
+template <typename T, typename Vector>
+py::array_t<T> vector_array(const Vector& v) {
+  py::array_t<T> out(static_cast<py::ssize_t>(v.size()));
   auto r = out.template mutable_unchecked<1>();
-  for (size_t i = 0; i < n; ++i) r(i) = value(i);
+  for (Eigen::Index i = 0; i < v.size(); ++i) r(i) = static_cast<T>(v(i));
   return out;
 }
 
 /// The result of estimate(): numpy arrays plus the estimates themselves (for score()).
 struct PyEstimate {
   std::string method;
-  std::vector<VertexEstimate> estimates;
+  EstimateResult estimates;
   py::object normal, k1, k2, H, K, d1, d2, degree, points, ring, status, status_code;
   py::object recommendation = py::none();  ///< method="auto": the advice it followed
 };
 
 // The advice as recommend() returns it and Estimate.recommendation holds it.
-py::dict advice_dict(const Advice& a) {
+py::dict advice_dict(const MeshAdvice& a) {
   py::dict d;
-  d["quality"] = a.mesh_class.quality;
-  d["quality_reason"] = a.mesh_class.reason;
+  d["quality"] = a.quality;
+  d["quality_reason"] = a.quality_reason;
   d["sigma_over_h"] = a.sigma_over_h;
   d["noise"] = a.noise_estimated ? "estimated" : "given";
   d["noise_level"] = a.noise_level;
-  d["swept"] = a.has_choice;
+  d["swept"] = a.swept;
   py::dict options;
-  if (a.has_choice && !a.choice.parameter.empty()) {
-    std::string key = a.choice.parameter;
+  if (a.swept && !a.parameter.empty()) {
+    std::string key = a.parameter;
     for (char& c : key)
       if (c == '-') c = '_';
-    options[key.c_str()] = a.choice.radius;
+    options[key.c_str()] = a.radius;
   }
-  const RecommendationRow& r = a.row;
-  d["method"] = a.has_choice ? py::object(py::str(a.choice.method)) : py::none();
+  const auto text = [&](const std::string& s) {
+    return a.swept ? py::object(py::str(s)) : py::none();
+  };
+  d["method"] = text(a.method);
   d["options"] = options;
-  d["label"] = a.has_choice ? py::object(py::str(r.best_label)) : py::none();
-  d["quantity"] = a.has_choice ? py::object(py::str(r.quantity)) : py::none();
-  d["norm"] = a.has_choice ? py::object(py::str(r.norm)) : py::none();
-  d["error"] = a.has_choice ? py::object(py::float_(r.best_error)) : py::none();
-  d["experiment"] = a.has_choice ? py::object(py::str(r.experiment)) : py::none();
-  d["family"] = a.has_choice ? py::object(py::str(r.family)) : py::none();
-  d["level"] = a.has_choice ? py::object(py::int_(r.level)) : py::none();
+  d["label"] = text(a.label);
+  d["quantity"] = text(a.quantity);
+  d["norm"] = text(a.norm);
+  d["error"] = a.swept ? py::object(py::float_(a.error)) : py::none();
+  d["experiment"] = text(a.experiment);
+  d["family"] = text(a.family);
+  d["level"] = a.swept ? py::object(py::int_(a.level)) : py::none();
   d["table"] = a.table;
   d["provenance"] = a.provenance;
   return d;
@@ -199,22 +195,22 @@ py::dict advice_dict(const Advice& a) {
 
 /// The exact quantities of a generated mesh, plus the mesh (for vertex sets in score()).
 struct PyExact {
-  std::shared_ptr<const Mesh> mesh;
-  std::vector<SurfacePoint> exact;
+  Eigen::MatrixXd V;
+  Eigen::MatrixXi F;
+  ExactQuantities exact;
   std::string surface, description;
   py::object point, normal, k1, k2, H, K, d1, d2;
 };
 
+// The status names of the codes (status_name), as a numpy array of str.
 py::array numpy_status_names(const py::array_t<std::uint8_t>& codes) {
   const py::module_ np = py::module_::import("numpy");
-  const py::object names =
-      np.attr("array")(py::make_tuple("ok", "degree_reduced", "failed", "excluded", "disk_cut",
-                                      "sign_undetermined", "partial", "reprojected",
-                                      "normal_fallback"));
-  return names.attr("__getitem__")(codes);
+  py::tuple words(kStatusCount);
+  for (int i = 0; i < kStatusCount; ++i) words[i] = status_name(static_cast<Status>(i));
+  return np.attr("array")(words).attr("__getitem__")(codes);
 }
 
-// A keyword argument as the option table's typed value (set_option checks it against the type).
+// A keyword argument as the option table's typed value (set_estimator_option checks its type).
 OptionValue option_value(const py::handle& x) {
   if (py::isinstance<py::bool_>(x)) return x.cast<bool>();
   if (py::hasattr(x, "dtype") && x.attr("dtype").attr("kind").cast<std::string>() == "b")
@@ -229,10 +225,10 @@ OptionValue option_value(const py::handle& x) {
 // Every option of the table as estimate()'s docstring lists it.
 std::string options_doc() {
   std::string s;
-  for (const OptionInfo& o : estimator_option_schema()) {
+  for (const OptionDescription& o : estimator_options()) {
     std::string value = o.default_text;
-    if (o.type == OptionType::boolean) value = value == "yes" ? "True" : "False";
-    if (o.type == OptionType::choice) value = "'" + value + "'";
+    if (o.type == "bool") value = value == "yes" ? "True" : "False";
+    if (o.type == "choice") value = "'" + value + "'";
     s += o.python_name + " (default " + value + "): " + o.help + ".\n";
   }
   return s;
@@ -242,61 +238,46 @@ PyEstimate py_estimate(const py::handle& V, const py::handle& F, const std::stri
                        const py::kwargs& kwargs) {
   EstimateOptions o;
   o.method = method;
+  const std::vector<OptionDescription> table = estimator_options();
   for (const auto& [key, value] : kwargs) {
     if (value.is_none()) continue;  // None: the default
     const std::string name = key.cast<std::string>();
     const auto known = [&] {
-      for (const OptionInfo& info : estimator_option_schema())
+      for (const OptionDescription& info : table)
         if (info.python_name == name) return true;
       return false;
     };
     if (!known()) {
       std::string valid;
-      for (const OptionInfo& info : estimator_option_schema())
+      for (const OptionDescription& info : table)
         valid += (valid.empty() ? "" : ", ") + info.python_name;
       throw UsageError("unknown option '" + name + "' (valid: " + valid + ")");
     }
-    set_option_value(o, name, option_value(value));
+    set_estimator_option(o, name, option_value(value));
   }
-  // method="auto": the estimator of the advice for the mesh, chosen once the mesh is made.
-  const bool automatic = is_auto_method(method);
-  std::unique_ptr<Estimator> est = automatic ? nullptr : make_api_estimator(o);
-  VertexMatrix Vm = to_vertices(V);
-  FaceMatrix Fm = to_faces(F, Vm.rows());
+  const Eigen::MatrixXd Vm = to_vertices(V);
+  const Eigen::MatrixXi Fm = to_faces(F, Vm.rows());
   PyEstimate r;
-  std::optional<Advice> advice;
   {
     py::gil_scoped_release unlocked;
-    Mesh mesh(std::move(Vm), std::move(Fm), "mesh");
-    if (automatic) {
-      advice = advise(mesh, std::nan(""), default_recommendations());
-      if (!advice->has_choice)
-        throw InputError(advice->table + ": no sweep ran for " + advice->mesh_class.quality +
-                         " meshes at sigma/h " + format_g(advice->noise_level) +
-                         ", so method='auto' has no choice; name the method");
-      EstimateOptions chosen;
-      static_cast<EstimatorOptions&>(chosen) = auto_options(advice->choice, o, true);
-      chosen.method = advice->choice.method;
-      est = make_api_estimator(chosen);
-    }
-    r.estimates = estimate_oriented(std::move(mesh), *est).estimates;
+    r.estimates = estimate(Vm, Fm, o);
   }
-  if (advice) r.recommendation = advice_dict(*advice);
-  const auto& e = r.estimates;
-  const size_t n = e.size();
-  r.method = est->label();
-  r.normal = vec3_array(e, &VertexEstimate::normal);
-  r.d1 = vec3_array(e, &VertexEstimate::d1);
-  r.d2 = vec3_array(e, &VertexEstimate::d2);
-  r.k1 = column<double>(n, [&](size_t i) { return e[i].k1; });
-  r.k2 = column<double>(n, [&](size_t i) { return e[i].k2; });
-  r.H = column<double>(n, [&](size_t i) { return e[i].H; });
-  r.K = column<double>(n, [&](size_t i) { return e[i].K; });
-  r.degree = column<std::int32_t>(n, [&](size_t i) { return e[i].degree; });
-  r.points = column<std::int32_t>(n, [&](size_t i) { return e[i].points; });
-  r.ring = column<double>(n, [&](size_t i) { return e[i].ring; });
-  const auto codes =
-      column<std::uint8_t>(n, [&](size_t i) { return static_cast<std::uint8_t>(e[i].status); });
+  const EstimateResult& e = r.estimates;
+  if (e.recommendation) r.recommendation = advice_dict(*e.recommendation);
+  r.method = e.method;
+  r.normal = rows_array<double>(e.normal);
+  r.d1 = rows_array<double>(e.d1);
+  r.d2 = rows_array<double>(e.d2);
+  r.k1 = vector_array<double>(e.k1);
+  r.k2 = vector_array<double>(e.k2);
+  r.H = vector_array<double>(e.H);
+  r.K = vector_array<double>(e.K);
+  r.degree = vector_array<std::int32_t>(e.degree);
+  r.points = vector_array<std::int32_t>(e.points);
+  r.ring = vector_array<double>(e.ring);
+  py::array_t<std::uint8_t> codes(static_cast<py::ssize_t>(e.status.size()));
+  auto c = codes.mutable_unchecked<1>();
+  for (size_t i = 0; i < e.status.size(); ++i) c(i) = static_cast<std::uint8_t>(e.status[i]);
   r.status_code = codes;
   r.status = numpy_status_names(codes);
   return r;
@@ -304,43 +285,40 @@ PyEstimate py_estimate(const py::handle& V, const py::handle& F, const std::stri
 
 py::dict py_recommend(const py::handle& V, const py::handle& F, std::optional<double> noise,
                       std::optional<std::string> results) {
-  VertexMatrix Vm = to_vertices(V);
-  FaceMatrix Fm = to_faces(F, Vm.rows());
-  std::optional<Advice> advice;
+  const Eigen::MatrixXd Vm = to_vertices(V);
+  const Eigen::MatrixXi Fm = to_faces(F, Vm.rows());
+  RecommendOptions o;
+  if (noise) o.noise = *noise;
+  if (results) o.results = *results;
+  std::optional<MeshAdvice> advice;
   {
     py::gil_scoped_release unlocked;
-    const RecommendationTable table =
-        results ? read_recommendations_csv(*results) : default_recommendations();
-    const Mesh mesh(std::move(Vm), std::move(Fm), "mesh");
-    advice = advise(mesh, noise ? *noise : std::nan(""), table);
+    advice = recommend(Vm, Fm, o);
   }
   return advice_dict(*advice);
 }
 
-py::tuple mesh_arrays(const Mesh& mesh) {
-  py::array_t<double> V({static_cast<py::ssize_t>(mesh.num_vertices()), py::ssize_t{3}});
-  py::array_t<std::int32_t> F({static_cast<py::ssize_t>(mesh.num_faces()), py::ssize_t{3}});
-  std::copy(mesh.vertices().data(), mesh.vertices().data() + mesh.vertices().size(),
-            V.mutable_data());
-  std::copy(mesh.faces().data(), mesh.faces().data() + mesh.faces().size(), F.mutable_data());
-  return py::make_tuple(V, F);
+py::tuple mesh_arrays(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
+  return py::make_tuple(rows_array<double>(V), rows_array<std::int32_t>(F));
 }
 
 py::tuple py_read_mesh(const std::string& path) {
-  MeshReadReport report;
-  const Mesh mesh = read_mesh(path, &report);
-  for (const std::string& w : read_warnings(path, report))
+  Eigen::MatrixXd V;
+  Eigen::MatrixXi F;
+  std::vector<std::string> warnings;
+  read_mesh(path, V, F, &warnings);
+  for (const std::string& w : warnings)
     if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) != 0) throw py::error_already_set();
-  return mesh_arrays(mesh);
+  return mesh_arrays(V, F);
 }
 
 py::tuple py_mesh(const std::string& family, int level, int noise_order, std::uint64_t seed,
                   const py::kwargs& kwargs) {
-  MeshSpec spec;
-  spec.family = family;
-  spec.level = level;
-  spec.noise_order = noise_order;
-  spec.seed = seed;
+  TestMeshOptions o;
+  o.family = family;
+  o.level = level;
+  o.noise_order = noise_order;
+  o.seed = seed;
   for (const auto& [key, value] : kwargs) {
     if (value.is_none()) continue;  // None: the default
     const std::string name = key.cast<std::string>();
@@ -349,35 +327,25 @@ py::tuple py_mesh(const std::string& family, int level, int noise_order, std::ui
     if (!number)
       throw UsageError("mesh option " + name + ": expected a number, got " +
                        py::str(py::type::of(value)).cast<std::string>());
-    set_mesh_option(spec.shape, name, value.cast<double>());
+    o.shape.emplace_back(name, value.cast<double>());
   }
-  GeneratedMesh g = generate_mesh(spec);
+  TestMesh g = generate_mesh(o);
   PyExact x;
-  const int n = g.mesh.num_vertices();
-  x.exact.resize(n);
-  for (int v = 0; v < n; ++v) x.exact[v] = g.surface->evaluate(g.exact_points.row(v).transpose());
-  x.surface = g.surface->name();
+  const ExactQuantities& q = g.exact;
+  x.point = rows_array<double>(q.point);
+  x.normal = rows_array<double>(q.normal);
+  x.d1 = rows_array<double>(q.d1);
+  x.d2 = rows_array<double>(q.d2);
+  x.k1 = vector_array<double>(q.k1);
+  x.k2 = vector_array<double>(q.k2);
+  x.H = vector_array<double>(q.H);
+  x.K = vector_array<double>(q.K);
+  x.surface = g.surface;
   x.description = g.description;
-  const auto vec3 = [&](Vec3 SurfacePoint::*f) {
-    py::array_t<double> out({static_cast<py::ssize_t>(n), py::ssize_t{3}});
-    auto r = out.mutable_unchecked<2>();
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < 3; ++j) r(i, j) = (x.exact[i].*f)(j);
-    return out;
-  };
-  const auto scalar = [&](double SurfacePoint::*f) {
-    return column<double>(n, [&](size_t i) { return x.exact[i].*f; });
-  };
-  x.point = vec3(&SurfacePoint::point);
-  x.normal = vec3(&SurfacePoint::normal);
-  x.d1 = vec3(&SurfacePoint::d1);
-  x.d2 = vec3(&SurfacePoint::d2);
-  x.k1 = scalar(&SurfacePoint::k1);
-  x.k2 = scalar(&SurfacePoint::k2);
-  x.H = scalar(&SurfacePoint::H);
-  x.K = scalar(&SurfacePoint::K);
-  const py::tuple vf = mesh_arrays(g.mesh);
-  x.mesh = std::make_shared<const Mesh>(std::move(g.mesh));
+  const py::tuple vf = mesh_arrays(g.V, g.F);
+  x.V = std::move(g.V);
+  x.F = std::move(g.F);
+  x.exact = std::move(g.exact);
   return py::make_tuple(vf[0], vf[1], py::cast(std::move(x)));
 }
 
@@ -388,21 +356,14 @@ py::dict py_score(const py::object& exact_or_mesh, const PyEstimate& est,
   if (!py::isinstance<PyExact>(ex))
     throw UsageError("score: expected the Exact of curvbench.mesh() or its (V, F, exact) tuple");
   const PyExact& x = ex.cast<const PyExact&>();
-  if (x.exact.size() != est.estimates.size())
-    throw InputError("score: the estimate has " + std::to_string(est.estimates.size()) +
-                     " vertices, the exact answer " + std::to_string(x.exact.size()));
-  const std::vector<int> vertices = select_vertices(*x.mesh, parse_vertex_set(vertex_set));
   py::dict out;
-  for (Quantity q :
-       {Quantity::normal, Quantity::H, Quantity::K, Quantity::k1, Quantity::k2, Quantity::d1}) {
+  for (const QuantityError& q : score(x.V, x.F, x.exact, est.estimates, vertex_set)) {
     py::dict row;
-    for (Norm norm : {Norm::L2, Norm::Linf}) {
-      const ErrorValue ev = compute_error(q, norm, est.estimates, x.exact, vertices);
-      row[to_string(norm)] = ev.value;
-      row["counted"] = ev.vertices;
-      row["excluded"] = ev.excluded;
-    }
-    out[to_string(q)] = row;
+    row["L2"] = q.L2;
+    row["Linf"] = q.Linf;
+    row["counted"] = q.counted;
+    row["excluded"] = q.excluded;
+    out[q.quantity.c_str()] = row;
   }
   return out;
 }
@@ -471,10 +432,10 @@ PYBIND11_MODULE(curvbench, m) {
                     "method='auto': the advice it followed, as curvbench.recommend() returns it "
                     "(method, options, label, the mesh's quality and noise, the sweep's error); "
                     "None for a named method.")
-      .def("__len__", [](const PyEstimate& e) { return e.estimates.size(); })
+      .def("__len__", [](const PyEstimate& e) { return e.estimates.status.size(); })
       .def("__repr__", [](const PyEstimate& e) {
-        return "<curvbench.Estimate " + e.method + " of " + std::to_string(e.estimates.size()) +
-               " vertices>";
+        return "<curvbench.Estimate " + e.method + " of " +
+               std::to_string(e.estimates.status.size()) + " vertices>";
       });
 
   py::class_<PyExact>(m, "Exact",
@@ -523,8 +484,11 @@ than 3 vertices or a repeated index) are reported as UserWarning with the comman
 Raises MeshError naming the file for an unreadable or malformed file.)");
 
   std::string mesh_options_doc;
-  for (const MeshOptionInfo& o : mesh_option_table())
-    mesh_options_doc += o.name + " (default " + format_g(o.default_value) + "): " + o.help + ".\n";
+  for (const MeshOptionDescription& o : mesh_options()) {
+    char value[32];
+    std::snprintf(value, sizeof value, "%g", o.default_value);
+    mesh_options_doc += o.name + " (default " + value + "): " + o.help + ".\n";
+  }
   static const std::string mesh_doc =
       R"(Generate a test mesh with its exact answer (as `curvbench mesh`).
 

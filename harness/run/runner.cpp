@@ -44,8 +44,8 @@ double method_cost(const std::string& name, int degree) {
 double case_cost(const RunCase& c) {
   double method = 1.0;
   try {
-    const auto est = make_estimator(c.method->spec, EstimatorOptions{});
-    method = method_cost(est->name(), est->options().degree);
+    method = method_cost(method_info(c.method->spec).name,
+                         estimator_degree(c.method->spec, EstimatorOptions{}));
   } catch (const UsageError&) {
     // not a built-in estimator: cost 1
   }
@@ -107,9 +107,9 @@ const ScoredMesh& MeshCache::get(const std::string& family, int level, int noise
 // radius-scaling (experiment.h): the neighbourhood of radius c h^alpha as the method's own
 // size parameter (its registry line's NeighbourhoodSize), n = c h^(alpha - 1) edge lengths: half
 // rings, whole rings or the ball factor; a fixed 1-ring stays.
-void scale_radius(const Experiment& e, const Estimator& est, double h, EstimatorOptions& opt) {
+void scale_radius(const Experiment& e, const std::string& method, double h, EstimatorOptions& opt) {
   const double n = e.radius_c * std::pow(h, e.radius_alpha - 1.0);
-  switch (method_info(est.name()).radius) {
+  switch (method_info(method).radius) {
     case NeighbourhoodSize::half_rings:
       opt.rings = std::max(1.0, std::round(2.0 * n) / 2.0);
       break;
@@ -164,9 +164,8 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads,
     opt.threads = threads;
     // The noisy-data half ring for the degrees the experiment gives it (the degree is the
     // estimator's: "lhf-3" names it).
-    const auto named = make_estimator(c.method->spec, opt);
-    opt.noisy = opt.noisy || e.noisy_for_degree(named->options().degree);
-    if (e.radius_c > 0.0) scale_radius(e, *named, mesh.mean_edge_length(), opt);
+    opt.noisy = opt.noisy || e.noisy_for_degree(estimator_degree(c.method->spec, opt));
+    if (e.radius_c > 0.0) scale_radius(e, c.method->spec, mesh.mean_edge_length(), opt);
     const auto estimator = make_estimator(c.method->spec, opt);
     // The case's time includes gathering the neighbourhoods when this is the first case of the
     // mesh with its neighbourhood spec (later ones read the cache's table).

@@ -12,49 +12,58 @@
 // H = (k1 + k2) / 2, K = k1 k2.
 //
 // This header includes only Eigen and the standard library (and <curvbench/errors.h>,
-// <curvbench/estimator_options.h>); the
-// library's internal headers are not installed. Link with curvbench::curvbench (CMake:
+// <curvbench/estimator_options.h>, <curvbench/status.h>); the library's internal headers are not
+// installed. Link with curvbench::curvbench (CMake:
 // find_package(curvbench CONFIG)).
 #pragma once
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <limits>
+#include <optional>
 #include <string>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include "curvbench/errors.h"
 #include "curvbench/estimator_options.h"
+#include "curvbench/status.h"
 
 namespace curvbench {
-
-/// Outcome per vertex (the same codes as the CSV/PLY output of `curvbench estimate`).
-enum class Status : std::uint8_t {
-  ok = 0,              ///< estimated (at the requested degree, for a fit); quantities the method
-                       ///< does not compute (e.g. directions of Meyer's operator) are NaN
-  degree_reduced = 1,  ///< the safeguard lowered the degree; values are finite
-  failed = 2,          ///< no estimate possible: every value NaN
-  excluded = 3,        ///< not computed by design (e.g. Xu at a boundary vertex): values NaN
-  disk_cut = 4,        ///< fitted on part of the ring: the ring was not a disk and was cut (LSCM)
-  sign_undetermined = 5,  ///< finite, but the surface there cannot be oriented (non-orientable
-                          ///< or non-manifold): the signs of normal and curvatures are arbitrary
-  partial = 6,  ///< what can be determined at the vertex is finite, the rest NaN (e.g. Meyer's
-                ///< directions where its edge tensor fit is singular, or only the normal)
-  reprojected = 7,  ///< LSCM: the map folded the ring (its normal turned more than 90 degrees
-                    ///< from the mesh's); fitted on the ring's projection onto the tangent plane
-  normal_fallback = 8,  ///< an operator fed a fit's normals (vertex_normals = "lhf-3", ...): the
-                        ///< fit gave no normal at a vertex this estimate reads; the operator's own
-                        ///< vertex normal stood in there; values finite
-};
-
-/// "ok", "degree_reduced", "failed", "excluded", "disk_cut", "sign_undetermined", "partial",
-/// "reprojected", "normal_fallback".
-const char* status_name(Status status);
 
 /// The method and its options. The options (degree, rings, noisy, threads, vertex_normals,
 /// ball_factor, ...) are those of <curvbench/estimator_options.h>, each documented there; an
 /// option set away from its default for a method that does not take it is a UsageError.
 struct EstimateOptions : EstimatorOptions {
-  std::string method = "lhf";  ///< a name of methods(), case-insensitive; "LHF-4" attaches d
+  /// A name of methods(), case-insensitive; "LHF-4" attaches d. Or "auto": the estimator and
+  /// radius recommend() gives the mesh from the installed table (then only the run options
+  /// threads and kernel may be set; EstimateResult::recommendation holds the advice).
+  std::string method = "lhf";
+};
+
+/// The advice of `curvbench recommend` for a mesh: its quality class and noise, and the most
+/// accurate case of the sweep run on meshes of that class at that noise (results/
+/// recommendations.csv).
+struct MeshAdvice {
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  std::string quality;         ///< the mesh's quality class
+  std::string quality_reason;  ///< why
+  double sigma_over_h = 0.0;   ///< its noise sigma/h along the normal, given or estimated
+  bool noise_estimated = false;
+  double noise_level = 0.0;  ///< the table's nearest noise level
+  /// False: no sweep ran for that class and level; the fields of the choice below are empty.
+  bool swept = false;
+  std::string method;          ///< EstimateOptions::method of the choice ("lhf-4")
+  std::string parameter;       ///< the neighbourhood option it sets ("rings", "ball-factor") or ""
+  double radius = kNaN;        ///< that option's value (NaN without one)
+  std::string label;           ///< the sweep's case ("LHF-4 rings=2")
+  std::string quantity, norm;  ///< what the sweep ranked by ("H", "L2")
+  double error = kNaN;         ///< the error the sweep measured
+  std::string experiment, family;  ///< the sweep and the mesh it measured on
+  int level = 0;
+  std::string table;       ///< the recommendations file read
+  std::string provenance;  ///< its first comment line
 };
 
 /// Per-vertex estimates; row/entry i belongs to vertex i.
@@ -68,18 +77,129 @@ struct EstimateResult {
   Eigen::VectorXi points;   ///< n points in each least-squares fit
   Eigen::VectorXd ring;     ///< n ring actually used
   std::vector<Status> status;
+  std::optional<MeshAdvice> recommendation;  ///< method "auto": the advice it followed
 };
 
 /// Estimates every vertex of the mesh (V, F). Throws InputError for an invalid mesh (index out
 /// of range, repeated vertex in a face, NaN/Inf coordinate) and UsageError for an unknown method,
 /// an unsupported degree, a degree that contradicts the one in `method`, an option out of range
-/// or given to a method that does not take it; the messages are the command line's. The result is bit-identical to `curvbench estimate` on the same mesh and
-/// does not depend on the thread count.
+/// or given to a method that does not take it; the messages are the command line's. Method
+/// "auto" throws as recommend() does, InputError when the table's row for the mesh was not
+/// swept, and UsageError for an option of the estimate (not threads or kernel) set away from its
+/// default. The result is bit-identical to `curvbench estimate` on the same mesh and does not
+/// depend on the thread count.
 EstimateResult estimate(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
                         const EstimateOptions& options = {});
 
-/// Reads an OFF, OBJ or PLY file (polygons fan-triangulated). Throws InputError naming the file.
-void read_mesh(const std::string& path, Eigen::MatrixXd& V, Eigen::MatrixXi& F);
+/// Reads an OFF, OBJ or PLY file (polygons fan-triangulated) into V (n x 3) and F (m x 3).
+/// With `warnings`, one line each about what the reader dropped (faces with fewer than 3
+/// vertices or a repeated index), as the command line prints them. Throws InputError naming the
+/// file.
+void read_mesh(const std::string& path, Eigen::MatrixXd& V, Eigen::MatrixXi& F,
+               std::vector<std::string>* warnings = nullptr);
+
+/// recommend()'s inputs besides the mesh.
+struct RecommendOptions {
+  /// The mesh's noise sigma/h along the normal; NaN: estimated from the residuals of a degree-4
+  /// fit at each vertex.
+  double noise = std::numeric_limits<double>::quiet_NaN();
+  /// A folder holding the recommendations.csv to read; "": the table installed with curvbench
+  /// (or the source tree's, for a build tree).
+  std::string results;
+};
+
+/// The estimator and radius recommended for the mesh (V, F), as `curvbench recommend`. Throws
+/// InputError for a mesh it cannot classify (under 50 vertices, non-manifold) or a missing,
+/// truncated or foreign table; UsageError for a negative or non-finite noise.
+MeshAdvice recommend(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
+                         const RecommendOptions& options = {});
+
+// ---- test meshes with their exact answers, and the harness's error metrics ----------------
+
+/// A test mesh of curvbench's families, as `curvbench mesh` makes it.
+struct TestMeshOptions {
+  std::string family;      ///< "torus-structured", "torus-iso", "bump-48", ... (mesh_families())
+  int level = 1;           ///< 1 = coarsest
+  int noise_order = 0;     ///< k >= 1 adds alpha h^k noise along the normal; 0 = none
+  std::uint64_t seed = 1;  ///< of the noise, jitter and irregular points
+  /// Mesh options by name, in order (mesh_options(): {"aspect", 16}); only for the families
+  /// that take them.
+  std::vector<std::pair<std::string, double>> shape;
+};
+
+/// The exact quantities of the surface at each vertex of a test mesh; row/entry i is vertex i.
+struct ExactQuantities {
+  Eigen::MatrixX3d point;     ///< n x 3 the surface point the vertex stands for (the vertex itself
+                              ///< unless noise moved it)
+  Eigen::MatrixX3d normal;    ///< n x 3 unit normals, in the sign convention above
+  Eigen::VectorXd k1, k2;     ///< n principal curvatures, k1 >= k2
+  Eigen::VectorXd H, K;       ///< n mean and Gaussian curvature
+  Eigen::MatrixX3d d1, d2;    ///< n x 3 principal directions (sign arbitrary)
+  std::vector<bool> umbilic;  ///< n: k1 == k2 there, so d1 and d2 are arbitrary
+};
+
+struct TestMesh {
+  Eigen::MatrixXd V;  ///< n x 3 vertex positions
+  Eigen::MatrixXi F;  ///< m x 3 triangles
+  ExactQuantities exact;
+  std::string surface;      ///< name of the analytic surface
+  std::string description;  ///< one line: parameters, seed, noise
+};
+
+/// Generates the mesh. Throws UsageError (naming the valid values) for an unknown family or
+/// mesh option, a level out of range, a noise order outside 0..4, or a mesh option out of range
+/// or not taken by the family.
+TestMesh generate_mesh(const TestMeshOptions& options);
+
+/// Names of the test-mesh families, in table order.
+std::vector<std::string> mesh_families();
+
+/// One mesh option of TestMeshOptions::shape.
+struct MeshOptionDescription {
+  std::string name;      ///< "aspect"
+  double default_value;  ///< used when not given
+  std::string help;      ///< one line: what it sets, the families that take it
+};
+std::vector<MeshOptionDescription> mesh_options();
+
+/// One quantity's errors (docs/metrics.md): normal absolute (RMS and max of |n~ - n|); H, K,
+/// k1, k2 relative norm ratios; d1 over the non-umbilic vertices.
+struct QuantityError {
+  std::string quantity;  ///< "normal", "H", "K", "k1", "k2", "d1"
+  double L2 = 0.0;       ///< NaN when no vertex contributed
+  double Linf = 0.0;
+  int counted = 0;   ///< vertices that contributed
+  int excluded = 0;  ///< vertices of the set left out: their estimate is excluded or NaN
+};
+
+/// The errors of an estimate of the mesh (V, F) against its exact quantities over a vertex set
+/// ("all", "interior", "boundary-ring"), as the harness computes them: one QuantityError per
+/// quantity normal, H, K, k1, k2, d1 in that order. Throws InputError when the estimate or the
+/// exact quantities have another vertex count than V, UsageError for an unknown vertex set.
+std::vector<QuantityError> score(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
+                                 const ExactQuantities& exact, const EstimateResult& estimate,
+                                 const std::string& vertex_set = "all");
+
+// ---- the estimator option table, for bindings -----------------------------------------------
+
+/// One option of EstimatorOptions (<curvbench/estimator_options.h>), as its table declares it.
+struct OptionDescription {
+  std::string name;          ///< "ball-factor": the command line's --ball-factor
+  std::string python_name;   ///< "ball_factor": a keyword (the C++ field's name)
+  std::string type;          ///< "bool", "int", "double" or "choice"
+  std::string default_text;  ///< the default as text ("0", "yes", "default")
+  std::string help;          ///< one line
+};
+/// Every option, in the table's order.
+std::vector<OptionDescription> estimator_options();
+
+/// A value as a binding hands it over.
+using OptionValue = std::variant<bool, long long, double, std::string>;
+/// Sets option `name` (its name or python_name) from a typed value: a bool for a bool, an
+/// integer for an int, a number for a double, a string for a choice. Throws UsageError
+/// "<name>: <problem>" for an unknown name, a value of the wrong type or out of range.
+void set_estimator_option(EstimatorOptions& options, const std::string& name,
+                          const OptionValue& value);
 
 /// Names accepted as EstimateOptions::method (without degree).
 std::vector<std::string> methods();

@@ -359,3 +359,13 @@ def test_auto_follows_the_recommendation_of_the_command_line(tmp_path):
         curvbench.recommend(V, F, results=str(tmp_path))
     with pytest.raises(curvbench.UsageError, match="sigma/h must be finite"):
         curvbench.recommend(V, F, noise=-1.0)
+
+
+def test_the_module_includes_only_the_public_api():
+    # python/curvbench_module.cpp is a client of include/curvbench/ like any other: besides
+    # pybind11 and the standard library it includes only <curvbench/...> headers.
+    source = os.path.join(os.environ["CURVBENCH_SOURCE_DIR"], "python", "curvbench_module.cpp")
+    quoted = [line.split('"')[1] for line in open(source) if line.startswith('#include "')]
+    assert quoted and all(h.startswith("curvbench/") for h in quoted), quoted
+    public = os.listdir(os.path.join(os.environ["CURVBENCH_SOURCE_DIR"], "include", "curvbench"))
+    assert all(h.split("/", 1)[1] in public for h in quoted)

@@ -1,10 +1,12 @@
 // The public C++ API (include/curvbench/curvbench.h): exactness on a quadric, the sign
-// convention, result shapes, error types and messages.
+// convention, result shapes, error types and messages; the status enum, test meshes, scoring,
+// options by name and the advice's error path.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "curvbench/curvbench.h"
 
@@ -115,6 +117,109 @@ TEST(Api, ReadMeshMethodsAndVersion) {
   for (const auto& m : methods()) has_lhf |= m == "lhf";
   EXPECT_TRUE(has_lhf);
   EXPECT_EQ(version().find("0."), 0u);
+}
+
+// One status enum: the numbers written to PLY files, each with its own name.
+TEST(Api, StatusCodesAndNames) {
+  static_assert(static_cast<int>(Status::ok) == 0 && static_cast<int>(Status::failed) == 2 &&
+                static_cast<int>(Status::sign_undetermined) == 5 &&
+                static_cast<int>(Status::reprojected) == kStatusCount - 1);
+  std::vector<std::string> names;
+  for (int i = 0; i < kStatusCount; ++i) names.push_back(status_name(static_cast<Status>(i)));
+  EXPECT_EQ(names.front(), "ok");
+  EXPECT_EQ(names.back(), "reprojected");
+  for (size_t i = 0; i < names.size(); ++i)
+    for (size_t j = i + 1; j < names.size(); ++j) EXPECT_NE(names[i], names[j]);
+}
+
+// The exact quantities scored as an estimate have no error, on every vertex.
+TEST(Api, ScoreOfTheExactAnswerIsZero) {
+  TestMeshOptions m;
+  m.family = "bump-48";
+  m.level = 2;
+  const TestMesh t = generate_mesh(m);
+  ASSERT_EQ(t.exact.H.size(), t.V.rows());
+  EstimateResult exact;
+  exact.normal = t.exact.normal;
+  exact.k1 = t.exact.k1;
+  exact.k2 = t.exact.k2;
+  exact.H = t.exact.H;
+  exact.K = t.exact.K;
+  exact.d1 = t.exact.d1;
+  exact.d2 = t.exact.d2;
+  exact.degree = Eigen::VectorXi::Zero(t.V.rows());
+  exact.points = Eigen::VectorXi::Zero(t.V.rows());
+  exact.ring = Eigen::VectorXd::Zero(t.V.rows());
+  exact.status.assign(static_cast<size_t>(t.V.rows()), Status::ok);
+  const std::vector<QuantityError> s = score(t.V, t.F, t.exact, exact);
+  ASSERT_EQ(s.size(), 6u);
+  EXPECT_EQ(s[0].quantity, "normal");
+  EXPECT_EQ(s[5].quantity, "d1");
+  for (const QuantityError& q : s) {
+    EXPECT_EQ(q.L2, 0.0) << q.quantity;
+    EXPECT_EQ(q.Linf, 0.0) << q.quantity;
+    EXPECT_EQ(q.excluded, 0) << q.quantity;
+  }
+  EXPECT_EQ(s[1].counted, t.V.rows());  // H over every vertex
+  EXPECT_THROW(score(t.V, t.F, t.exact, exact, "inner"), UsageError);
+  m.level = 1;
+  const TestMesh coarse = generate_mesh(m);
+  EXPECT_THROW(score(coarse.V, coarse.F, t.exact, exact), InputError);
+}
+
+// generate_mesh, estimate and score together: LHF-2's normals converge at about second order on
+// the structured torus (paper §5.1: order d for the normals of a degree-d fit).
+TEST(Api, TestMeshEstimateAndScoreShowTheNormalsConvergence) {
+  double error[2] = {0, 0};
+  for (int level : {2, 3}) {
+    TestMeshOptions m;
+    m.family = "torus-structured";
+    m.level = level;
+    const TestMesh t = generate_mesh(m);
+    EstimateOptions o;
+    o.method = "lhf-2";
+    o.threads = 1;
+    error[level - 2] = score(t.V, t.F, t.exact, estimate(t.V, t.F, o)).front().L2;
+  }
+  EXPECT_GT(error[0] / error[1], 3.0);  // h halves: 4x at order 2
+  TestMeshOptions bad;
+  bad.family = "torus-structured";
+  bad.shape = {{"aspect", 16.0}};  // not taken by this family
+  EXPECT_THROW(generate_mesh(bad), UsageError);
+  bool aspect = false;
+  for (const MeshOptionDescription& d : mesh_options()) aspect |= d.name == "aspect";
+  EXPECT_TRUE(aspect);
+}
+
+TEST(Api, OptionsByName) {
+  EstimatorOptions o;
+  set_estimator_option(o, "ball_factor", 2.5);
+  set_estimator_option(o, "rings", 3.0);
+  set_estimator_option(o, "noisy", true);
+  EXPECT_EQ(o.ball_factor, 2.5);
+  EXPECT_EQ(o.rings, 3.0);
+  EXPECT_TRUE(o.noisy);
+  EXPECT_THROW(set_estimator_option(o, "rings", std::string("two")), UsageError);
+  EXPECT_THROW(set_estimator_option(o, "nosuch", 1.0), UsageError);
+  const std::vector<OptionDescription> table = estimator_options();
+  ASSERT_FALSE(table.empty());
+  EXPECT_EQ(table.front().name, "degree");
+  EXPECT_EQ(table.front().type, "int");
+}
+
+TEST(Api, RecommendNamesAMissingTable) {
+  Eigen::MatrixXd V;
+  Eigen::MatrixXi F;
+  quadric_grid(0.5, 0.2, 5, V, F);
+  RecommendOptions o;
+  o.results = "/nonexistent";
+  try {
+    recommend(V, F, o);
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("recommendations.csv: not found"), std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

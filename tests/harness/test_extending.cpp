@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/errors.h"
 #include "harness/model/experiment.h"
@@ -36,7 +37,10 @@ class ToyNormalEstimator final : public Estimator {
   }
 };
 
+int toy_normals_built = 0;  // calls of make_toy_normal
+
 std::unique_ptr<Estimator> make_toy_normal(EstimatorOptions options) {
+  ++toy_normals_built;
   return std::make_unique<ToyNormalEstimator>(options);
 }
 
@@ -95,6 +99,24 @@ TEST(Extending, AToyEstimatorAndFamilyRunThroughTheExperimentPath) {
   // The tables know them.
   EXPECT_EQ(mesh_family("toy-sphere").caption, "unit icosphere (test only)");
   EXPECT_EQ(method_labels(2, 2).back(), "toy-normal");
+}
+
+// run_case builds a case's estimator once (its degree and radius come from the registry, not
+// from a first estimator built to ask), also under the noisy reading and radius scaling.
+TEST(Extending, RunCaseBuildsTheEstimatorOnce) {
+  register_toys();
+  const std::vector<Experiment> experiments = {parse_experiment_text(
+      "name toy-once\nmesh toy-sphere levels=2\nnoisy yes\nradius-scaling alpha=0.5 c=0.44\n"
+      "method toy-normal\npanel toy-n \"Toy. Normals.\" normal L2\n",
+      "toy-once.exp")};
+  const std::vector<RunCase> cases = expand_cases(experiments);
+  ASSERT_EQ(cases.size(), 1u);
+  // 4^2 x the registry line's cost 0.1 x a degree-free method's factor 0.5, nothing built
+  EXPECT_DOUBLE_EQ(case_cost(cases[0]), 16.0 * 0.1 * 0.5);
+  MeshCache cache;
+  toy_normals_built = 0;
+  EXPECT_EQ(run_case(cases[0], cache, 1).size(), 1u);
+  EXPECT_EQ(toy_normals_built, 1);
 }
 
 TEST(Extending, RegistrationErrors) {

@@ -43,8 +43,7 @@ TEST(RadiusTrait, RadiusScalingSizesEachMethodByItsDeclaration) {
   const double h = 0.01;  // n = 0.44 * 0.01^(-1/2) = 4.4 edge lengths
   const auto scaled = [&](const std::string& method) {
     EstimatorOptions opt;
-    const auto est = make_estimator(method, opt);
-    scale_radius(e, *est, h, opt);
+    scale_radius(e, method, h, opt);
     return opt;
   };
   EXPECT_DOUBLE_EQ(scaled("lhf-2").rings, 4.5);    // half rings: round(8.8) / 2

@@ -1,5 +1,5 @@
-// The readings of the paper's unstated choices (harness/readings/readings.h): each alternative changes
-// the experiments as documented (levels, noise model, noisy-data rings) and only those, the
+// The readings of the paper's unstated choices (harness/readings/readings.h): each alternative
+// changes the experiments as documented (levels, noise model, noisy-data rings) and only those, the
 // experiment files accept the options they set, and the runner honours them.
 #include <gtest/gtest.h>
 
@@ -230,7 +230,7 @@ TEST(RadiusScaling, EachMethodGetsItsOwnNeighbourhoodParameter) {
   EXPECT_EQ(e.radius_c, 0.44);
   const auto rings_of = [&](const std::string& method, double h) {
     EstimatorOptions o;
-    scale_radius(e, *make_estimator(method, {}), h, o);
+    scale_radius(e, method, h, o);
     return std::make_pair(o.rings, o.ball_factor);
   };
   EXPECT_EQ(rings_of("lhf-2", 0.0121).first, 4.0);

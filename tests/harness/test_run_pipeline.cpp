@@ -32,7 +32,7 @@ PipelineOptions options_in(const fs::path& dir) {
   o.experiments = {tiny()};
   o.available = o.experiments;
   o.output = dir.string();
-  o.threads = 1;
+  o.run.threads = 1;
   o.table4_max = 16;
   o.plots = false;
   return o;
@@ -46,8 +46,8 @@ TEST(RunPipeline, FullRunThenRerunReusesEveryCaseWithTheSameBytes) {
   EXPECT_EQ(first.total, 4);  // 2 levels x 2 methods
   EXPECT_EQ(first.computed, 4);
   EXPECT_EQ(first.reused, 0);
-  for (const char* f : {"pipeline-test.csv", "rates.csv", "table2.csv", "table4.csv", "REPORT.md",
-                        "CLAIMS.md"})
+  for (const char* f :
+       {"pipeline-test.csv", "rates.csv", "table2.csv", "table4.csv", "REPORT.md", "CLAIMS.md"})
     EXPECT_TRUE(fs::exists(dir / f)) << f;
   EXPECT_EQ(first.report, (dir / "REPORT.md").string());
   const std::string csv = testing::slurp(dir / "pipeline-test.csv");
@@ -70,8 +70,8 @@ TEST(RunPipeline, FullRunThenRerunReusesEveryCaseWithTheSameBytes) {
 TEST(RunPipeline, ShardsStoreTheirCasesAndReportOnlyNamesWhatIsMissing) {
   const auto dir = testing::fresh_dir("pipeline_shards");
   PipelineOptions shard = options_in(dir);
-  shard.shard = 1;
-  shard.shard_count = 2;
+  shard.run.shard = 1;
+  shard.run.shard_count = 2;
   const PipelineResult one = run_pipeline(shard);
   EXPECT_GT(one.computed, 0);
   EXPECT_LT(one.computed, 4);
@@ -87,7 +87,7 @@ TEST(RunPipeline, ShardsStoreTheirCasesAndReportOnlyNamesWhatIsMissing) {
     ASSERT_FALSE(missing.empty());
     EXPECT_NE(std::string(e.what()).find(missing.front()), std::string::npos) << e.what();
   }
-  shard.shard = 2;
+  shard.run.shard = 2;
   EXPECT_EQ(run_pipeline(shard).computed, 4 - one.computed);
   EXPECT_EQ(run_pipeline(report).status, PipelineStatus::done);
   EXPECT_TRUE(fs::exists(dir / "REPORT.md"));
@@ -97,8 +97,8 @@ TEST(RunPipeline, StopAfterTheFirstCaseLeavesNoReport) {
   const auto dir = testing::fresh_dir("pipeline_stop");
   PipelineOptions o = options_in(dir);
   auto finished = std::make_shared<int>(0);
-  o.progress = [finished](const RunProgress&) { ++*finished; };
-  o.stop = [finished] { return *finished > 0; };
+  o.run.progress = [finished](const RunProgress&) { ++*finished; };
+  o.run.stop = [finished] { return *finished > 0; };
   const PipelineResult r = run_pipeline(o);
   EXPECT_EQ(r.status, PipelineStatus::stopped);
   EXPECT_EQ(r.computed, 1);
