@@ -123,11 +123,12 @@ TEST(Api, ReadMeshMethodsAndVersion) {
 TEST(Api, StatusCodesAndNames) {
   static_assert(static_cast<int>(Status::ok) == 0 && static_cast<int>(Status::failed) == 2 &&
                 static_cast<int>(Status::sign_undetermined) == 5 &&
-                static_cast<int>(Status::reprojected) == kStatusCount - 1);
+                static_cast<int>(Status::reprojected) == 7 &&
+                static_cast<int>(Status::normal_fallback) == kStatusCount - 1);
   std::vector<std::string> names;
   for (int i = 0; i < kStatusCount; ++i) names.push_back(status_name(static_cast<Status>(i)));
   EXPECT_EQ(names.front(), "ok");
-  EXPECT_EQ(names.back(), "reprojected");
+  EXPECT_EQ(names.back(), "normal_fallback");
   for (size_t i = 0; i < names.size(); ++i)
     for (size_t j = i + 1; j < names.size(); ++j) EXPECT_NE(names[i], names[j]);
 }
