@@ -58,6 +58,10 @@ EstimateResult estimate(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
   return out;
 }
 
+EstimateResult estimate(const Eigen::MatrixXd& V, const EstimateOptions& options) {
+  return estimate(V, Eigen::MatrixXi(0, 3), options);
+}
+
 void read_mesh(const std::string& path, Eigen::MatrixXd& V, Eigen::MatrixXi& F) {
   const Mesh mesh = read_mesh(path);
   V = mesh.vertices();

@@ -2,7 +2,7 @@
 # libcurvbench.so (target curvbench_shared, exported as curvbench::curvbench) and one static
 # archive libcurvbench.a (the layers' archives merged; imported as curvbench::curvbench_static by
 # the installed package). Users include only <curvbench/curvbench.h> (include/curvbench/).
-set(CURVBENCH_LAYERS cb_api cb_harness cb_methods cb_meshgen cb_mesh cb_surfaces cb_core)
+set(CURVBENCH_LAYERS cb_api cb_harness cb_methods cb_meshgen cb_mesh cb_points cb_surfaces cb_core)
 
 add_library(curvbench_shared SHARED ${PROJECT_SOURCE_DIR}/cmake/empty.cpp)
 # Every object of every layer (--whole-archive), plus what the layers link.
