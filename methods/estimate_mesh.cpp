@@ -152,9 +152,9 @@ int thread_count(const Estimator& estimator) {
   return threads < 1 ? 1 : threads;
 }
 
-// The methods that work without faces: those reading neighbours only (the fits on rings that
-// need no ring faces), as the registry's estimators say.
-std::string point_methods() {
+}  // namespace
+
+std::string point_set_methods() {
   std::string names;
   for (const std::string& name : estimator_names()) {
     try {
@@ -166,6 +166,8 @@ std::string point_methods() {
   return names;
 }
 
+namespace {
+
 // A point set (no faces) or a point neighbourhood (the option) needs a method that reads
 // neighbours only: the others refuse with one line saying why.
 void check_point_method(const Estimator& estimator, const Mesh& mesh) {
@@ -175,9 +177,9 @@ void check_point_method(const Estimator& estimator, const Mesh& mesh) {
                               : " parameterizes the faces of its rings";
   if (mesh.num_faces() == 0)
     throw UsageError(estimator.label() + why + ": a point set has no faces (methods for points: " +
-                     point_methods() + ")");
+                     point_set_methods() + ")");
   throw UsageError(estimator.label() + why + ": the neighbourhood option applies to " +
-                   point_methods() + " only");
+                   point_set_methods() + " only");
 }
 
 }  // namespace

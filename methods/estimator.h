@@ -273,6 +273,10 @@ std::vector<std::string> method_labels(int lowest_degree, int highest_degree);
 /// Names accepted by make_estimator (without degree).
 std::vector<std::string> estimator_names();
 
+/// The names of the methods that work on a point set (neighbourhood_use() is neighbours), in
+/// registry order, joined by ", ".
+std::string point_set_methods();
+
 /// Whether the built-in method named by `method` (a name or label as make_estimator accepts,
 /// e.g. "Xu-2") scores interior vertices only (Estimator::scores_interior_only()); false for a
 /// name that is not a built-in method (e.g. an outside estimator's label).

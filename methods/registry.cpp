@@ -111,6 +111,11 @@ std::string valid_names() {
 // Every option set away from its default must suit the method (methods/option_schema.h).
 std::unique_ptr<Estimator> checked(std::unique_ptr<Estimator> est) {
   check_options_apply(est->options(), {est->name(), est->takes_degree(), est->ring_fit()});
+  // The point neighbourhood serves the methods that read neighbours without faces only.
+  if (est->options().neighbourhood.kind != PointNeighbourhood::Kind::none &&
+      est->neighbourhood_use() != NeighbourhoodUse::neighbours)
+    throw UsageError("neighbourhood applies to the methods that read neighbours without faces (" +
+                     point_set_methods() + "), not to '" + est->name() + "'");
   return est;
 }
 

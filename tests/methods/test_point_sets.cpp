@@ -114,14 +114,15 @@ TEST(PointSets, FaceMethodsRefuseAPointSetWithOneLine) {
   }
 }
 
-TEST(PointSets, NeighbourhoodOptionOnAMeshRefusesFaceMethods) {
+TEST(PointSets, NeighbourhoodOptionRefusesFaceMethodsAndServesFitsOnAMesh) {
   const VertexMatrix V = sample_torus_points(50, 1.0, 0.4, 1);
   FaceMatrix F(1, 3);
   F << 0, 1, 2;
   const Mesh mesh(V, F);
   EstimatorOptions o;
   set_option(o, "neighbourhood", "knn=10");
-  EXPECT_THROW(estimate_mesh(mesh, *make_estimator("meyer", o)), UsageError);
+  EXPECT_THROW(make_estimator("meyer", o), UsageError);
+  EXPECT_THROW(make_estimator("lscm-2", o), UsageError);
   EXPECT_NO_THROW(estimate_mesh(mesh, *make_estimator("lhf-2", o)));
 }
 
