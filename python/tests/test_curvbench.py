@@ -364,7 +364,8 @@ def test_point_set_without_faces_is_outward_and_matches_the_command_line(tmp_pat
     ok = r.status == "ok"
     assert ok.sum() == len(V)
     assert np.all(np.einsum("ij,ij->i", r.normal, V) > 0)
-    assert np.allclose(r.H, -0.5, atol=1e-3)
+    # O(h^2) for degree 3 on random points, h / r about 0.065 here: within 2% of -1/r.
+    assert np.allclose(r.H, -0.5, atol=1e-2)
     default = curvbench.estimate(V, method="lhf-3")  # the default knn=2*10=20
     assert np.array_equal(default.H, r.H)
     path = tmp_path / "sphere.xyz"
