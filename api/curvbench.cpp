@@ -104,6 +104,8 @@ const char* type_name(OptionType t) {
       return "double";
     case OptionType::choice:
       return "choice";
+    case OptionType::text:
+      return "text";
   }
   return "choice";
 }
@@ -162,6 +164,10 @@ EstimateResult estimate(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
     out.status[static_cast<size_t>(i)] = e.status;
   }
   return out;
+}
+
+EstimateResult estimate(const Eigen::MatrixXd& V, const EstimateOptions& options) {
+  return estimate(V, Eigen::MatrixXi(0, 3), options);
 }
 
 void read_mesh(const std::string& path, Eigen::MatrixXd& V, Eigen::MatrixXi& F,

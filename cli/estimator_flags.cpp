@@ -25,6 +25,7 @@ void EstimatorOptionFlags::add_to(CLI::App& app) {
     help += " (default " + option.default_text + ")";
     const char* type = option.type == OptionType::integer ? "INT"
                        : option.type == OptionType::real  ? "NUMBER"
+                       : option.type == OptionType::text  ? "RULE"
                                                           : "NAME";
     app.add_option_function<std::string>(
            "--" + name, [given, name](const std::string& text) { (*given)[name] = text; }, help)

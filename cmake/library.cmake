@@ -3,7 +3,7 @@
 # archive libcurvbench.a (the layers' archives merged; imported as curvbench::curvbench_static by
 # the installed package). Users include only <curvbench/curvbench.h> (include/curvbench/).
 set(CURVBENCH_LAYERS cb_api cb_harness cb_harness_run cb_harness_claims cb_harness_readings
-                     cb_harness_report cb_harness_model cb_methods cb_meshgen cb_mesh cb_surfaces cb_core)
+                     cb_harness_report cb_harness_model cb_methods cb_meshgen cb_mesh cb_points cb_surfaces cb_core)
 
 add_library(curvbench_shared SHARED ${PROJECT_SOURCE_DIR}/cmake/empty.cpp)
 # Every object of every layer (--whole-archive), plus what the layers link.

@@ -81,8 +81,8 @@ void check_face_index(const std::string& path, std::size_t line, unsigned long l
 
 void check_not_empty(const std::string& path, unsigned long long vertices,
                      unsigned long long faces) {
+  (void)faces;  // none: a point set
   if (vertices == 0) fail(path, "empty mesh: no vertices");
-  if (faces == 0) fail(path, "empty mesh: no faces");
 }
 
 // ---- numbers -----------------------------------------------------------------------------------
@@ -220,10 +220,11 @@ std::string read_file(const std::string& path) {
 
 Mesh read_mesh(const std::string& path, MeshReadReport* report, const MeshReadOptions& options) {
   const std::string format = lower_extension(path);
-  if (format != "off" && format != "obj" && format != "ply")
-    fail(path, format.empty()
-                   ? "no file extension (expected .off, .obj or .ply)"
-                   : "unknown extension '." + format + "' (expected .off, .obj or .ply)");
+  const bool points = format == "xyz" || format == "pts" || format == "pwn";
+  if (format != "off" && format != "obj" && format != "ply" && !points)
+    fail(path, format.empty() ? "no file extension (expected .off, .obj, .ply, .xyz, .pts or .pwn)"
+                              : "unknown extension '." + format +
+                                    "' (expected .off, .obj, .ply, .xyz, .pts or .pwn)");
 
   Soup soup;
   // Binary PLY is read from the file in blocks (read_binary_ply_file); everything else from the
@@ -250,6 +251,8 @@ Mesh read_mesh(const std::string& path, MeshReadReport* report, const MeshReadOp
       soup = read_off(path, text, options.skip_invalid);
     else if (format == "obj")
       soup = read_obj(path, text, options.skip_invalid);
+    else if (points)
+      soup = read_xyz(path, text, options.skip_invalid);
     else
       soup = read_ply(path, text, options.skip_invalid);
   }  // the file's bytes are freed here, before the mesh is built

@@ -1,8 +1,10 @@
 // Mesh file input and output.
 //
-// Reading: OFF, OBJ and PLY (ASCII and binary), chosen by extension (case-insensitive), one
-// reader per format (mesh/read_off.cpp, read_obj.cpp, read_ply.cpp), each a single validating
-// pass that builds the polygon soup. Polygons with more than three vertices are fan-triangulated;
+// Reading: OFF, OBJ and PLY (ASCII and binary), and the point sets .xyz/.pts/.pwn, chosen by
+// extension (case-insensitive), one reader per format (mesh/read_off.cpp, read_obj.cpp,
+// read_ply.cpp, read_xyz.cpp), each a single validating pass that builds the polygon soup. A file
+// without faces (a point file, OFF with 0 faces, PLY without a face element) gives a Mesh
+// without faces: a point set (docs/point_sets.md). Polygons with more than three vertices are fan-triangulated;
 // polygons with fewer than three vertices or a repeated vertex index are dropped and counted.
 // Writing: OFF (full double precision) and PLY (binary little-endian) with optional per-vertex
 // properties (normal, curvatures, directions, ...) for MeshLab / ParaView.
@@ -51,8 +53,10 @@ std::string read_file(const std::string& path);
 
 /// Reads a triangle mesh. Throws InputError on a missing/unreadable file, an unknown extension,
 /// a malformed file (bad header or body, counts that disagree with the body, non-numeric token),
-/// an index out of range or negative, a NaN/Inf coordinate (unless options.skip_invalid), or a
-/// mesh left without vertices or faces. Header counts or polygon sizes the file cannot hold are
+/// an index out of range or negative, a NaN/Inf coordinate (unless options.skip_invalid), a mesh
+/// without vertices, or one whose every polygon was dropped. A file without polygons is a point
+/// set (a Mesh with 0 faces); a point file whose lines differ in their number of columns (2-D and
+/// 3-D lines mixed) is refused naming the line. Header counts or polygon sizes the file cannot hold are
 /// refused before anything is allocated by them. Polygons with fewer than 3 vertices or with a
 /// repeated vertex index are dropped and counted in the report.
 Mesh read_mesh(const std::string& path, MeshReadReport* report = nullptr,

@@ -11,6 +11,7 @@
 
 #include "core/errors.h"
 #include "core/text.h"
+#include "points/point_search.h"
 
 namespace curvbench {
 
@@ -38,6 +39,10 @@ struct Block {
 NeighbourhoodTable::NeighbourhoodTable(const Mesh& mesh, const NeighbourhoodSpec& spec,
                                        bool with_faces, int threads)
     : spec_(spec), has_faces_(with_faces) {
+  if (spec.is_points()) {
+    build_points(mesh, threads);
+    return;
+  }
   check_ring(spec.ring, "ring");
   if (spec.adaptive) check_ring(spec.max_ring, "max ring");
   const int n = mesh.num_vertices();
@@ -106,6 +111,34 @@ NeighbourhoodTable::NeighbourhoodTable(const Mesh& mesh, const NeighbourhoodSpec
     std::vector<int>().swap(in.neighbours);
     std::vector<int>().swap(in.faces);
   }
+}
+
+void NeighbourhoodTable::build_points(const Mesh& mesh, int threads) {
+  using Points = NeighbourhoodSpec::Points;
+  if (has_faces_)
+    throw UsageError("neighbourhood table: a k-NN or ball neighbourhood has no faces");
+  if (spec_.points == Points::knn &&
+      !(spec_.size >= 1.0 && spec_.size == std::floor(spec_.size) && spec_.size < 1e9))
+    throw UsageError("neighbourhood table: knn=" + format_g(spec_.size) +
+                     " is not a whole number of neighbours >= 1");
+  if (spec_.points != Points::knn && !(spec_.size > 0.0 && std::isfinite(spec_.size)))
+    throw UsageError("neighbourhood table: radius " + format_g(spec_.size) + " is not positive");
+  const PointSearch search(mesh.vertices());
+  PointRows rows;
+  if (spec_.points == Points::knn) {
+    rows = knn_rows(search, static_cast<int>(spec_.size), threads);
+  } else {
+    radius_ = spec_.size;
+    if (spec_.points == Points::radius_spacing) radius_ *= mean_spacing(search, threads);
+    rows = ball_rows(search, radius_, threads);
+  }
+  const size_t n = static_cast<size_t>(mesh.num_vertices());
+  half_steps_.assign(n, 0);
+  nb_offsets_ = std::move(rows.offsets);
+  face_offsets_.assign(n + 1, 0);
+  num_neighbours_ = rows.neighbours.size();
+  neighbours_ = std::make_unique_for_overwrite<int[]>(num_neighbours_);
+  std::copy(rows.neighbours.begin(), rows.neighbours.end(), neighbours_.get());
 }
 
 std::size_t NeighbourhoodTable::bytes() const {

@@ -37,7 +37,10 @@ class NeighbourhoodTable {
 
   /// Gathers the neighbourhood `spec` of every vertex with `threads` OpenMP threads (0 = the
   /// OpenMP default); with_faces: also the ring faces. Throws UsageError for a ring that
-  /// RingCollector rejects or a ring (or max ring) above kMaxRing.
+  /// RingCollector rejects or a ring (or max ring) above kMaxRing. A point spec (k-NN or ball,
+  /// NeighbourhoodSpec::is_points) is gathered from the vertex positions alone (faces ignored,
+  /// rows sorted by distance then index, coincident points left out: points/point_search.h),
+  /// with ring 0; it has no faces (UsageError if with_faces).
   NeighbourhoodTable(const Mesh& mesh, const NeighbourhoodSpec& spec, bool with_faces, int threads);
 
   const NeighbourhoodSpec& spec() const { return spec_; }
@@ -68,11 +71,18 @@ class NeighbourhoodTable {
     rings.assign(v, ring(v), neighbours(v), faces(v), num_faces(v));
   }
 
+  /// The ball's radius of a radius spec (radius_spacing: resolved with the mean spacing); 0
+  /// otherwise.
+  double radius() const { return radius_; }
+
   /// Bytes held by the arrays.
   std::size_t bytes() const;
 
  private:
+  void build_points(const Mesh& mesh, int threads);
+
   NeighbourhoodSpec spec_;
+  double radius_ = 0.0;
   bool has_faces_ = false;
   std::vector<std::int64_t> nb_offsets_;
   std::unique_ptr<int[]> neighbours_;

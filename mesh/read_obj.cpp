@@ -113,6 +113,9 @@ Soup read_obj(const std::string& path, std::string_view text, bool skip_invalid)
                   std::to_string(max_index + 1) + " (1-based), but the file has " +
                   std::to_string(num_vertices) + " vertices");
   check_not_empty(path, num_vertices, num_faces);
+  // Point sets come as .xyz/.pts/.pwn, OFF or PLY: an OBJ without faces stays refused, as CGAL's
+  // reader (the tests' oracle) refuses it.
+  if (num_faces == 0) fail(path, "empty mesh: no faces");
   return soup;
 }
 

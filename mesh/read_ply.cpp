@@ -3,9 +3,10 @@
 // native byte order, nothing else) are copied in bulk.
 //
 // Read: the 'vertex' element's float or double x, y, z and the 'face' element's int or uint list
-// 'vertex_indices' (or 'vertex_index'); every other element and property is checked against the
+// 'vertex_indices' (or 'vertex_index'; a file without a face element is a point set); every
+// other element and property is checked against the
 // header and skipped. Refused: a header CGAL's reader would misread (unknown types, integer x/y/z,
-// missing properties, no face element, halfedge source/target of another type than uint), counts
+// missing properties, halfedge source/target of another type than uint), counts
 // the data section cannot hold (before anything is sized by them), a truncated data section, data
 // after the declared elements, a value out of its type's range (ASCII), a negative list length,
 // a negative or out-of-range index, a non-finite coordinate (recorded instead with skip_invalid;
@@ -268,6 +269,8 @@ struct PlyLayout {
   const PlyElement* face = nullptr;
   const PlyProperty* xyz[3] = {nullptr, nullptr, nullptr};
   const PlyProperty* indices = nullptr;  ///< the face element's index list
+  /// Faces declared (0 without a face element: a point set).
+  unsigned long long face_count() const { return face != nullptr ? face->count : 0; }
   std::string declared;                  ///< "N 'vertex', M 'face'" for messages
 };
 
@@ -292,15 +295,15 @@ PlyLayout check_ply_layout(const std::string& path, const PlyHeader& h,
   // ... a face element with an int or uint list named vertex_indices or vertex_index ...
   const PlyElement*& face = l.face;
   face = find_element(h, "face", "faces");
-  if (face == nullptr) fail(path, "empty mesh: PLY file has no 'face' element");
+  // (none: a point set, every element but the vertices read past)
   const PlyProperty*& indices = l.indices;
   for (const char* name : {"vertex_indices", "vertex_index"}) {
-    const PlyProperty* p = face->find(name);
+    const PlyProperty* p = face != nullptr ? face->find(name) : nullptr;
     if (indices == nullptr && p != nullptr && p->size != nullptr &&
         (p->type->type == PlyType::kInt || p->type->type == PlyType::kUint))
       indices = p;
   }
-  if (indices == nullptr)
+  if (face != nullptr && indices == nullptr)
     fail(path, "PLY face element has no 'vertex_indices' list of int or uint");
   // ... and, for a halfedge element, uint source/target (CGAL crashes on other types).
   for (const PlyElement& e : h.elements)
@@ -329,7 +332,7 @@ PlyLayout check_ply_layout(const std::string& path, const PlyHeader& h,
     fail(path, "PLY header declares " + declared + " elements, more than the " +
                    std::to_string(file_size - h.body) +
                    "-byte data section can hold (truncated file or corrupt header)");
-  if (vertex->count > kMaxCount || face->count > kMaxCount)
+  if (vertex->count > kMaxCount || l.face_count() > kMaxCount)
     fail(path, "PLY header declares more than " + std::to_string(kMaxCount) + " elements");
   return l;
 }
@@ -343,7 +346,7 @@ Soup make_soup(const PlyHeader& h, const PlyLayout& l, unsigned long long file_s
   Soup soup;
   soup.skip_invalid = skip_invalid;
   soup.xyz.reserve(3 * l.vertex->count);
-  soup.indices.reserve(std::min<unsigned long long>(3 * l.face->count, body / (ascii ? 2 : 4)));
+  soup.indices.reserve(std::min<unsigned long long>(3 * l.face_count(), body / (ascii ? 2 : 4)));
   return soup;
 }
 
@@ -679,7 +682,7 @@ Soup read_ply(const std::string& path, std::string_view text, bool skip_invalid)
     MemoryBytes in(text, h.body);
     read_binary_body(path, h, l, in, soup);
   }
-  check_not_empty(path, l.vertex->count, l.face->count);
+  check_not_empty(path, l.vertex->count, l.face_count());
   return soup;
 }
 
@@ -707,7 +710,7 @@ bool read_binary_ply_file(const std::string& path, int fd, unsigned long long si
   *soup = make_soup(h, l, size, skip_invalid);
   FileWindow in(path, fd, size, h.body);
   read_binary_body(path, h, l, in, *soup);
-  check_not_empty(path, l.vertex->count, l.face->count);
+  check_not_empty(path, l.vertex->count, l.face_count());
   return true;
 }
 

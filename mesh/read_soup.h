@@ -133,6 +133,8 @@ struct Soup {
 Soup read_off(const std::string& path, std::string_view text, bool skip_invalid);
 Soup read_obj(const std::string& path, std::string_view text, bool skip_invalid);
 Soup read_ply(const std::string& path, std::string_view text, bool skip_invalid);
+/// .xyz, .pts, .pwn point sets (read_xyz.cpp): vertices only.
+Soup read_xyz(const std::string& path, std::string_view text, bool skip_invalid);
 
 /// Builds the Mesh from a reader's soup (soup_to_mesh.cpp): drops polygons with fewer than 3
 /// vertices or a repeated index; refuses non-finite coordinates or, with skip_invalid (as the
@@ -162,7 +164,7 @@ std::string quote(std::string_view token);
 void check_face_index(const std::string& path, std::size_t line, unsigned long long face,
                       long long index, unsigned long long num_vertices);
 
-/// Refuses a soup without vertices or polygons.
+/// Refuses a soup without vertices (a soup without polygons is a point set).
 void check_not_empty(const std::string& path, unsigned long long vertices,
                      unsigned long long faces);
 

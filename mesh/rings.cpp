@@ -127,6 +127,7 @@ bool RingCollector::half_step() {
 
 // One half ring further: 0 -> 1 (the first step is an integer step), k -> k+½, k+½ -> k+1.
 bool RingCollector::grow() {
+  if (assigned_ && half_steps_ == 0) return false;  // a point neighbourhood does not grow
   if (assigned_) collect(center_, ring());  // rebuild the buffers and the layer bookkeeping
   const size_t before = num_faces_;
   if (half_steps_ == 0) {
@@ -182,6 +183,8 @@ double RingCollector::collect_at_least(int v, double r0, int min_neighbours, dou
 }
 
 double RingCollector::collect(int v, const NeighbourhoodSpec& spec) {
+  if (spec.is_points())
+    throw UsageError("a point neighbourhood (k-NN or ball) is served from its table, not collected");
   if (spec.adaptive) return collect_at_least(v, spec.ring, spec.min_neighbours, spec.max_ring);
   collect(v, spec.ring);
   return ring();

@@ -40,16 +40,28 @@ constexpr int min_neighbours(int degree) {
 /// ring r0; when adaptive, grown by half rings while fewer than min_neighbours neighbours are
 /// found, up to max_ring (the methods use min_neighbours(d) and 2 r0). Non-adaptive specs have
 /// min_neighbours = 0 and max_ring = ring, so that equal neighbourhoods compare equal.
+///
+/// A point neighbourhood (no connectivity; docs/point_sets.md) is instead the k nearest other
+/// points, or the other points within a radius (absolute, or a multiple of the point set's mean
+/// spacing, points/point_search.h); its ring is 0 and it never grows.
 struct NeighbourhoodSpec {
+  enum class Points : std::uint8_t { none, knn, radius, radius_spacing };
+
   double ring = 1.0;
   bool adaptive = false;
   int min_neighbours = 0;
   double max_ring = 1.0;
+  Points points = Points::none;
+  double size = 0.0;  ///< k, the radius, or the multiple of the mean spacing
 
   static NeighbourhoodSpec fixed(double ring) { return {ring, false, 0, ring}; }
   static NeighbourhoodSpec at_least(double ring, int min_neighbours, double max_ring) {
     return {ring, true, min_neighbours, max_ring};
   }
+  static NeighbourhoodSpec point_rule(Points rule, double size) {
+    return {0.0, false, 0, 0.0, rule, size};
+  }
+  bool is_points() const { return points != Points::none; }
   bool operator==(const NeighbourhoodSpec&) const = default;
 };
 
@@ -76,7 +88,8 @@ class RingCollector {
   /// ring() is `ring`, num_faces() is `num_faces`, and neighbours() and faces() return the given
   /// spans (which must outlive their use) until the next collect. `faces` may be empty when the
   /// caller never reads faces() (num_faces is |F_r| all the same). grow() first collects the same
-  /// ring from scratch, so that growing gives what it gives after collect(v, ring).
+  /// ring from scratch, so that growing gives what it gives after collect(v, ring); ring 0 is a
+  /// point neighbourhood (NeighbourhoodSpec::is_points), which grow() leaves as it is (false).
   void assign(int v, double ring, std::span<const int> neighbours, std::span<const int> faces,
               size_t num_faces);
 

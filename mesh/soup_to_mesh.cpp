@@ -35,7 +35,6 @@ Mesh soup_to_mesh(const std::string& path, const std::string& format, Soup soup,
   const std::size_t n = soup.num_vertices();
   const std::size_t num_polygons = soup.num_polygons();
   if (n == 0) fail(path, "empty mesh: no vertices");
-  if (num_polygons == 0) fail(path, "empty mesh: no faces");
   if (n > kMaxCount) fail(path, "too many vertices");
   const double* xyz = soup.xyz.data();
 
@@ -111,7 +110,7 @@ Mesh soup_to_mesh(const std::string& path, const std::string& format, Soup soup,
     }
   }
   if (triangles > kMaxCount) fail(path, "too many triangles after fan triangulation");
-  if (kept == 0) {
+  if (kept == 0 && num_polygons > 0) {
     std::string why;
     for (const auto& [k, what] : {std::pair{few, "with fewer than 3 vertices"},
                                   std::pair{repeated, "with a repeated vertex index"},

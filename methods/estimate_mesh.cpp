@@ -18,6 +18,8 @@
 #include "mesh/neighbourhood_table.h"
 #include "methods/operators/vertex_normals.h"
 #include "methods/vertex_result.h"
+#include "points/point_normals.h"
+#include "points/point_search.h"
 
 namespace curvbench {
 
@@ -53,6 +55,8 @@ std::string Estimator::display_name() const {
 
 Estimator::Estimator(EstimatorOptions options) : options_(options) {
   validate_options(options_);
+  if (options_.rings > 0.0 && options_.neighbourhood.kind != PointNeighbourhood::Kind::none)
+    throw UsageError("rings and neighbourhood are two sizes of one neighbourhood: give one");
 }
 
 double Estimator::half_rings(double rings, const std::string& method) {
@@ -85,10 +89,28 @@ double Estimator::default_ring() const {
 }
 
 NeighbourhoodSpec Estimator::neighbourhood_spec() const {
+  using Kind = PointNeighbourhood::Kind;
+  using Points = NeighbourhoodSpec::Points;
+  const PointNeighbourhood& p = options_.neighbourhood;
+  if (p.kind != Kind::none)
+    return NeighbourhoodSpec::point_rule(p.kind == Kind::knn      ? Points::knn
+                                         : p.kind == Kind::radius ? Points::radius
+                                                                  : Points::radius_spacing,
+                                         p.size);
   const double r0 = options_.rings > 0.0 ? options_.rings : default_ring();
   return options_.adaptive
              ? NeighbourhoodSpec::at_least(r0, min_neighbours(options_.degree), 2.0 * r0)
              : NeighbourhoodSpec::fixed(r0);
+}
+
+int Estimator::default_knn() const {
+  return (options_.noisy ? 3 : 2) * num_coefficients(std::max(options_.degree, 1));
+}
+
+NeighbourhoodSpec Estimator::neighbourhood_spec(const Mesh& mesh) const {
+  if (mesh.num_faces() == 0 && options_.neighbourhood.kind == PointNeighbourhood::Kind::none)
+    return NeighbourhoodSpec::point_rule(NeighbourhoodSpec::Points::knn, default_knn());
+  return neighbourhood_spec();
 }
 
 namespace {
@@ -119,8 +141,10 @@ double Estimator::collect_neighbourhood(RingCollector& rings, int v) const {
 }
 
 double Estimator::collect_neighbourhood(const MeshContext& ctx, RingCollector& rings, int v) const {
-  const NeighbourhoodSpec spec = neighbourhood_spec();
+  const NeighbourhoodSpec spec = neighbourhood_spec(ctx.mesh);
   const NeighbourhoodTable* table = ctx.neighbourhoods;
+  if (spec.is_points() && (table == nullptr || !(table->spec() == spec)))
+    throw std::logic_error("collect_neighbourhood: the point neighbourhood's table is missing");
   if (table != nullptr && table->spec() == spec &&
       (table->has_faces() || neighbourhood_use() != NeighbourhoodUse::neighbours_and_faces))
     table->assign(rings, v);
@@ -135,24 +159,70 @@ int thread_count(const Estimator& estimator) {
       estimator.options().threads > 0 ? estimator.options().threads : omp_get_max_threads();
   return threads < 1 ? 1 : threads;
 }
+
+}  // namespace
+
+std::string point_set_methods() {
+  std::string names;
+  for (const std::string& name : estimator_names()) {
+    try {
+      if (make_estimator(name, {})->neighbourhood_use() == NeighbourhoodUse::neighbours)
+        names += (names.empty() ? "" : ", ") + name;
+    } catch (const UsageError&) {
+    }
+  }
+  return names;
+}
+
+namespace {
+
+// A point set (no faces) or a point neighbourhood (the option) needs a method that reads
+// neighbours only: the others refuse with one line saying why.
+void check_point_method(const Estimator& estimator, const Mesh& mesh) {
+  if (estimator.neighbourhood_use() == NeighbourhoodUse::neighbours) return;
+  const std::string why = estimator.neighbourhood_use() == NeighbourhoodUse::none
+                              ? " works on a mesh's faces (its 1-ring or per-face quantities)"
+                              : " parameterizes the faces of its rings";
+  if (mesh.num_faces() == 0)
+    throw UsageError(estimator.label() + why + ": a point set has no faces (methods for points: " +
+                     point_set_methods() + ")");
+  throw UsageError(estimator.label() + why + ": the neighbourhood option applies to " +
+                   point_set_methods() + " only");
+}
+
 }  // namespace
 
 MeshEstimation::MeshEstimation(const Mesh& mesh, const Estimator& estimator,
                                NeighbourhoodCache* neighbourhoods)
     : mesh_(mesh),
       estimator_(estimator),
-      normals_(estimator.uses_approx_normals()
+      normals_(estimator.uses_approx_normals() && mesh.num_faces() > 0
                    ? weighted_vertex_normals(mesh, VertexNormals::area, thread_count(estimator))
                    : VertexMatrix()) {
   if (neighbourhoods != nullptr && &neighbourhoods->mesh() != &mesh)
     throw std::invalid_argument("MeshEstimation: the neighbourhood cache is of another mesh");
   const int n = mesh.num_vertices();
   int threads = thread_count(estimator);
-  data_ = estimator.prepare(mesh, normals_, threads);
   const NeighbourhoodUse use = estimator.neighbourhood_use();
-  if (neighbourhoods != nullptr && use != NeighbourhoodUse::none)
-    neighbourhoods_ = neighbourhoods->get(estimator.neighbourhood_spec(),
-                                          use == NeighbourhoodUse::neighbours_and_faces, threads);
+  const NeighbourhoodSpec spec = estimator.neighbourhood_spec(mesh);
+  if (spec.is_points() || mesh.num_faces() == 0) {
+    check_point_method(estimator, mesh);
+    if (mesh.num_faces() == 0 && n > 0) {
+      // The normals of a point set (points/point_normals.h): the fits' frames and signs.
+      const PointSearch search(mesh.vertices());
+      PointNormals pn = oriented_pca_normals(search, threads);
+      normals_ = std::move(pn.normals);
+      sign_undetermined_ = std::move(pn.undetermined);
+    }
+    // A point neighbourhood is always read from its table (it cannot be collected per vertex).
+    neighbourhoods_ = neighbourhoods != nullptr
+                          ? neighbourhoods->get(spec, false, threads)
+                          : std::make_shared<const NeighbourhoodTable>(mesh, spec, false, threads);
+  } else if (neighbourhoods != nullptr && use != NeighbourhoodUse::none) {
+    neighbourhoods_ = neighbourhoods->get(spec, use == NeighbourhoodUse::neighbours_and_faces,
+                                          threads);
+  }
+  data_ = estimator.prepare(mesh, normals_, threads);
   if (threads > n) threads = n > 0 ? n : 1;
   threads_ = threads;
   // Each thread makes its own workspace (cache-line aligned, Workspace): its buffers then come
@@ -205,6 +275,15 @@ void MeshEstimation::run(int first, std::span<VertexEstimate> out) {
       for (int i = 0; i < n; ++i) estimate_or_fail(estimator, ctx, first + begin + i, ws, o[i]);
     }
   }
+  // A point whose normal's sign is undecided (points/point_normals.h): its signs are arbitrary.
+  if (!sign_undetermined_.empty())
+    for (int i = 0; i < count; ++i) {
+      VertexEstimate& o = out[static_cast<size_t>(i)];
+      if (sign_undetermined_[static_cast<size_t>(first + i)] &&
+          (o.status == VertexStatus::ok || o.status == VertexStatus::degree_reduced ||
+           o.status == VertexStatus::reprojected))
+        o.status = VertexStatus::sign_undetermined;
+    }
 }
 
 std::vector<VertexEstimate> estimate_mesh(const Mesh& mesh, const Estimator& estimator,

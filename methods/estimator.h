@@ -75,7 +75,9 @@ class MeshData {
 /// Mesh data shared read-only by all threads during one estimation run.
 struct MeshContext {
   const Mesh& mesh;
-  const VertexMatrix& approx_normals;  ///< area-weighted vertex normals (docs/algorithms.md §2)
+  /// Area-weighted vertex normals (docs/algorithms.md §2); on a point set (no faces), the PCA
+  /// normals oriented over the k-NN graph (points/point_normals.h).
+  const VertexMatrix& approx_normals;
   const MeshData* data = nullptr;      ///< what Estimator::prepare() returned (may be null)
   /// The estimator's starting neighbourhoods, gathered once (Estimator::neighbourhood_spec(),
   /// with faces if neighbourhood_use() says so), or null: collect_neighbourhood() then collects.
@@ -136,8 +138,16 @@ class Estimator {
   /// ring; `rings` can grow() from there as after collecting.
   double collect_neighbourhood(const MeshContext& ctx, RingCollector& rings, int v) const;
   /// The spec of that starting neighbourhood: ring r0, and with options().adaptive
-  /// min_neighbours(degree) and max ring 2 r0.
+  /// min_neighbours(degree) and max ring 2 r0; or the point neighbourhood of the option
+  /// `neighbourhood` (knn=K, radius=R, radius=Cs) when it is set.
   NeighbourhoodSpec neighbourhood_spec() const;
+  /// The same on `mesh`: on a point set (a mesh without faces) with no `neighbourhood` option,
+  /// the default k-NN, knn = default_knn() (docs/point_sets.md).
+  NeighbourhoodSpec neighbourhood_spec(const Mesh& mesh) const;
+  /// K of the default k-NN of a point set: 2 (d+1)(d+2)/2, about the vertices of the default
+  /// ring (d+1)/2 on a regular valence-6 mesh (12 for d = 2, 30 for d = 4); 3 (d+1)(d+2)/2 when
+  /// noisy (half a ring more).
+  int default_knn() const;
   /// What the method reads of it; default none. A method that calls collect_neighbourhood says
   /// so, or it is never handed a table.
   virtual NeighbourhoodUse neighbourhood_use() const { return NeighbourhoodUse::none; }
@@ -251,6 +261,10 @@ std::vector<std::string> method_labels(int lowest_degree, int highest_degree);
 /// Names accepted by make_estimator (without degree).
 std::vector<std::string> estimator_names();
 
+/// The names of the methods that work on a point set (neighbourhood_use() is neighbours), in
+/// registry order, joined by ", ".
+std::string point_set_methods();
+
 /// Whether the built-in method named by `method` (a name or label as make_estimator accepts,
 /// e.g. "Xu-2") scores interior vertices only (Estimator::scores_interior_only()); false for a
 /// name that is not a built-in method (e.g. an outside estimator's label).
@@ -261,6 +275,10 @@ bool scores_interior_only(const std::string& method);
 /// the per-mesh work once (area-weighted normals, Estimator::prepare(), one workspace per
 /// thread); run() estimates a range of vertices in parallel (OpenMP). Results are bit-identical
 /// for any number of threads and any split into ranges. The mesh and estimator must outlive it.
+/// On a point set (a mesh without faces) the normals are the oriented PCA normals and the
+/// neighbourhoods k-NN or balls (docs/point_sets.md); a vertex whose normal's sign is undecided
+/// gets status sign_undetermined. A method that needs faces (neighbourhood_use() other than
+/// neighbours) throws UsageError on a point set, and so does one given the `neighbourhood` option.
 /// With a NeighbourhoodCache of the same mesh, a method that reads starting neighbourhoods
 /// (Estimator::neighbourhood_use()) takes them from the cache's table of its spec (built now if
 /// the cache has none), with the same results; throws std::invalid_argument for a cache of
@@ -285,6 +303,7 @@ class MeshEstimation {
   VertexMatrix normals_;
   std::unique_ptr<MeshData> data_;
   std::shared_ptr<const NeighbourhoodTable> neighbourhoods_;
+  std::vector<unsigned char> sign_undetermined_;  // point set: normals whose sign is undecided
   std::vector<std::unique_ptr<Workspace>> workspaces_;
   int threads_ = 1;
 };

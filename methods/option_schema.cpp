@@ -61,6 +61,67 @@ struct ValueText<double> {
   }
 };
 
+template <>
+struct ValueText<PointNeighbourhood> {
+  static constexpr OptionType type = OptionType::text;
+  static PointNeighbourhood parse(std::string_view s, const std::string& name) {
+    using Kind = PointNeighbourhood::Kind;
+    const auto bad = [&] {
+      return UsageError(name + ": '" + std::string(s) +
+                        "' is not knn=K, radius=R or radius=Cs (e.g. knn=20, radius=2.5s)");
+    };
+    if (s == "default") return {};
+    PointNeighbourhood out;
+    std::string_view value;
+    if (s.starts_with("knn=")) {
+      out.kind = Kind::knn;
+      value = s.substr(4);
+    } else if (s.starts_with("radius=")) {
+      out.kind = Kind::radius;
+      value = s.substr(7);
+      if (value.ends_with('s')) {
+        out.kind = Kind::radius_spacing;
+        value.remove_suffix(1);
+      }
+    } else {
+      throw bad();
+    }
+    if (out.kind == Kind::knn) {
+      int k = 0;
+      const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), k);
+      if (ec != std::errc() || end != value.data() + value.size() || value.empty() || k < 1)
+        throw UsageError(name + ": knn=" + std::string(value) + ": K must be a whole number >= 1");
+      out.size = k;
+      return out;
+    }
+    double r = 0.0;
+    try {
+      r = parse_double(std::string(value), name);
+    } catch (const InputError&) {
+      throw bad();
+    }
+    if (!(r > 0.0) || !std::isfinite(r))
+      throw UsageError(name + ": the radius must be a positive number, got '" + std::string(value) +
+                       "'");
+    out.size = r;
+    return out;
+  }
+  static std::string text(const PointNeighbourhood& p) {
+    using Kind = PointNeighbourhood::Kind;
+    switch (p.kind) {
+      case Kind::none:
+        return "default";
+      case Kind::knn:
+        return "knn=" + std::to_string(static_cast<long long>(p.size));
+      case Kind::radius:
+        return "radius=" + ValueText<double>::text(p.size);
+      case Kind::radius_spacing:
+        return "radius=" + ValueText<double>::text(p.size) + "s";
+    }
+    return "default";
+  }
+};
+
 // A choice: an enum whose value i is called names[i] (its k...Names array).
 template <class E>
 struct EnumNames;
@@ -329,9 +390,12 @@ std::string taken_by(const OptionInfo& o) {
   return names;
 }
 
-// The value a flag or key takes: N (integer), X (number), or the choices.
+// The value a flag or key takes: N (integer), X (number), RULE (a text with its own syntax,
+// the help says which), or the choices.
 std::string value_word(const OptionInfo& o) {
   switch (o.type) {
+    case OptionType::text:
+      return "RULE";
     case OptionType::integer:
       return "N";
     case OptionType::real:
@@ -376,6 +440,7 @@ std::string option_table_markdown(OptionTableStyle style) {
     const std::string value = away_from_default(o);
     const std::string python = o.type == OptionType::boolean  ? (value == "yes" ? "True" : "False")
                                : o.type == OptionType::choice ? "\"" + o.choices.back() + "\""
+        : o.type == OptionType::text   ? "\"" + value + "\""
                                                               : value;
     md += "| " + o.name + " (" + taken_by(o) + ") | `" + cell(flag(o)) + "` | " +
           (o.role == OptionRole::run ? std::string("-") : "`" + o.name + "=" + cell(value) + "`") +

@@ -12,7 +12,8 @@
 
 namespace curvbench {
 
-enum class OptionType : std::uint8_t { boolean, integer, real, choice };
+/// text: a value with its own syntax (the neighbourhood option: "knn=20", "radius=2.5s").
+enum class OptionType : std::uint8_t { boolean, integer, real, choice, text };
 /// Which methods take an option (a value other than its default elsewhere is an error):
 /// listed = the methods OptionInfo::methods names.
 /// ball_radius = the methods whose registry line declares their neighbourhood a ball of radius

@@ -116,6 +116,11 @@ std::unique_ptr<Estimator> checked(std::unique_ptr<Estimator> est) {
   const Registration* r = find(est->name());
   const bool ball = r && r->info.radius == NeighbourhoodSize::ball_factor;
   check_options_apply(est->options(), {est->name(), est->takes_degree(), est->ring_fit(), ball});
+  // The point neighbourhood serves the methods that read neighbours without faces only.
+  if (est->options().neighbourhood.kind != PointNeighbourhood::Kind::none &&
+      est->neighbourhood_use() != NeighbourhoodUse::neighbours)
+    throw UsageError("neighbourhood applies to the methods that read neighbours without faces (" +
+                     point_set_methods() + "), not to '" + est->name() + "'");
   return est;
 }
 

@@ -228,7 +228,7 @@ std::string options_doc() {
   for (const OptionDescription& o : estimator_options()) {
     std::string value = o.default_text;
     if (o.type == "bool") value = value == "yes" ? "True" : "False";
-    if (o.type == "choice") value = "'" + value + "'";
+    if (o.type == "choice" || o.type == "text") value = "'" + value + "'";
     s += o.python_name + " (default " + value + "): " + o.help + ".\n";
   }
   return s;
@@ -256,7 +256,8 @@ PyEstimate py_estimate(const py::handle& V, const py::handle& F, const std::stri
     set_estimator_option(o, name, option_value(value));
   }
   const Eigen::MatrixXd Vm = to_vertices(V);
-  const Eigen::MatrixXi Fm = to_faces(F, Vm.rows());
+  // F None: a point set (docs/point_sets.md).
+  const Eigen::MatrixXi Fm = F.is_none() ? Eigen::MatrixXi(0, 3) : to_faces(F, Vm.rows());
   PyEstimate r;
   {
     py::gil_scoped_release unlocked;
@@ -453,11 +454,13 @@ PYBIND11_MODULE(curvbench, m) {
       .def_readonly("d1", &PyExact::d1, "(n, 3) exact principal direction of k1.")
       .def_readonly("d2", &PyExact::d2, "(n, 3) exact principal direction of k2.");
 
-  m.def("estimate", &py_estimate, py::arg("V"), py::arg("F"), py::arg("method") = "lhf",
+  m.def("estimate", &py_estimate, py::arg("V"), py::arg("F") = py::none(), py::arg("method") = "lhf",
         (std::string(R"(Estimate normals, principal curvatures and directions at every vertex.
 
 V: (n, 3) vertex positions, float64 or float32 (int32/int64 accepted), any strides.
-F: (m, 3) triangles as 0-based vertex indices, any integer dtype, any strides.
+F: (m, 3) triangles as 0-based vertex indices, any integer dtype, any strides; None (the
+default): V is a point set, estimated with a method that needs no faces (lhf, lop, jet) on
+its k nearest neighbours (neighbourhood='knn=20', 'radius=0.1' or 'radius=2.5s').
 method: a name of curvbench.methods(), case-insensitive; 'LHF-4' attaches the degree; or
 'auto': the estimator and radius curvbench.recommend() gives the mesh (then only threads and
 kernel may be given; the choice is in the result's recommendation).

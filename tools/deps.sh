@@ -16,6 +16,7 @@ packages=(
   libbenchmark-dev         # Google Benchmark
   libcli11-dev             # command line
   libhwy-dev               # Google Highway: SIMD with run-time dispatch (batched fitting kernels)
+  libnanoflann-dev         # nanoflann, header-only: k-d tree neighbour search of point sets (points/)
   libfmt-dev               # {fmt} 9, header-only: shortest round-trip digits for the estimate CSV
   pybind11-dev python3-dev python3-numpy python3-pytest  # Python module (for /usr/bin/python3);
                            # numpy also runs the outside-estimator examples (experiments/examples/)

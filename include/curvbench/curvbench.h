@@ -201,6 +201,15 @@ using OptionValue = std::variant<bool, long long, double, std::string>;
 void set_estimator_option(EstimatorOptions& options, const std::string& name,
                           const OptionValue& value);
 
+/// Estimates every point of a point set V (no faces; docs/point_sets.md) with a method that
+/// reads neighbours only (lhf, lop, jet, ...): the neighbourhood is options.neighbourhood
+/// (knn=K, radius=R, radius=Cs), by default the k nearest neighbours, K = 2 (d+1)(d+2)/2; the
+/// normals are PCA normals oriented over the k-NN graph (outward on a closed set, upward on an
+/// open one; status sign_undetermined where no rule decides). The same as estimate(V, F) with
+/// an empty F. A method that needs faces is a UsageError.
+EstimateResult estimate(const Eigen::MatrixXd& V, const EstimateOptions& options);
+
+
 /// Names accepted as EstimateOptions::method (without degree).
 std::vector<std::string> methods();
 

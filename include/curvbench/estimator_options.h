@@ -57,6 +57,18 @@ struct VertexNormalSource {
 enum class Kernel : std::uint8_t { batched, scalar };
 inline constexpr const char* kKernelNames[] = {"batched", "scalar"};
 
+/// The neighbourhood of a method that fits neighbours without faces, in place of its rings
+/// (docs/point_sets.md): the k nearest other points (knn=K), the other points within a radius
+/// (radius=R), or within a multiple of the point set's mean spacing (radius=2.5s). none: the
+/// rings on a mesh, the default k-NN on a point set. Text: "default", "knn=20", "radius=0.1",
+/// "radius=2.5s".
+struct PointNeighbourhood {
+  enum class Kind : std::uint8_t { none, knn, radius, radius_spacing };
+  Kind kind = Kind::none;
+  double size = 0.0;  ///< K, R, or the multiple of the mean spacing
+  bool operator==(const PointNeighbourhood&) const = default;
+};
+
 // clang-format off
 #define CURVBENCH_ESTIMATOR_OPTIONS(X)                                                             \
   X(int, degree, "degree", 0, fits, result, 0, 6,                                                  \
@@ -88,6 +100,9 @@ inline constexpr const char* kKernelNames[] = {"batched", "scalar"};
     "fit 6 coefficients (a constant term) instead of libigl's 5")                                  \
   X(double, ball_factor, "ball-factor", 0.0, ball_radius, result, 0.0, 1e6,                        \
     "the ball of radius C times the mean edge length instead of the 1-ring (0: the 1-ring)")      \
+  X(PointNeighbourhood, neighbourhood, "neighbourhood", PointNeighbourhood{}, all, result, 0, 0,   \
+    "neighbours without faces instead of rings: knn=K, radius=R or radius=Cs (C times the mean "   \
+    "spacing); default: rings on a mesh, knn=2(d+1)(d+2)/2 on a point set")                       \
   X(int, threads, "threads", 0, all, run, 0, 1 << 20,                                               \
     "OpenMP threads (0: all cores); the results do not depend on it")                             \
   X(Kernel, kernel, "kernel", Kernel::batched, all, run, 0, 0,                                     \

@@ -111,7 +111,9 @@ class JetEstimator final : public Estimator {
     // No tangent plane from the points of a whole small closed surface (an octahedron's six
     // vertices: CGAL's PCA frame is arbitrary): the plane of the vertex and its 1-ring. Elsewhere
     // (the ring can still grow: a corner or a needle of a larger mesh) CGAL's answer stands.
-    const bool whole_component = first == Fit::no_plane && !ws.rings.grow();
+    // (A point neighbourhood, ring 0, never grows: CGAL's answer stands there.)
+    const bool whole_component =
+        first == Fit::no_plane && ws.rings.ring() > 0.0 && !ws.rings.grow();
     if (first == Fit::no_plane && !whole_component) {
       collect_neighbourhood(ctx, ws.rings, v);
       while (static_cast<size_t>(1 + ws.rings.neighbours().size()) <

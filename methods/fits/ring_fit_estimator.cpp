@@ -227,7 +227,8 @@ void RingFitEstimator::estimate(const MeshContext& ctx, int v, Workspace& base,
       }
       // Rank-failure rule (docs/algorithms.md §1.2, [C2]): grow by half a ring up to 2 r0.
       const bool reduced = !have_fit || fit.degree < d;
-      if (!options_.adaptive || !reduced || ring >= max_ring - 1e-9) break;
+      // A point neighbourhood (ring 0: k-NN or ball) does not grow.
+      if (!options_.adaptive || !reduced || r0 == 0.0 || ring >= max_ring - 1e-9) break;
       const size_t before_v = ws.rings.neighbours().size();
       const size_t before_f = ws.rings.num_faces();
       ring = ws.rings.collect_at_least(v, ring + 0.5, min_nb, max_ring);

@@ -369,3 +369,29 @@ def test_the_module_includes_only_the_public_api():
     assert quoted and all(h.startswith("curvbench/") for h in quoted), quoted
     public = os.listdir(os.path.join(os.environ["CURVBENCH_SOURCE_DIR"], "include", "curvbench"))
     assert all(h.split("/", 1)[1] in public for h in quoted)
+
+
+def test_point_set_without_faces_is_outward_and_matches_the_command_line(tmp_path):
+    """estimate(V) without F: a point set (docs/point_sets.md); a sphere's points get
+    H = -1/r with outward normals, the same bits as `curvbench estimate` on the .xyz file."""
+    rng = np.random.default_rng(5)
+    d = rng.normal(size=(3000, 3))
+    V = 2.0 * d / np.linalg.norm(d, axis=1)[:, None]
+    r = curvbench.estimate(V, method="lhf-3", neighbourhood="knn=20")
+    ok = r.status == "ok"
+    assert ok.sum() == len(V)
+    assert np.all(np.einsum("ij,ij->i", r.normal, V) > 0)
+    # O(h^2) for degree 3 on random points, h / r about 0.065 here: within 2% of -1/r.
+    assert np.allclose(r.H, -0.5, atol=1e-2)
+    default = curvbench.estimate(V, method="lhf-3")  # the default knn=2*10=20
+    assert np.array_equal(default.H, r.H)
+    path = tmp_path / "sphere.xyz"
+    np.savetxt(path, V, fmt="%.17g")
+    out = tmp_path / "est.csv"
+    c = cli("estimate", "--method", "lhf-3", "--neighbourhood", "knn=20", "--output", out, path)
+    assert c.returncode == 0, c.stderr
+    with open(out) as f:
+        H = np.array([float(row["H"]) for row in csv.DictReader(f)])
+    assert np.array_equal(H, r.H)
+    with pytest.raises(curvbench.UsageError, match="a point set has no faces"):
+        curvbench.estimate(V, method="meyer")

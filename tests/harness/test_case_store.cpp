@@ -109,6 +109,9 @@ TEST(CaseHash, ChangesWithEverySettingAndTheCodeVersionOnly) {
       case OptionType::choice:
         value = option.choices.at(1);
         break;
+      case OptionType::text:
+        value = "knn=12";
+        break;
     }
     mutations.emplace_back(option.name, [name = option.name, value](Experiment& e) {
       set_option(e.methods[0].options, name, value);

@@ -437,6 +437,41 @@ TEST_F(MeshIo, WrittenFilesCutShortAreTruncated) {
   }
 }
 
+// Point sets: OFF with 0 faces, PLY without a face element or with 0 faces, and the point files
+// .xyz/.pts/.pwn read as meshes without faces; a point file mixing 2-D and 3-D lines, or with a
+// NaN, is refused naming the line (the NaN point skipped with --skip-invalid).
+TEST_F(MeshIo, PointSetsReadAsMeshesWithoutFaces) {
+  const std::string pts = "0 0 0\n1 0 0.5\n0 2 0\n";
+  const std::string ply_head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\n"
+                               "property double y\nproperty double z\n";
+  for (const auto& [name, text] : std::vector<std::pair<std::string, std::string>>{
+           {"a.off", "OFF\n3 0 0\n" + pts},
+           {"a.ply", ply_head + "end_header\n" + pts},
+           {"b.ply", ply_head + "element face 0\nproperty list uchar int vertex_indices\n"
+                                "end_header\n" + pts},
+           {"a.xyz", "# a comment\n" + pts},
+           {"a.pts", "3\n" + pts},
+           {"a.pwn", "0 0 0 0 0 1\n1 0 0.5 0 0 1\n\n0 2 0 0 0 1\n"}}) {
+    SCOPED_TRACE(name);
+    const Mesh m = read_mesh(file(name, text));
+    EXPECT_EQ(m.num_faces(), 0);
+    ASSERT_EQ(m.num_vertices(), 3);
+    EXPECT_EQ(m.position(1), Vec3(1, 0, 0.5));
+    EXPECT_EQ(m.position(2), Vec3(0, 2, 0));
+  }
+  expect_read_error(file("mixed.xyz", "0 0 0\n1 0 0\n\n2 1\n"),
+                    {"line 4", "point 2 has 2 numbers where line 1 has 3"});
+  expect_read_error(file("flat.xyz", "0 0\n1 0\n"), {"line 1", "2 numbers"});
+  expect_read_error(file("nan.xyz", "0 0 0\n1 nan 0\n2 0 1\n"),
+                    {"line 2", "non-finite coordinate", "--skip-invalid"});
+  expect_read_error(file("empty.xyz", "# nothing\n"), {"no points"});
+  MeshReadReport report;
+  const Mesh skipped = read_mesh(path("nan.xyz"), &report, {.skip_invalid = true});
+  EXPECT_EQ(skipped.num_vertices(), 2);
+  EXPECT_EQ(report.vertices_skipped, 1);
+  EXPECT_EQ(skipped.position(1), Vec3(2, 0, 1));
+}
+
 void MeshIo::expect_errors(const std::vector<BadFile>& cases) const {
   for (const BadFile& c : cases) {
     SCOPED_TRACE(c.name);
@@ -511,7 +546,6 @@ TEST_F(MeshIo, MalformedOffFiles) {
        "OFF\n4 1 0\n" + tet + "3 0 1 2 7 7\n",
        {"line 7", "face 0 has 2 values after its indices"}},
       {"no_vertices.off", "OFF\n0 0 0\n", {"empty mesh", "no vertices"}},
-      {"no_faces.off", "OFF\n4 0 0\n" + tet, {"empty mesh", "no faces"}},
       {"absurd.off",
        "OFF\n1000000000000 1 0\n0.0 0.0 0\n3 0 0 0\n",
        {"1000000000000 vertices", "more than a 40-byte file can hold"}},
@@ -595,10 +629,6 @@ TEST_F(MeshIo, MalformedPlyFiles) {
       {"ushort_list.ply",
        ascii_ply(xyz, "property list uchar ushort vertex_indices\n", 3, 1, verts + "3 0 1 2\n"),
        {"no 'vertex_indices' list of int or uint"}},
-      {"no_face.ply",
-       "ply\nformat ascii 1.0\nelement vertex 3\n" + xyz + "end_header\n" + verts,
-       {"empty mesh", "no 'face' element"}},
-      {"zero_faces.ply", ascii_ply(xyz, list, 3, 0, verts), {"empty mesh", "no faces"}},
       {"uchar_259.ply",
        ascii_ply(xyz, list, 3, 1, verts + "259 0 1 2\n"),
        {"line 13", "'259' of property 'vertex_indices' is not a valid uchar"}},

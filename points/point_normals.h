@@ -1,0 +1,52 @@
+// Normals of a point set without connectivity (docs/point_sets.md):
+//
+//   1. a normal per point: PCA of the point and its neighbour row (the eigenvector of the
+//      smallest eigenvalue of their covariance about their centroid);
+//   2. consistent signs: Hoppe et al. (1992) propagation over the minimum spanning tree of the
+//      symmetrised neighbour graph with edge weight 1 - |n_i . n_j|, each connected component
+//      on its own, from its lowest-index point; an edge flips the new point's normal where
+//      n_i . n_j < 0;
+//   3. one global sign per component (orientation_rule):
+//        closed-like component (|mean of n| < kOpenMean): the sign that makes
+//          sum n_i . (p_i - c) > 0 (c the component's centroid), i.e. outward, as the divergence
+//          theorem gives 3 x volume; undecided where |that sum| < kClosedMargin sum |p_i - c|;
+//        open component (a patch or height field facing one way): the sign that makes the mean
+//          normal's z positive (upward); undecided where |mean z| < kUpMargin.
+//      An undecided component's points, and points whose neighbours single out no plane
+//      (collinear, fewer than two neighbours), are flagged `undetermined`.
+#pragma once
+
+#include <vector>
+
+#include "core/types.h"
+#include "points/point_search.h"
+
+namespace curvbench {
+
+struct PointNormals {
+  VertexMatrix normals;                     ///< unit normals, one per point
+  std::vector<unsigned char> undetermined;  ///< 1 where the sign (or the normal) is not decided
+  int components = 0;                       ///< connected components of the neighbour graph
+};
+
+/// The constants of the global rule (see above).
+inline constexpr double kOpenMean = 0.5;
+inline constexpr double kClosedMargin = 0.05;
+inline constexpr double kUpMargin = 0.05;
+
+/// Unoriented PCA normals from the rows (step 1); degenerate[i] = 1 where the points single out
+/// no plane (the middle eigenvalue below 1e-12 times the largest, or fewer than two neighbours).
+VertexMatrix pca_normals(const VertexMatrix& points, const PointRows& rows, int threads,
+                         std::vector<unsigned char>& degenerate);
+
+/// Steps 2 and 3 on `normals` in place; returns the undetermined flags (degenerate ones kept).
+/// The result does not depend on the number of threads (this part runs on one).
+std::vector<unsigned char> orient_normals(const VertexMatrix& points, const PointRows& rows,
+                                          VertexMatrix& normals,
+                                          std::vector<unsigned char> degenerate, int* components);
+
+/// Steps 1-3 with the k-nearest-neighbour rows (k = kNormalNeighbours).
+inline constexpr int kNormalNeighbours = 16;
+PointNormals oriented_pca_normals(const PointSearch& search, int threads);
+
+}  // namespace curvbench

@@ -1,0 +1,167 @@
+// k-d tree neighbour search over a point set; see point_search.h.
+#include "points/point_search.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <nanoflann.hpp>
+
+namespace curvbench {
+
+namespace {
+
+// nanoflann's view of the rows of a VertexMatrix.
+struct MatrixAdaptor {
+  const VertexMatrix* points;
+  size_t kdtree_get_point_count() const { return static_cast<size_t>(points->rows()); }
+  double kdtree_get_pt(size_t i, size_t dim) const {
+    return (*points)(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(dim));
+  }
+  template <class Box>
+  bool kdtree_get_bbox(Box&) const {
+    return false;
+  }
+};
+
+using KdTree =
+    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, MatrixAdaptor>,
+                                        MatrixAdaptor, 3, std::uint32_t>;
+
+void sort_hits(std::vector<PointHit>& hits) {
+  std::sort(hits.begin(), hits.end(), [](const PointHit& a, const PointHit& b) {
+    return a.distance2 < b.distance2 || (a.distance2 == b.distance2 && a.index < b.index);
+  });
+}
+
+constexpr int kBlock = 1024;  // points per block of the parallel row gather
+
+template <class Query>
+PointRows gather_rows(int n, int threads, Query&& query) {
+  if (threads <= 0) threads = omp_get_max_threads();
+  const int blocks = (n + kBlock - 1) / kBlock;
+  threads = std::max(1, std::min(threads, blocks));
+  std::vector<std::vector<int>> gathered(static_cast<size_t>(blocks));
+  PointRows rows;
+  rows.offsets.assign(static_cast<size_t>(n) + 1, 0);
+  std::exception_ptr error;
+#pragma omp parallel num_threads(threads)
+  {
+    std::vector<PointHit> hits;
+#pragma omp for schedule(dynamic, 1)
+    for (int b = 0; b < blocks; ++b) {
+      try {
+        auto& out = gathered[static_cast<size_t>(b)];
+        for (int i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i) {
+          query(i, hits);
+          for (const PointHit& h : hits) out.push_back(h.index);
+          rows.offsets[static_cast<size_t>(i) + 1] = static_cast<std::int64_t>(hits.size());
+        }
+      } catch (...) {
+#pragma omp critical(point_rows_error)
+        if (!error) error = std::current_exception();
+      }
+    }
+  }
+  if (error) std::rethrow_exception(error);
+  for (size_t i = 0; i < static_cast<size_t>(n); ++i) rows.offsets[i + 1] += rows.offsets[i];
+  rows.neighbours.reserve(static_cast<size_t>(rows.offsets.back()));
+  for (auto& g : gathered) rows.neighbours.insert(rows.neighbours.end(), g.begin(), g.end());
+  return rows;
+}
+
+}  // namespace
+
+struct PointSearch::Tree {
+  MatrixAdaptor adaptor;
+  KdTree tree;
+  explicit Tree(const VertexMatrix& points)
+      : adaptor{&points}, tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(10)) {
+    tree.buildIndex();
+  }
+};
+
+PointSearch::PointSearch(const VertexMatrix& points)
+    : points_(&points), tree_(std::make_unique<Tree>(points)) {}
+
+PointSearch::~PointSearch() = default;
+
+void PointSearch::knn(const Vec3& q, int k, std::vector<PointHit>& out) const {
+  out.clear();
+  const int want = std::min(k, num_points());
+  if (want <= 0) return;
+  std::vector<std::uint32_t> idx(static_cast<size_t>(want));
+  std::vector<double> d2(static_cast<size_t>(want));
+  const size_t found =
+      tree_->tree.knnSearch(q.data(), static_cast<size_t>(want), idx.data(), d2.data());
+  out.resize(found);
+  for (size_t j = 0; j < found; ++j) out[j] = {static_cast<int>(idx[j]), d2[j]};
+  sort_hits(out);
+}
+
+void PointSearch::ball(const Vec3& q, double r, std::vector<PointHit>& out) const {
+  out.clear();
+  if (!(r >= 0.0)) return;
+  std::vector<std::pair<std::uint32_t, double>> found;
+  nanoflann::SearchParams params;
+  params.sorted = false;
+  // nanoflann's radius test is d2 < radius: the next double above r*r keeps points at distance r.
+  tree_->tree.radiusSearch(q.data(), std::nextafter(r * r, HUGE_VAL), found, params);
+  out.reserve(found.size());
+  for (const auto& [i, d2] : found) out.push_back({static_cast<int>(i), d2});
+  sort_hits(out);
+}
+
+void PointSearch::knn_of(int i, int k, std::vector<PointHit>& out) const {
+  const Vec3 p = points_->row(i).transpose();
+  // Ask for k + 1 (the point itself) and more while points at distance 0 (duplicates) fill the
+  // list, so that k others remain when the set has them.
+  int ask = k + 1;
+  for (;;) {
+    knn(p, ask, out);
+    const auto first =
+        std::find_if(out.begin(), out.end(), [](const PointHit& h) { return h.distance2 > 0.0; });
+    const int others = static_cast<int>(out.end() - first);
+    if (others >= k || ask >= num_points()) {
+      out.erase(out.begin(), first);
+      if (static_cast<int>(out.size()) > k) out.resize(static_cast<size_t>(k));
+      return;
+    }
+    ask = std::min(num_points(), 2 * ask);
+  }
+}
+
+void PointSearch::ball_of(int i, double r, std::vector<PointHit>& out) const {
+  ball(points_->row(i).transpose(), r, out);
+  out.erase(std::remove_if(out.begin(), out.end(),
+                           [](const PointHit& h) { return !(h.distance2 > 0.0); }),
+            out.end());
+}
+
+double mean_spacing(const PointSearch& search, int threads) {
+  const PointRows nearest = knn_rows(search, 1, threads);
+  const VertexMatrix& p = search.points();
+  double sum = 0.0;
+  int counted = 0;
+  for (int i = 0; i < search.num_points(); ++i) {
+    if (nearest.offsets[static_cast<size_t>(i) + 1] == nearest.offsets[static_cast<size_t>(i)])
+      continue;
+    const int j = nearest.neighbours[static_cast<size_t>(nearest.offsets[static_cast<size_t>(i)])];
+    sum += (p.row(i) - p.row(j)).norm();
+    ++counted;
+  }
+  return counted > 0 ? sum / counted : 0.0;
+}
+
+PointRows knn_rows(const PointSearch& search, int k, int threads) {
+  return gather_rows(search.num_points(), threads,
+                     [&](int i, std::vector<PointHit>& hits) { search.knn_of(i, k, hits); });
+}
+
+PointRows ball_rows(const PointSearch& search, double r, int threads) {
+  return gather_rows(search.num_points(), threads,
+                     [&](int i, std::vector<PointHit>& hits) { search.ball_of(i, r, hits); });
+}
+
+}  // namespace curvbench

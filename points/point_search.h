@@ -1,0 +1,69 @@
+// Neighbour search in a point set without connectivity: a k-d tree (nanoflann) over the rows of
+// a VertexMatrix, k nearest neighbours and radius balls, and the point set's mean spacing.
+//
+// Results are deterministic: the tree is built by one thread from the points alone, and every
+// list is sorted by distance, then by index.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "core/types.h"
+
+namespace curvbench {
+
+/// One neighbour: its index and squared distance to the query.
+struct PointHit {
+  int index = -1;
+  double distance2 = 0.0;
+};
+
+class PointSearch {
+ public:
+  /// Builds the tree over the rows of `points` (which must outlive the search).
+  explicit PointSearch(const VertexMatrix& points);
+  ~PointSearch();
+  PointSearch(const PointSearch&) = delete;
+  PointSearch& operator=(const PointSearch&) = delete;
+
+  int num_points() const { return static_cast<int>(points_->rows()); }
+  const VertexMatrix& points() const { return *points_; }
+
+  /// The k points nearest to q (fewer if the set has fewer), sorted by distance then index.
+  void knn(const Vec3& q, int k, std::vector<PointHit>& out) const;
+  /// Every point within distance r of q (inclusive), sorted by distance then index.
+  void ball(const Vec3& q, double r, std::vector<PointHit>& out) const;
+
+  /// The k nearest points to point i other than i and other than any point at its very position
+  /// (a duplicate is never its copy's neighbour), sorted by distance then index.
+  void knn_of(int i, int k, std::vector<PointHit>& out) const;
+  /// The points within distance r of point i, i and its duplicates excluded.
+  void ball_of(int i, double r, std::vector<PointHit>& out) const;
+
+ private:
+  struct Tree;
+  const VertexMatrix* points_;
+  std::unique_ptr<Tree> tree_;
+};
+
+/// The mean spacing s of a point set: the mean over the points of the distance to the nearest
+/// other point at a different position (duplicates are skipped). 0 for fewer than two distinct
+/// positions. Computed with `threads` threads, summed in point order. `radius=2.5s` of the
+/// neighbourhood option is 2.5 times this.
+double mean_spacing(const PointSearch& search, int threads);
+
+/// Neighbour rows in compressed form: row i = neighbours[offsets[i] .. offsets[i+1]).
+struct PointRows {
+  std::vector<std::int64_t> offsets{0};
+  std::vector<int> neighbours;
+};
+
+/// The k-nearest-neighbour rows of every point (knn_of), gathered with `threads` threads in
+/// fixed blocks: the same rows for any number of threads.
+PointRows knn_rows(const PointSearch& search, int k, int threads);
+/// The radius-r ball rows of every point (ball_of).
+PointRows ball_rows(const PointSearch& search, double r, int threads);
+
+}  // namespace curvbench

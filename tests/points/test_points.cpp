@@ -1,0 +1,118 @@
+// Neighbour search and oriented normals of point sets (points/).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "points/point_normals.h"
+#include "points/point_search.h"
+
+namespace curvbench {
+namespace {
+
+// (N+1)^2 grid of spacing h in the plane z = c, as rows.
+VertexMatrix grid(int N, double h, double z = 0.0) {
+  VertexMatrix V((N + 1) * (N + 1), 3);
+  for (int j = 0; j <= N; ++j)
+    for (int i = 0; i <= N; ++i) V.row(j * (N + 1) + i) << i * h, j * h, z;
+  return V;
+}
+
+// Fibonacci points of the sphere of radius a about c.
+VertexMatrix sphere(int n, double a, const Vec3& c) {
+  VertexMatrix V(n, 3);
+  const double golden = M_PI * (3.0 - std::sqrt(5.0));
+  for (int i = 0; i < n; ++i) {
+    const double z = 1.0 - 2.0 * (i + 0.5) / n, rho = std::sqrt(1.0 - z * z);
+    V.row(i) =
+        (c + a * Vec3(rho * std::cos(golden * i), rho * std::sin(golden * i), z)).transpose();
+  }
+  return V;
+}
+
+TEST(PointSearch, KnnIsSortedByDistanceThenIndexAndSkipsDuplicates) {
+  VertexMatrix V = grid(4, 1.0);
+  V.conservativeResize(V.rows() + 1, 3);
+  V.row(V.rows() - 1) = V.row(12);  // a copy of the centre (2, 2)
+  const PointSearch search(V);
+  std::vector<PointHit> hits;
+  search.knn_of(12, 4, hits);
+  ASSERT_EQ(hits.size(), 4u);
+  // The four at distance 1, by index: (2,1)=7, (1,2)=11, (3,2)=13, (2,3)=17; no copy.
+  EXPECT_EQ(hits[0].index, 7);
+  EXPECT_EQ(hits[1].index, 11);
+  EXPECT_EQ(hits[2].index, 13);
+  EXPECT_EQ(hits[3].index, 17);
+  for (const PointHit& h : hits) EXPECT_DOUBLE_EQ(h.distance2, 1.0);
+  search.knn_of(12, 8, hits);
+  EXPECT_DOUBLE_EQ(hits[4].distance2, 2.0);  // then the diagonals
+}
+
+TEST(PointSearch, BallIsInclusiveAndKnnAsksNoMoreThanTheSet) {
+  const VertexMatrix V = grid(4, 1.0);
+  const PointSearch search(V);
+  std::vector<PointHit> hits;
+  search.ball_of(12, 1.0, hits);
+  EXPECT_EQ(hits.size(), 4u);  // distance exactly 1 is inside
+  search.ball_of(12, std::sqrt(2.0), hits);
+  EXPECT_EQ(hits.size(), 8u);
+  search.knn_of(0, 100, hits);
+  EXPECT_EQ(hits.size(), 24u);  // every other point
+}
+
+TEST(PointSearch, MeanSpacingOfAGridIsItsStepAndRowsDoNotDependOnThreads) {
+  const VertexMatrix V = grid(60, 0.25);
+  const PointSearch search(V);
+  EXPECT_DOUBLE_EQ(mean_spacing(search, 2), 0.25);
+  const PointRows a = knn_rows(search, 9, 1), b = knn_rows(search, 9, 2);
+  EXPECT_EQ(a.offsets, b.offsets);
+  EXPECT_EQ(a.neighbours, b.neighbours);
+}
+
+TEST(PointNormals, ClosedSetsPointOutwardEachComponentOnItsOwn) {
+  // Two spheres far apart: two components, each outward.
+  const VertexMatrix a = sphere(800, 1.0, Vec3(0, 0, 0)), b = sphere(500, 0.5, Vec3(10, 0, 0));
+  VertexMatrix V(a.rows() + b.rows(), 3);
+  V << a, b;
+  const PointSearch search(V);
+  const PointNormals pn = oriented_pca_normals(search, 2);
+  EXPECT_EQ(pn.components, 2);
+  for (int i = 0; i < V.rows(); ++i) {
+    const Vec3 c = i < a.rows() ? Vec3(0, 0, 0) : Vec3(10, 0, 0);
+    EXPECT_GT(pn.normals.row(i).dot(V.row(i) - c.transpose()),
+              0.9 * (V.row(i) - c.transpose()).norm())
+        << i;
+    EXPECT_EQ(pn.undetermined[static_cast<size_t>(i)], 0) << i;
+  }
+}
+
+TEST(PointNormals, OpenPatchesPointUpward) {
+  // A height field z = 0.3 (x^2 - y^2) over [-1, 1]^2: upward normals.
+  VertexMatrix V = grid(30, 2.0 / 30);
+  for (int i = 0; i < V.rows(); ++i) {
+    V(i, 0) -= 1.0;
+    V(i, 1) -= 1.0;
+    V(i, 2) = 0.3 * (V(i, 0) * V(i, 0) - V(i, 1) * V(i, 1));
+  }
+  const PointNormals pn = oriented_pca_normals(PointSearch(V), 1);
+  for (int i = 0; i < V.rows(); ++i) {
+    EXPECT_GT(pn.normals(i, 2), 0.0) << i;
+    EXPECT_EQ(pn.undetermined[static_cast<size_t>(i)], 0);
+  }
+}
+
+TEST(PointNormals, AVerticalSheetAndACollinearSetAreUndetermined) {
+  // The plane x = 0: the mean normal is horizontal, neither rule decides.
+  VertexMatrix V = grid(10, 0.1);
+  V.col(2) = V.col(0);
+  V.col(0).setZero();
+  PointNormals pn = oriented_pca_normals(PointSearch(V), 1);
+  for (const unsigned char u : pn.undetermined) EXPECT_EQ(u, 1);
+  VertexMatrix line(20, 3);
+  for (int i = 0; i < 20; ++i) line.row(i) << i, 2 * i, 0.5 * i;
+  pn = oriented_pca_normals(PointSearch(line), 1);
+  for (const unsigned char u : pn.undetermined) EXPECT_EQ(u, 1);
+}
+
+}  // namespace
+}  // namespace curvbench
