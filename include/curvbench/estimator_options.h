@@ -70,6 +70,9 @@ inline constexpr const char* kKernelNames[] = {"batched", "scalar"};
     "fit 6 coefficients (a constant term) instead of libigl's 5")                                  \
   X(double, ball_factor, "ball-factor", 0.0, normal_cycle|icc, result, 0.0, 1e6,                   \
     "the ball of radius C times the mean edge length instead of the 1-ring (0: the 1-ring)")      \
+  X(double, apss_beta, "apss-beta", 1.0, apss, result, 1e-6, 1e12,                              \
+    "APSS: weight of the normal constraints against the positions, in units of the kernel "       \
+    "support h squared (beta = apss-beta h^2; Guennebaud and Gross 2007)")                         \
   X(int, threads, "threads", 0, all, run, 0, 1 << 20,                                               \
     "OpenMP threads (0: all cores); the results do not depend on it")                             \
   X(Kernel, kernel, "kernel", Kernel::batched, all, run, 0, 0,                                     \
