@@ -46,7 +46,8 @@ inline constexpr const char* kKernelNames[] = {"batched", "scalar"};
     "fitting degree d of a fit (0: the degree attached to the method name, e.g. LHF-4, else 2)")   \
   X(double, rings, "rings", 0.0, all, result, 0.0, 1e6,                                            \
     "neighbourhood in rings 1, 1.5, 2, ... (0: the method's default: (d+1)/2 for a fit, "          \
-    "+0.5 if noisy; Xu 1; quadric 5; the other operators take the 1-ring only)")                   \
+    "+0.5 if noisy; Xu 1; quadric 5; APSS and surface-variation 2; the other operators take "      \
+    "the 1-ring only)")                                                                            \
   X(bool, noisy, "noisy", false, all, result, 0, 1,                                                \
     "noisy input: a fit's default ring + 0.5 (paper section 5.3); operators ignore it")            \
   X(bool, adaptive, "adaptive", true, fits, result, 0, 1,                                          \
