@@ -78,8 +78,8 @@ int main(int argc, char** argv) {
     for (int v = 0; v < mesh.num_vertices(); ++v) {
       const pcl::Normal& n = (*normals)[static_cast<size_t>(v)];
       const pcl::PrincipalCurvatures& c = curvatures[static_cast<size_t>(v)];
-      std::fprintf(out, "%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", v, n.normal_x, n.normal_y,
-                   n.normal_z, c.pc1, c.pc2, n.curvature);
+      std::fprintf(out, "%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", v, n.normal_x, n.normal_y, n.normal_z,
+                   c.pc1, c.pc2, n.curvature);
     }
     if (std::fclose(out) != 0) throw std::runtime_error(std::string("cannot write ") + argv[2]);
   } catch (const std::exception& e) {
