@@ -5,9 +5,13 @@
 // Per vertex v, with x^ = (x - x_v) / h the coordinates scaled by the kernel support h:
 //   neighbourhood  collect_neighbourhood (the rings of option `rings`, default 2; on a point set
 //                  the k-NN table that serves collect_neighbourhood), the centre included
-//   support, weights  h = kSupport * the distance to the farthest point of the neighbourhood,
-//                  w_i(x) = (1 - |x - x_i|^2 / h^2)^4 (G&G 2007's smooth compact kernel), so every
-//                  point has a weight > 0 and h follows the sampling
+//   support, weights  h = the distance to the farthest point of the neighbourhood,
+//                  w_i(x) = (1 - |x - x_i|^2 / h^2)^4 (G&G 2007's smooth compact kernel): h
+//                  follows the sampling, and the kernel and its first three derivatives vanish
+//                  where the neighbourhood ends, so the field's derivatives at the vertex do not
+//                  miss points the neighbourhood lacks (for a k-NN ball exactly; for rings, all
+//                  but the few inside h beyond the last ring). A support 1.5 h gave a cylinder's
+//                  k1 = -0.047 instead of 0 (tests/methods/test_apss.cpp).
 //   sphere         s_u(x^) = u0 + ul . x^ + u4 |x^|^2, u = (u0, ul, u4), the minimiser of
 //                  sum_i w_i [ s_u(x^_i)^2 + beta |grad s_u(x^_i) - n_i|^2 ]     (G&G 2007 §3.3)
 //                  with n_i the input normals (MeshContext::approx_normals, or the weighting of
@@ -59,7 +63,7 @@ using Vec5 = Eigen::Matrix<double, 5, 1>;
 using Mat5 = Eigen::Matrix<double, 5, 5>;
 
 constexpr double kDefaultRing = 2.0;
-// Kernel support relative to the farthest neighbour: its weight is (1 - 1/1.5^2)^4 = 0.095.
+// Kernel support relative to the farthest neighbour (see "support, weights" above).
 constexpr double kSupport = 1.0;
 
 // One point of the fit, in scaled coordinates: its row matrix M_i = a a^T + beta G^T G and right
