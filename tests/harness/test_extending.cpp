@@ -70,9 +70,9 @@ TEST(Extending, AToyEstimatorAndFamilyRunThroughTheExperimentPath) {
       "method lhf-2\nmethod all-operators vertex-normals=angle\n"
       "panel toy-n \"Toy. Normals.\" normal L2\n",
       "toy.exp");
-  // all-operators now includes the toy operator, after the seven built-in ones (the line of its
+  // all-operators now includes the toy operator, after the nine built-in ones (the line of its
   // own needs a label: both would report as TOY-NORMAL).
-  ASSERT_EQ(e.methods.size(), 2u + 8u);
+  ASSERT_EQ(e.methods.size(), 2u + 10u);
   EXPECT_EQ(e.methods.back().spec, "toy-normal");
   EXPECT_EQ(e.methods.back().options.vertex_normals, VertexNormals::angle);
   RunOptions o;
