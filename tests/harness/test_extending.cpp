@@ -78,7 +78,7 @@ TEST(Extending, AToyEstimatorAndFamilyRunThroughTheExperimentPath) {
   RunOptions o;
   o.threads = 1;
   const RunSummary run = run_experiments({e}, o);
-  ASSERT_EQ(run.rows.size(), 2u * 10u);  // one normal L2 row per level and method
+  ASSERT_EQ(run.rows.size(), 2u * 12u);  // one normal L2 row per level and method
   for (const ErrorRow& r : run.rows) {
     EXPECT_EQ(r.family, "toy-sphere");
     EXPECT_EQ(r.noise, "none");  // the family's noise label
@@ -86,10 +86,10 @@ TEST(Extending, AToyEstimatorAndFamilyRunThroughTheExperimentPath) {
   }
   // The toy's normal error converges, about first order on the icosphere (0.45x per halving).
   const ErrorRow& coarse = run.rows[0];
-  const ErrorRow& fine = run.rows[10];
+  const ErrorRow& fine = run.rows[12];
   ASSERT_EQ(coarse.method, "TOY first");
   ASSERT_EQ(fine.method, "TOY first");
-  EXPECT_EQ(run.rows[9].method, "TOY-NORMAL");
+  EXPECT_EQ(run.rows[11].method, "TOY-NORMAL");
   EXPECT_GT(coarse.error, 0.0);
   EXPECT_LT(fine.error, 0.6 * coarse.error);
   // The tables know them.
