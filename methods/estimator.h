@@ -203,10 +203,12 @@ int estimator_degree(const std::string& name, EstimatorOptions options);
 enum class MethodGroup {
   paper_fit,  ///< the paper's parameterization-based fits (LHF, LOP, Xu, LSCM)
   jet,        ///< CGAL's osculating jet
-  discrete,   ///< an operator on the 1-ring or a ball (Meyer, Taubin, ICC, ...)
+  discrete,   ///< an operator on the 1-ring or a ball (Meyer, Taubin, ICC, ...): the methods
+              ///< an experiment's `method all-operators` runs
+  point_set,  ///< an estimator of the point-set literature (APSS, surface variation)
   outside,    ///< not in the registry: an outside estimator (a command of an experiment file)
 };
-/// "paper fits", "jets", "discrete operators", "outside estimators".
+/// "paper fits", "jets", "discrete operators", "point-set estimators", "outside estimators".
 const char* to_string(MethodGroup g);
 
 /// What a method's neighbourhood size is, declared on its registry line: the runner's radius

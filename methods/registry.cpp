@@ -58,7 +58,11 @@
   X("normal-cycle",  0, 0, "once", 1.5, discrete , ball_factor, make_normal_cycle_estimator,                  \
     "normal cycle curvature tensor over the 1-ring or a ball (Cohen-Steiner and Morvan 2003)")                \
   X("icc",           0, 0, "once", 0.5, discrete , ball_factor, make_icc_estimator,                           \
-    "interpolated corrected curvature measures, 1-ring or ball (Lachaud et al. 2020)")
+    "interpolated corrected curvature measures, 1-ring or ball (Lachaud et al. 2020)")           \
+  X("apss",          0, 0, "once", 4.5, point_set, half_rings , make_apss_estimator,                 \
+    "algebraic sphere fit on points and normals (Guennebaud and Gross 2007)")                     \
+  X("surface-variation", 0, 0, "once", 1.6, point_set, half_rings, make_surface_variation_estimator, \
+    "PCA normal; PCL's surface variation in the H column: NOT a curvature (Pauly et al. 2002)")
 // clang-format on
 
 namespace curvbench {
@@ -224,6 +228,8 @@ const char* to_string(MethodGroup g) {
       return "jets";
     case MethodGroup::discrete:
       return "discrete operators";
+    case MethodGroup::point_set:
+      return "point-set estimators";
     case MethodGroup::outside:
       return "outside estimators";
   }

@@ -5,6 +5,7 @@
 #   bash tools/deps.sh          what make build/test/experiments/bench/test-sanitize need
 #   bash tools/deps.sh fuzz     the same plus clang and libFuzzer (make fuzz)
 #   bash tools/deps.sh slurm    the same plus Slurm and MUNGE (make test-slurm)
+#   bash tools/deps.sh pcl      the same plus PCL (the optional PCL adapter, build/pcl_curvatures)
 set -euo pipefail
 mode="${1:-build}"
 packages=(
@@ -39,8 +40,13 @@ case "$mode" in
     # it depends on munge, the authentication daemon.
     packages+=(slurm-wlm munge)
     ;;
+  pcl)
+    # libpcl-dev: PCL 1.13, the outside estimator experiments/examples/pcl_curvatures.cpp
+    # (optional: it pulls in about 338 packages, VTK and Qt among them)
+    packages+=(libpcl-dev)
+    ;;
   *)
-    echo "usage: bash tools/deps.sh [build|fuzz|slurm]" >&2
+    echo "usage: bash tools/deps.sh [build|fuzz|slurm|pcl]" >&2
     exit 2
     ;;
 esac

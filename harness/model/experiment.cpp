@@ -358,7 +358,7 @@ void parse_method(Experiment& e, const std::vector<std::string>& w, const std::s
         if (!m.label.empty() || !label_suffix.empty())
           throw InputError(where + ": method " + kAllOperators + " takes no label or list");
         for (const MethodInfo& info : method_table()) {
-          if (info.is_fit()) continue;
+          if (info.is_fit() || info.group != MethodGroup::discrete) continue;
           ExperimentMethod one = m;
           one.spec = info.name;
           make_estimator(one.spec, one.options);  // the options suit every operator

@@ -44,6 +44,9 @@ constexpr Entry kTable[] = {
     {"ICC",          false, "#66a61e", 3,  5},
     {"ICC (LHF-3 normals)", false, "#66a61e", 12, 1}, {"Normal-cycle (LHF-3 normals)", false, "#555555", 6, 1},
     {"vtk-curvatures", false, "#17becf", 2, 5},
+    {"APSS",         false, "#7570b3", 5,  3},
+    {"SurfVar",      false, "#a6761d", 7,  3},
+    {"pcl",          false, "#e6ab02", 9,  4},
 };
 // The spare palette of the fallback styles: colours no entry above uses.
 constexpr const char* kSpareColours[] = {"#d62728", "#9467bd", "#bcbd22", "#1a5276",

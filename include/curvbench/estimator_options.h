@@ -75,7 +75,8 @@ struct PointNeighbourhood {
     "fitting degree d of a fit (0: the degree attached to the method name, e.g. LHF-4, else 2)")   \
   X(double, rings, "rings", 0.0, all, result, 0.0, 1e6,                                            \
     "neighbourhood in rings 1, 1.5, 2, ... (0: the method's default: (d+1)/2 for a fit, "          \
-    "+0.5 if noisy; Xu 1; quadric 5; the other operators take the 1-ring only)")                   \
+    "+0.5 if noisy; Xu 1; quadric 5; APSS and surface-variation 2; the other operators take "      \
+    "the 1-ring only)")                                                                            \
   X(bool, noisy, "noisy", false, all, result, 0, 1,                                                \
     "noisy input: a fit's default ring + 0.5 (paper section 5.3); operators ignore it")            \
   X(bool, adaptive, "adaptive", true, fits, result, 0, 1,                                          \
@@ -103,6 +104,9 @@ struct PointNeighbourhood {
   X(PointNeighbourhood, neighbourhood, "neighbourhood", PointNeighbourhood{}, all, result, 0, 0,   \
     "neighbours without faces instead of rings: knn=K, radius=R or radius=Cs (C times the mean "   \
     "spacing); default: rings on a mesh, knn=2(d+1)(d+2)/2 on a point set")                       \
+  X(double, apss_beta, "apss-beta", 1.0, apss, result, 1e-6, 1e12,                              \
+    "APSS: weight of the normal constraints against the positions, in units of the kernel "       \
+    "support h squared (beta = apss-beta h^2; Guennebaud and Gross 2007)")                         \
   X(int, threads, "threads", 0, all, run, 0, 1 << 20,                                               \
     "OpenMP threads (0: all cores); the results do not depend on it")                             \
   X(Kernel, kernel, "kernel", Kernel::batched, all, run, 0, 0,                                     \
