@@ -76,11 +76,11 @@ TEST(Cli, BadInputExits2WithOneLineNamingTheFile) {
   EXPECT_NE(r.output.find("missing.off"), std::string::npos) << r.output;
   EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
 
-  const auto unknown = dir / "mesh.xyz";
+  const auto unknown = dir / "mesh.abc";  // not a format curvbench reads
   std::ofstream(unknown) << "1 2 3\n";
   r = run_cli("info " + unknown.string());
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find("mesh.xyz"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("mesh.abc"), std::string::npos) << r.output;
 
   const auto range = dir / "range.off";
   std::ofstream(range) << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n";
