@@ -18,6 +18,7 @@
 
 #include "core/errors.h"
 #include "harness/claims/claims.h"
+#include "harness/claims/kit.h"
 #include "harness/model/paper_tables.h"
 #include "harness/model/results_table.h"
 
@@ -689,6 +690,51 @@ TEST(Claims, MalformedCsvIsAnInputError) {
 
 namespace curvbench {
 namespace {
+
+// The rate formula and the family substitution are the Data's own fields: a copy with another
+// context reads the same CSVs under it and leaves the original as it was. The series has
+// e ~ 2^(-2 level) on meshes whose h shrinks by 1.6 per level: level-halving rate 2.00, rate over
+// the measured h 2 log 2 / log 1.6 = 2.95.
+TEST(ClaimsKit, ContextIsAFieldOfTheData) {
+  TempDir dir;
+  SyntheticSet s;
+  for (const char* family : {"torus-unstructured", "torus-jittered"})
+    s.add("fig03-05", family, {1, 2, 3, 4}, "LHF-2", "1.5", "none", "all", "normal", "L2", 1.0,
+          2.0);
+  for (auto& r : s.rows) {
+    r.h = 0.25 / std::pow(1.6, r.level - 1);
+    r.error = std::pow(2.0, -2.0 * r.level) * (r.family == "torus-jittered" ? 3.0 : 1.0);
+  }
+  s.write(dir);
+  const claims::Data ours(dir.str());
+  const claims::Data paper = ours.with_rate_formula(claims::RateFormula::level_halving);
+  claims::Check c;
+  const claims::Query q =
+      claims::query("fig03-05", "torus-unstructured", "LHF-2", "normal", "L2", "none", 1.5);
+  const claims::Series* series = ours.find(c, q);
+  ASSERT_NE(series, nullptr) << c.evidence();
+  EXPECT_EQ(ours.rate_formula(), claims::RateFormula::measured_h);
+  EXPECT_NEAR(ours.rate(*series), 2.0 * std::log(2.0) / std::log(1.6), 1e-12);
+  EXPECT_NEAR(paper.rate(*series), 2.0, 1e-12);
+  EXPECT_EQ(paper.find(c, q), series);  // the copy shares the series read
+  for (double r : paper.pair_rates(*series)) EXPECT_NEAR(r, 2.0, 1e-12);
+  claims::Check line;
+  claims::require_rate(paper, line, *series, Band::in(1.6, 2.6));
+  EXPECT_EQ(line.verdict(), Verdict::reproduced) << line.evidence();
+  claims::require_rate(ours, line, *series, Band::in(1.6, 2.6));
+  EXPECT_EQ(line.verdict(), Verdict::not_reproduced) << line.evidence();
+
+  const claims::Data jittered = paper.with_substitute(claims::kWell, "torus-jittered");
+  EXPECT_EQ(jittered.tori(), (std::vector<std::string>{"torus-jittered", claims::kPoor}));
+  EXPECT_EQ(jittered.family(claims::kBumpIrr), claims::kBumpIrr);
+  EXPECT_EQ(jittered.rate_formula(), claims::RateFormula::level_halving);
+  EXPECT_EQ(paper.tori(), (std::vector<std::string>{claims::kWell, claims::kPoor}));
+  EXPECT_EQ(jittered.with_substitute(claims::kWell, "").family(claims::kWell), claims::kWell);
+  // A subfolder's Data (results/deep/, a reading's folder) keeps the context.
+  const claims::Data folder = jittered.in_folder(dir.str());
+  EXPECT_EQ(folder.family(claims::kWell), "torus-jittered");
+  EXPECT_EQ(folder.rate_formula(), claims::RateFormula::level_halving);
+}
 
 // Every claim is evaluated with both rate formulas. Meshes whose levels shrink h by 1.6 instead of
 // 2: normals with e ~ 2^(-2 level) converge at rate 2 per level (the paper's level-halving rate,
