@@ -16,7 +16,7 @@ const Series* noisy_torus(const Data& d, Check& c, const std::string& m, const s
 }
 
 // E3's Why line (localised), from the diagnostic experiment diag-e3-rings
-// (experiments/diagnostics/e3_ring_scan.exp): LHF-2's H and K errors on the noisy torus at
+// (experiments/diagnostics/diag-e3-rings.exp): LHF-2's H and K errors on the noisy torus at
 // rings 1.5 to 4, per level. "" if the diagnostic was not run.
 std::vector<WhyFinding> e3_ring_scan(const Data& d) {
   std::vector<std::string> parts;

@@ -12,6 +12,8 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -1317,6 +1319,47 @@ TEST(Claims, D6LevelsAreACauseOnlyIfTheWholeCheckHoldsOneLevelFiner) {
                                "diag-d6-level5"),
             std::string::npos)
       << lhf_only.text;
+}
+
+}  // namespace
+}  // namespace curvbench
+
+namespace curvbench {
+namespace {
+
+// Every experiment a claim names (a string literal such as "fig03-05" or "diag-d5-level5" in
+// harness/claims/*.cpp: the experiments its queries prefer, its diagnostics) is an experiment
+// file of experiments/ (its diagnostics/ and deep/ subfolders included), so a renamed or
+// misspelt experiment cannot leave a claim "not applicable" for want of rows that no run writes.
+TEST(Claims, EveryExperimentAClaimNamesExists) {
+  const fs::path root(CURVBENCH_SOURCE_DIR);
+  std::set<std::string> experiments;
+  for (const char* sub : {"experiments", "experiments/diagnostics", "experiments/deep"})
+    for (const auto& entry : fs::directory_iterator(root / sub))
+      if (entry.path().extension() == ".exp") experiments.insert(entry.path().stem().string());
+  const std::regex literal(
+      "\"(fig[0-9]{2}-[0-9]{2}|diag-[a-z0-9-]+|ablation|field-estimators[a-z0-9-]*|hard-meshes|"
+      "sweep-[a-z0-9_-]+)\"");
+  std::set<std::string> named;
+  for (const auto& entry : fs::directory_iterator(root / "harness/claims")) {
+    std::ifstream in(entry.path());
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string s = text.str();
+    for (auto it = std::sregex_iterator(s.begin(), s.end(), literal); it != std::sregex_iterator();
+         ++it) {
+      const std::string name = (*it)[1];
+      named.insert(name);
+      EXPECT_TRUE(experiments.count(name))
+          << entry.path().filename().string() << " names experiment " << name
+          << ", which has no file experiments/[diagnostics/|deep/]" << name << ".exp";
+    }
+  }
+  // The claims name the paper's nine figure experiments and the diagnostics of their Why lines.
+  EXPECT_GE(named.size(), 15u);
+  for (const char* fig : {"fig03-05", "fig06-07", "fig09-10", "fig11-12", "fig13-14", "fig15-16",
+                          "fig17-18", "fig19-21", "fig20-22"})
+    EXPECT_TRUE(named.count(fig)) << fig;
 }
 
 }  // namespace
