@@ -179,7 +179,7 @@ TEST(External, FailuresAreTypedErrorsNamingTheCase) {
                                      << method << "\npanel p \"p\" H L2\n";
     const auto r = sh("'" + kBinary + "' run '" + (dir / "parse.exp").string() + options);
     EXPECT_EQ(r.exit_code, 2) << method << ": " << r.output;
-    EXPECT_NE(r.output.find("parse.exp:3"), std::string::npos) << method << ": " << r.output;
+    EXPECT_NE(r.output.find("parse.exp:2"), std::string::npos) << method << ": " << r.output;
   }
 }
 
