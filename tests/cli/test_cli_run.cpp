@@ -118,7 +118,7 @@ TEST(CliRun, ListAndBadUsage) {
   std::ofstream(fs::path(exp_dir) / "broken.exp") << "foo bar\n";
   r = run_cli("run --list --experiments-dir " + exp_dir.string());
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find("broken.exp:2: unknown key 'foo'"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("broken.exp:1: unknown key 'foo'"), std::string::npos) << r.output;
 }
 
 // --full adds the experiments of sweeps/; one named like a top-level experiment replaces it.
@@ -157,7 +157,7 @@ TEST(CliRun, FullSweepsReplaceTrimmedAndBadNoiseExits2) {
     r = run_cli("run --list --experiments-dir " + exp_dir.string());
     EXPECT_EQ(r.exit_code, 2) << bad;
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
-    EXPECT_NE(r.output.find("bad.exp:5: "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("bad.exp:4: "), std::string::npos) << r.output;
     EXPECT_NE(r.output.find(needle), std::string::npos) << r.output;
   }
 }
