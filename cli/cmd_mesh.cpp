@@ -130,8 +130,10 @@ Command add_mesh_command(CLI::App& app) {
   auto* level = sub->add_option("--level", o->level,
                                 "Resolution level, 1 = coarsest (" + level_ranges() + ")");
   auto* noise = sub->add_option("--noise-order", o->noise_order,
-                                "Add alpha h^k normal noise of order k (1..4; 0 = none), "
-                                "alpha = 0.1 N(0,1)");
+                                "Add alpha h^k normal noise of order k (1.." +
+                                    std::to_string(kMaxNoiseOrder) +
+                                    "; 0 = none), "
+                                    "alpha = 0.1 N(0,1)");
   auto* seed = sub->add_option("--seed", o->seed,
                                "Seed for the noise, the jitter and the irregular bump points")
                    ->check(CLI::Validator(

@@ -147,8 +147,6 @@ std::vector<FamilyEntry>& family_entries() {
   return entries;
 }
 
-constexpr int kMaxNoiseOrder = 4;
-
 const MeshOptionInfo* find_option(const std::string& name) {
   for (const MeshOptionInfo& o : mesh_option_table())
     if (o.name == name) return &o;
@@ -285,9 +283,7 @@ GeneratedMesh generate_mesh(const MeshSpec& spec) {
   if (spec.level < 1 || spec.level > max_level)
     throw UsageError("mesh level " + std::to_string(spec.level) + " out of range for " +
                      spec.family + " (valid: 1.." + std::to_string(max_level) + ")");
-  if (spec.noise_order < 0 || spec.noise_order > kMaxNoiseOrder)
-    throw UsageError("noise order " + std::to_string(spec.noise_order) +
-                     " out of range (valid: 0 = none, 1.." + std::to_string(kMaxNoiseOrder) + ")");
+  check_noise_order(spec.noise_order);
   if (spec.jitter && spec.family != "torus-structured")
     throw UsageError("jitter applies only to the torus-structured family, not " + spec.family);
   check_mesh_shape(spec.family, spec.shape);

@@ -99,9 +99,16 @@ std::string noise_label(int k, const NoiseModel& model) {
   return buf;
 }
 
+void check_noise_order(int k) {
+  if (k < 0 || k > kMaxNoiseOrder)
+    throw UsageError("noise order " + std::to_string(k) + " out of range (valid: 0 = none, 1.." +
+                     std::to_string(kMaxNoiseOrder) + ")");
+}
+
 GeneratedMesh add_noise(const GeneratedMesh& input, int k, std::uint64_t seed,
                         const NoiseModel& model) {
-  if (k < 1) throw UsageError("noise order " + std::to_string(k) + " must be >= 1");
+  check_noise_order(k);
+  if (k == 0) throw UsageError("add_noise: noise order 0 adds no noise");
   validate_noise_model(model);
   if (!input.surface || input.exact_points.rows() != input.mesh.num_vertices())
     throw UsageError("add_noise: mesh without surface or exact points");

@@ -64,6 +64,14 @@ struct NoiseModel {
   }
 };
 
+/// The one rule for noise orders: the order k of alpha h^k is 1..kMaxNoiseOrder (2 and 3 the
+/// paper's, §5.3; 1 the sweeps' sigma h), 0 is no noise. Experiment files (`noise order=K`, a mesh
+/// line's `noise-order=K`), `curvbench mesh --noise-order` and add_noise check it here.
+inline constexpr int kMaxNoiseOrder = 4;
+/// Throws UsageError "noise order K out of range (valid: 0 = none, 1..4)" unless
+/// 0 <= k <= kMaxNoiseOrder.
+void check_noise_order(int k);
+
 /// Throws UsageError naming the option and value: a scale (sigma/h) that is negative or not
 /// finite, an outlier fraction outside [0, 1].
 void validate_noise_model(const NoiseModel& model);
@@ -75,7 +83,8 @@ void validate_noise_model(const NoiseModel& model);
 /// "outliers <100 p>%" (e.g. "outliers 0.1%").
 std::string noise_label(int k, const NoiseModel& model);
 
-/// Throws UsageError if k < 1 or the model is invalid (validate_noise_model).
+/// Throws UsageError if k is not an order of noise (check_noise_order; 0 adds none) or the model
+/// is invalid (validate_noise_model).
 GeneratedMesh add_noise(const GeneratedMesh& input, int k, std::uint64_t seed,
                         const NoiseModel& model = {});
 

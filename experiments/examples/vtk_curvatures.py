@@ -28,7 +28,7 @@ python3-vtk9, and the current master compute the same):
   divided by a third of the area of the incident triangles (the barycentric area). Meyer's
   deficit is the same; its area is the mixed Voronoi area, which differs from the barycentric
   one wherever the triangles are not all alike, so the two Ks differ on irregular meshes.
-* Measured (the field study, experiments/field_estimators.exp, L2 errors at the finest
+* Measured (the field study, experiments/field-estimators.exp, L2 errors at the finest
   level): on torus-structured both converge as O(h^2), VTK's H error 3.4 times Meyer's and its
   K error 0.74 times. On the other five families neither converges in H or K; VTK's H error
   is 1.7 times Meyer's on torus-unstructured, 1.6 on bump-irregular, 2.2 on bump-48, 1.5 on

@@ -155,21 +155,6 @@ std::string differing_checks(const std::string& a, const std::string& b) {
   return claims::join(out, "\n");
 }
 
-// Substitutes `by` for `family` in the checks for the lifetime of the object.
-class FamilyScope {
- public:
-  FamilyScope(const std::string& family, const std::string& by)
-      : family_(family), saved_(claims::family(family)) {
-    claims::set_substitute(family_, by);
-  }
-  ~FamilyScope() { claims::set_substitute(family_, saved_); }
-  FamilyScope(const FamilyScope&) = delete;
-  FamilyScope& operator=(const FamilyScope&) = delete;
-
- private:
-  std::string family_, saved_;
-};
-
 // The findings of a checked claim that is not reproduced: every diagnostic the registry can run
 // from the same CSVs (the other rate formula; the same check on the other well-shaped tori), then
 // the entry's own.
@@ -187,10 +172,9 @@ std::vector<WhyFinding> why_findings(const claims::ClaimEntry& def, const claims
     std::vector<std::string> shapes;
     bool reproduced_elsewhere = false;
     for (const std::string family : {"torus-jittered", "torus-structured"}) {
-      // Rates over the measured h (evaluate_claims' default).
-      const FamilyScope scope(claims::kWell, family);
+      // Rates over the measured h (`data`'s, evaluate_claims).
       claims::Check c;
-      def.check(data, c);
+      def.check(data.with_substitute(claims::kWell, family), c);
       shapes.push_back(family + ": " + to_string(c.verdict()));
       reproduced_elsewhere = reproduced_elsewhere || c.verdict() == Verdict::reproduced;
     }
@@ -205,20 +189,6 @@ std::vector<WhyFinding> why_findings(const claims::ClaimEntry& def, const claims
     for (auto& f : def.why(data)) out.push_back(std::move(f));
   return out;
 }
-
-// Sets the rate formula for the lifetime of the object.
-class FormulaScope {
- public:
-  explicit FormulaScope(claims::RateFormula f) : saved_(claims::rate_formula()) {
-    claims::rate_formula() = f;
-  }
-  ~FormulaScope() { claims::rate_formula() = saved_; }
-  FormulaScope(const FormulaScope&) = delete;
-  FormulaScope& operator=(const FormulaScope&) = delete;
-
- private:
-  claims::RateFormula saved_;
-};
 
 // The result of claim `id` in one alternative's results (nullptr if absent).
 const ClaimResult* result_of(const std::vector<ClaimResult>& results, const std::string& id) {
@@ -244,7 +214,8 @@ std::string readings_markdown(const std::vector<ClaimResult>& results,
   if (alternatives.empty()) return "";
   std::ostringstream md;
   md << "**Readings.** Where the paper leaves a choice open, curvbench adopts one reading and "
-        "also runs the experiments under the alternatives (harness/readings/readings.cpp; the arguments "
+        "also runs the experiments under the alternatives (harness/readings/readings.cpp; the "
+        "arguments "
         "are in docs/claims.md, made without reference to the verdicts). Each claim's section "
         "lists its verdict under every alternative that changes its evidence.\n\n"
      << "| reading | alternative | what it does | claims touched | verdict changes | "
@@ -353,8 +324,10 @@ std::string claim_sensitivity(const ClaimResult& r,
 
 std::vector<ClaimResult> evaluate_claims(const std::string& results_dir, const std::string& overlay,
                                          const FamilySubstitute& substitute) {
-  const claims::Data data(results_dir, overlay);
-  const FamilyScope swap(substitute.family, substitute.by);
+  // Our rates (over the measured h) and the paper's level-halving ones, with the reading's swap.
+  const claims::Data data =
+      claims::Data(results_dir, overlay).with_substitute(substitute.family, substitute.by);
+  const claims::Data paper = data.with_rate_formula(claims::RateFormula::level_halving);
   std::vector<ClaimResult> out;
   for (const auto& def : registry()) {
     ClaimResult r;
@@ -363,14 +336,12 @@ std::vector<ClaimResult> evaluate_claims(const std::string& results_dir, const s
     r.band = def.band;
     if (def.check) {
       {
-        const FormulaScope ours(claims::RateFormula::measured_h);
         claims::Check c;
         def.check(data, c);
         r.verdict = c.verdict();
         r.evidence = c.evidence();
       }
       if (def.original_check) {
-        const FormulaScope ours(claims::RateFormula::measured_h);
         claims::Check c;
         def.original_check(data, c);
         r.original_band = def.original_band;
@@ -378,9 +349,8 @@ std::vector<ClaimResult> evaluate_claims(const std::string& results_dir, const s
         r.original_verdict = c.verdict();
         r.original_evidence = c.evidence();
       }
-      const FormulaScope paper(claims::RateFormula::level_halving);
       claims::Check c;
-      def.check(data, c);
+      def.check(paper, c);
       r.halving_verdict = c.verdict();
       if (r.halving_verdict != r.verdict)
         r.halving_evidence = differing_checks(r.evidence, c.evidence());

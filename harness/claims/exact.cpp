@@ -12,7 +12,7 @@ namespace {
 
 // Row of table4.csv for grid n, or -1 after recording it missing.
 int table4_row(const Data& d, Check& c, int n) {
-  const CsvTable& t = *d.table4;
+  const CsvTable& t = *d.table4();
   const size_t cg = t.col("grid_points");
   for (size_t i = 0; i < t.rows.size(); ++i)
     if (t.number(i, cg) == n) return static_cast<int>(i);
@@ -21,16 +21,16 @@ int table4_row(const Data& d, Check& c, int n) {
 }
 
 bool have_table4(const Data& d, Check& c) {
-  if (!d.table4) c.missing("table4.csv not present: run make experiments");
-  return d.table4.has_value();
+  if (!d.table4()) c.missing("table4.csv not present: run make experiments");
+  return d.table4().has_value();
 }
 
 void claim_a1(const Data& d, Check& c) {
-  if (!d.table2) {
+  if (!d.table2()) {
     c.missing("table2.csv not present: run make experiments");
     return;
   }
-  const CsvTable& t = *d.table2;
+  const CsvTable& t = *d.table2();
   const size_t cd = t.col("degree"), cc = t.col("coefficients"), cp = t.col("points_with_centre"),
                cr = t.col("ring");
   for (const auto& paper : paper::kTable2) {
@@ -52,11 +52,11 @@ void claim_a1(const Data& d, Check& c) {
 
 void claim_a2(const Data& d, Check& c) {
   if (!have_table4(d, c)) return;
-  const size_t cv = d.table4->col("vertices");
+  const size_t cv = d.table4()->col("vertices");
   for (const auto& paper : paper::kTable4) {
     const int row = table4_row(d, c, paper.grid_points);
     if (row < 0) continue;
-    const double v = d.table4->number(row, cv);
+    const double v = d.table4()->number(row, cv);
     c.require(v == paper.vertices, "n = " + std::to_string(paper.grid_points) + ": " +
                                        std::to_string(static_cast<long long>(v)) +
                                        " vertices (paper " + std::to_string(paper.vertices) + ")");
@@ -78,7 +78,7 @@ bool within_last_digit(double ours, double paper) {
 
 void claim_a3(const Data& d, Check& c) {
   if (!have_table4(d, c)) return;
-  const size_t crms = d.table4->col("rms_error"), cmax = d.table4->col("max_error");
+  const size_t crms = d.table4()->col("rms_error"), cmax = d.table4()->col("max_error");
   std::vector<std::string> rates2, ratesinf;
   double prev2 = std::nan(""), previnf = std::nan("");
   std::vector<std::string> paper2, paperinf;
@@ -93,7 +93,7 @@ void claim_a3(const Data& d, Check& c) {
       prev2 = previnf = std::nan("");
       continue;
     }
-    const double r = d.table4->number(row, crms), m = d.table4->number(row, cmax);
+    const double r = d.table4()->number(row, crms), m = d.table4()->number(row, cmax);
     c.require(within_last_digit(r, paper.l2) && within_last_digit(m, paper.linf),
               "n = " + std::to_string(paper.grid_points) + ": L2 " + e3(r) + " (paper " +
                   e2(paper.l2) + "), Linf " + e3(m) + " (paper " + e2(paper.linf) + ")");
@@ -113,10 +113,10 @@ void claim_a3(const Data& d, Check& c) {
 template <class F>
 void for_each_table4_edge(const Data& d, Check& c, F&& f) {
   if (!have_table4(d, c)) return;
-  const size_t ch = d.table4->col("mean_edge_length");
+  const size_t ch = d.table4()->col("mean_edge_length");
   for (const auto& row4 : paper::kTable4)
     if (const int row = table4_row(d, c, row4.grid_points); row >= 0)
-      f(row4.grid_points, d.table4->number(row, ch), row4.edge_column);
+      f(row4.grid_points, d.table4()->number(row, ch), row4.edge_column);
 }
 
 void claim_a4(const Data& d, Check& c, double tolerance) {

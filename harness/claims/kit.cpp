@@ -147,40 +147,8 @@ std::string Check::evidence() const {
 
 // ---- series -----------------------------------------------------------------------------------
 
-RateFormula& rate_formula() {
-  thread_local RateFormula formula = RateFormula::measured_h;
-  return formula;
-}
-
-namespace {
-std::map<std::string, std::string>& substitutes() {
-  thread_local std::map<std::string, std::string> table;
-  return table;
-}
-}  // namespace
-
-const std::string& family(const std::string& name) {
-  const auto it = substitutes().find(name);
-  return it == substitutes().end() ? name : it->second;
-}
-
-void set_substitute(const std::string& name, const std::string& substitute) {
-  if (substitute.empty() || substitute == name)
-    substitutes().erase(name);
-  else
-    substitutes()[name] = substitute;
-}
-
-std::vector<std::string> tori() {
-  return {family(kWell), kPoor};
-}
-
-std::vector<std::string> bumps() {
-  return {family(kBumpIrr), kBump48};
-}
-
-double Series::rate() const {
-  return rate_formula() == RateFormula::measured_h ? rate_h() : rate_halving();
+double Series::rate(RateFormula formula) const {
+  return formula == RateFormula::measured_h ? rate_h() : rate_halving();
 }
 double Series::rate_h() const {
   return convergence_rate(first().e, last().e, first().h, last().h);
@@ -188,11 +156,11 @@ double Series::rate_h() const {
 double Series::rate_halving() const {
   return level_halving_rate(first().e, last().e, first().level, last().level);
 }
-std::vector<double> Series::pair_rates() const {
+std::vector<double> Series::pair_rates(RateFormula formula) const {
   std::vector<double> out;
   for (size_t i = 1; i < points.size(); ++i) {
     const Point &a = points[i - 1], &b = points[i];
-    out.push_back(rate_formula() == RateFormula::measured_h
+    out.push_back(formula == RateFormula::measured_h
                       ? convergence_rate(a.e, b.e, a.h, b.h)
                       : level_halving_rate(a.e, b.e, a.level, b.level));
   }
@@ -279,20 +247,118 @@ std::vector<ErrorRow> error_rows_in(const std::string& dir) {
 
 }  // namespace
 
-Data::Data(const std::string& dir, const std::string& overlay) : dir_(dir) {
+namespace {
+
+// The (experiment, family, method, rings, noise, vertex set, quantity, norm) series of the rows,
+// each sorted by level (a later row of a level replaces an earlier one).
+std::vector<Series> build_series(const std::vector<ErrorRow>& rows) {
+  std::vector<Series> series;
+  using Key = std::tuple<std::string, std::string, std::string, std::string, std::string,
+                         std::string, std::string, std::string>;
+  std::map<Key, size_t> index;
+  for (const auto& r : rows) {
+    const Key k{r.experiment, r.family,     upper(r.method), r.rings,
+                r.noise,      r.vertex_set, r.quantity,      r.norm};
+    auto [it, inserted] = index.try_emplace(k, series.size());
+    if (inserted)
+      series.push_back({r.experiment,
+                        r.family,
+                        r.method,
+                        r.rings,
+                        r.noise,
+                        r.vertex_set,
+                        r.quantity,
+                        r.norm,
+                        {}});
+    auto& pts = series[it->second].points;
+    pts.erase(
+        std::remove_if(pts.begin(), pts.end(), [&](const Point& p) { return p.level == r.level; }),
+        pts.end());
+    pts.push_back({r.level, r.h, r.error});
+  }
+  for (auto& s : series)
+    std::sort(s.points.begin(), s.points.end(),
+              [](const Point& a, const Point& b) { return a.level < b.level; });
+  return series;
+}
+
+// The single-threaded timings of table5_timing.csv `t` on its timing family (set in `family`).
+void build_timing(const CsvTable& t, std::map<std::string, TimingSeries>& timing,
+                  std::string& family) {
+  const size_t cm = t.col("mesh"), cl = t.col("level"), cv = t.col("verts"), ct = t.col("tris"),
+               cme = t.col("method"), cth = t.col("threads"), cs = t.col("seconds");
+  family = "torus-structured";
+  for (size_t i = 0; i < t.rows.size(); ++i)
+    if (t.text(i, cm) == "torus-unstructured") family = "torus-unstructured";
+  for (size_t i = 0; i < t.rows.size(); ++i) {
+    if (t.text(i, cm) != family || t.number(i, cth) != 1.0) continue;
+    auto& e = timing[upper(t.text(i, cme))][static_cast<int>(t.number(i, cl))];
+    const double s = t.number(i, cs);
+    if (s < e.seconds) {
+      e.seconds = s;
+      e.verts = t.number(i, cv);
+      e.tris = t.number(i, ct);
+    }
+  }
+}
+
+}  // namespace
+
+Data::Data(const std::string& dir, const std::string& overlay) : csv_(read(dir, overlay)) {}
+
+std::shared_ptr<const Data::Csv> Data::read(const std::string& dir, const std::string& overlay) {
+  auto csv = std::make_shared<Csv>();
+  csv->dir = dir;
   std::error_code ec;
-  if (!fs::is_directory(dir, ec)) return;
-  rows_ = error_rows_in(dir);
+  if (!fs::is_directory(dir, ec)) return csv;
+  csv->rows = error_rows_in(dir);
   const std::vector<ErrorRow> replaced = error_rows_in(overlay);
   std::set<std::pair<std::string, std::string>> runs;  // (experiment, family)
   for (const ErrorRow& r : replaced) runs.insert({r.experiment, r.family});
-  std::erase_if(rows_, [&](const ErrorRow& r) { return runs.count({r.experiment, r.family}) > 0; });
-  rows_.insert(rows_.end(), replaced.begin(), replaced.end());
-  build_series();
-  table2 = read_table(dir + "/table2.csv");
-  table4 = read_table(dir + "/table4.csv");
-  table5 = read_table(dir + "/table5_timing.csv");
-  if (table5) build_timing();
+  std::erase_if(csv->rows, [&](const ErrorRow& r) {
+    return runs.count({r.experiment, r.family}) > 0;
+  });
+  csv->rows.insert(csv->rows.end(), replaced.begin(), replaced.end());
+  csv->series = build_series(csv->rows);
+  csv->table2 = read_table(dir + "/table2.csv");
+  csv->table4 = read_table(dir + "/table4.csv");
+  csv->table5 = read_table(dir + "/table5_timing.csv");
+  if (csv->table5) build_timing(*csv->table5, csv->timing, csv->timing_family);
+  return csv;
+}
+
+Data Data::with_rate_formula(RateFormula formula) const {
+  Data out = *this;
+  out.rate_formula_ = formula;
+  return out;
+}
+
+Data Data::with_substitute(const std::string& name, const std::string& by) const {
+  Data out = *this;
+  if (by.empty() || by == name)
+    out.substitutes_.erase(name);
+  else
+    out.substitutes_[name] = by;
+  return out;
+}
+
+Data Data::in_folder(const std::string& dir) const {
+  Data out = *this;
+  out.csv_ = read(dir, "");
+  return out;
+}
+
+const std::string& Data::family(const std::string& name) const {
+  const auto it = substitutes_.find(name);
+  return it == substitutes_.end() ? name : it->second;
+}
+
+std::vector<std::string> Data::tori() const {
+  return {family(kWell), kPoor};
+}
+
+std::vector<std::string> Data::bumps() const {
+  return {family(kBumpIrr), kBump48};
 }
 
 const Series* Data::find(Check& chk, const Query& q) const {
@@ -303,12 +369,12 @@ const Series* Data::find(Check& chk, const Query& q) const {
   const std::string what = q.method + " " + q.quantity + " " + q.norm + " on " + q.family +
                            " (noise " + q.noise + ", vertex set " + vset + ")";
   std::vector<const Series*> cand;
-  for (const auto& s : series_)
+  for (const auto& s : csv_->series)
     if (s.family == q.family && upper(s.method) == upper(q.method) && s.quantity == q.quantity &&
         s.norm == q.norm && s.noise == q.noise && s.vertex_set == vset)
       cand.push_back(&s);
   if (cand.empty()) {
-    for (const auto& s : series_)
+    for (const auto& s : csv_->series)
       if (s.family == q.family && upper(s.method) == upper(q.method) && s.quantity == q.quantity &&
           s.norm == q.norm && s.noise == q.noise) {
         chk.missing("setup differs: no rows for " + what + "; experiment " + s.experiment +
@@ -346,13 +412,13 @@ const Series* Data::find(Check& chk, const Query& q) const {
 }
 
 const TimingSeries* Data::timing(Check& chk, const std::string& method) const {
-  if (!table5) {
+  if (!csv_->table5) {
     chk.missing("table5_timing.csv not present: run make bench");
     return nullptr;
   }
-  auto it = timing_.find(upper(method));
-  if (it == timing_.end()) {
-    chk.missing("table5_timing.csv has no single-threaded " + timing_family_ + " rows for " +
+  auto it = csv_->timing.find(upper(method));
+  if (it == csv_->timing.end()) {
+    chk.missing("table5_timing.csv has no single-threaded " + timing_family() + " rows for " +
                 method);
     return nullptr;
   }
@@ -360,56 +426,8 @@ const TimingSeries* Data::timing(Check& chk, const std::string& method) const {
 }
 std::vector<std::string> Data::timing_methods() const {
   std::vector<std::string> out;
-  for (const auto& [m, s] : timing_) out.push_back(m);
+  for (const auto& [m, s] : csv_->timing) out.push_back(m);
   return out;
-}
-
-void Data::build_series() {
-  using Key = std::tuple<std::string, std::string, std::string, std::string, std::string,
-                         std::string, std::string, std::string>;
-  std::map<Key, size_t> index;
-  for (const auto& r : rows_) {
-    const Key k{r.experiment, r.family,     upper(r.method), r.rings,
-                r.noise,      r.vertex_set, r.quantity,      r.norm};
-    auto [it, inserted] = index.try_emplace(k, series_.size());
-    if (inserted)
-      series_.push_back({r.experiment,
-                         r.family,
-                         r.method,
-                         r.rings,
-                         r.noise,
-                         r.vertex_set,
-                         r.quantity,
-                         r.norm,
-                         {}});
-    auto& pts = series_[it->second].points;
-    pts.erase(
-        std::remove_if(pts.begin(), pts.end(), [&](const Point& p) { return p.level == r.level; }),
-        pts.end());
-    pts.push_back({r.level, r.h, r.error});
-  }
-  for (auto& s : series_)
-    std::sort(s.points.begin(), s.points.end(),
-              [](const Point& a, const Point& b) { return a.level < b.level; });
-}
-
-void Data::build_timing() {
-  const CsvTable& t = *table5;
-  const size_t cm = t.col("mesh"), cl = t.col("level"), cv = t.col("verts"), ct = t.col("tris"),
-               cme = t.col("method"), cth = t.col("threads"), cs = t.col("seconds");
-  timing_family_ = "torus-structured";
-  for (size_t i = 0; i < t.rows.size(); ++i)
-    if (t.text(i, cm) == "torus-unstructured") timing_family_ = "torus-unstructured";
-  for (size_t i = 0; i < t.rows.size(); ++i) {
-    if (t.text(i, cm) != timing_family_ || t.number(i, cth) != 1.0) continue;
-    auto& e = timing_[upper(t.text(i, cme))][static_cast<int>(t.number(i, cl))];
-    const double s = t.number(i, cs);
-    if (s < e.seconds) {
-      e.seconds = s;
-      e.verts = t.number(i, cv);
-      e.tris = t.number(i, ct);
-    }
-  }
 }
 
 // ---- comparison helpers -----------------------------------------------------------------------
@@ -546,22 +564,23 @@ void require_finest(Check& c, const std::vector<LevelValue>& v, const Band& band
                 f2(v.back().value) + " (" + band.text() + "); all " + levels_text(v));
 }
 
-std::string rate_line(const Series& s, const std::string& cond) {
-  const bool h = rate_formula() == RateFormula::measured_h;
-  return s.label() + ": " + (h ? "rate " : "level-halving rate ") + f2(s.rate()) + " " + cond +
+std::string rate_line(const Data& d, const Series& s, const std::string& cond) {
+  const bool h = d.rate_formula() == RateFormula::measured_h;
+  return s.label() + ": " + (h ? "rate " : "level-halving rate ") + f2(d.rate(s)) + " " + cond +
          (h ? " (level-halving rate " + f2(s.rate_halving()) + ")"
             : " (measured-h rate " + f2(s.rate_h()) + ")") +
          "; " + s.detail();
 }
 
-void require_rate(Check& c, const Series& s, const Band& band, const std::string& prefix) {
-  c.require(band.holds(s.rate()), prefix + rate_line(s, band.text()));
+void require_rate(const Data& d, Check& c, const Series& s, const Band& band,
+                  const std::string& prefix) {
+  c.require(band.holds(d.rate(s)), prefix + rate_line(d, s, band.text()));
 }
 
 // "failed to converge" (docs/claims.md, conventions): rate <= 0.5, or e_last >= 0.7 e_first, or
 // non-monotone with no net decrease; a non-finite last error also counts.
-std::vector<std::string> failure_reasons(const Series& s) {
-  const double e1 = s.first().e, en = s.last().e, r = s.rate();
+std::vector<std::string> failure_reasons(const Data& d, const Series& s) {
+  const double e1 = s.first().e, en = s.last().e, r = d.rate(s);
   std::vector<std::string> why;
   if (!std::isfinite(en)) why.push_back("non-finite error at the finest level");
   if (r <= 0.5) why.push_back("rate " + f2(r) + " <= 0.5");
@@ -573,13 +592,13 @@ std::vector<std::string> failure_reasons(const Series& s) {
   return why;
 }
 
-void require_failure(Check& c, const Series& s, const std::string& prefix) {
-  const auto why = failure_reasons(s);
+void require_failure(const Data& d, Check& c, const Series& s, const std::string& prefix) {
+  const auto why = failure_reasons(d, s);
   if (!why.empty()) {
     c.require(true,
               prefix + s.label() + " fails to converge (" + join(why, ", ") + "); " + s.detail());
   } else {
-    c.require(false, prefix + s.label() + " converges (rate " + f2(s.rate()) +
+    c.require(false, prefix + s.label() + " converges (rate " + f2(d.rate(s)) +
                          " > 0.5, e_last/e_first " + f2(s.last().e / s.first().e) + " < 0.7); " +
                          s.detail());
   }

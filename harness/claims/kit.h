@@ -14,6 +14,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -56,12 +57,10 @@ class Check {
 
 // ---- error series -----------------------------------------------------------------------------
 
-/// The rate formula Series::rate() uses: ours (measured mean edge length) or the paper's
-/// level-halving rate (1/(L-1)) log2(e_1/e_L). evaluate_claims evaluates every claim with each and
-/// flags a claim whose verdict differs.
+/// A rate formula: ours (measured mean edge length) or the paper's level-halving rate
+/// (1/(L-1)) log2(e_1/e_L). evaluate_claims evaluates every claim with each (Data::rate_formula)
+/// and flags a claim whose verdict differs.
 enum class RateFormula { measured_h, level_halving };
-/// The formula in force in this thread (measured_h unless evaluate_claims switched it).
-RateFormula& rate_formula();
 
 struct Point {
   int level = 0;
@@ -76,14 +75,14 @@ struct Series {
 
   const Point& first() const { return points.front(); }
   const Point& last() const { return points.back(); }
-  /// The rate of rate_formula() over the first and last level present.
-  double rate() const;
+  /// The rate of `formula` over the first and last level present.
+  double rate(RateFormula formula) const;
   /// log(e_first/e_last)/log(h_first/h_last), measured mean edge length (as compute_rates).
   double rate_h() const;
   /// log2(e_first/e_last)/(level_last - level_first), the paper's formula.
   double rate_halving() const;
-  /// The rate of rate_formula() between each pair of consecutive levels present, finest last.
-  std::vector<double> pair_rates() const;
+  /// The rate of `formula` between each pair of consecutive levels present, finest last.
+  std::vector<double> pair_rates(RateFormula formula) const;
   const Point* at(int level) const;
   std::string label() const { return family + " " + method + " " + quantity + " " + norm; }
   /// "errors at levels 1-4: a, b, c, d; level-to-level rates r12, r23, r34"
@@ -120,13 +119,39 @@ using TimingSeries = std::map<int, TimingEntry>;  // level -> entry
 
 // ---- all inputs -------------------------------------------------------------------------------
 
+/// The inputs every check receives: the CSVs of a results folder, read once and shared by the
+/// copies, and the context the checks read them under, set where the Data is built
+/// (evaluate_claims: each rate formula, a reading's family swap, the mesh-shape diagnostic of a
+/// miss). A copy with another context (with_rate_formula, with_substitute) shares the CSVs.
 class Data {
  public:
   /// The CSVs of `dir`; with `overlay`, an (experiment, mesh family) that has rows in the overlay
-  /// folder's CSVs takes those instead of dir's (a reading's run, readings.h).
+  /// folder's CSVs takes those instead of dir's (a reading's run, readings.h). Rates over the
+  /// measured h, no family substituted.
   explicit Data(const std::string& dir, const std::string& overlay = "");
 
-  const std::vector<ErrorRow>& rows() const { return rows_; }
+  /// The same CSVs with every rate of `formula`.
+  Data with_rate_formula(RateFormula formula) const;
+  /// The same CSVs with `by`'s rows read where a check names `family` (none: `by` empty or
+  /// `family` itself).
+  Data with_substitute(const std::string& family, const std::string& by) const;
+  /// The CSVs of another folder (a subfolder of results: deep/, readings/) under this context.
+  Data in_folder(const std::string& dir) const;
+
+  RateFormula rate_formula() const { return rate_formula_; }
+  /// The rate of s under rate_formula() (Series::rate).
+  double rate(const Series& s) const { return s.rate(rate_formula_); }
+  std::vector<double> pair_rates(const Series& s) const { return s.pair_rates(rate_formula_); }
+  /// The family the checks read for `family` (kWell, kBumpIrr): itself, unless substituted (a
+  /// reading's swap, readings.h; the mesh-shape diagnostic of a miss, the "Why" line of
+  /// CLAIMS.md).
+  const std::string& family(const std::string& family) const;
+  /// {family(kWell), kPoor}.
+  std::vector<std::string> tori() const;
+  /// {family(kBumpIrr), kBump48}.
+  std::vector<std::string> bumps() const;
+
+  const std::vector<ErrorRow>& rows() const { return csv_->rows; }
   /// The series matching q, or nullptr after recording why in chk.
   const Series* find(Check& chk, const Query& q) const;
   /// Single-threaded timings of a method label on the timing family (timing_family()), or nullptr
@@ -136,24 +161,31 @@ class Data {
   std::vector<std::string> timing_methods() const;
   /// The mesh family of the timings used: torus-unstructured (the paper's well-shaped meshes),
   /// or torus-structured if the timing table has no torus-unstructured rows (an older make bench).
-  const std::string& timing_family() const { return timing_family_; }
+  const std::string& timing_family() const { return csv_->timing_family; }
 
-  std::optional<CsvTable> table2, table4, table5;
+  const std::optional<CsvTable>& table2() const { return csv_->table2; }
+  const std::optional<CsvTable>& table4() const { return csv_->table4; }
+  const std::optional<CsvTable>& table5() const { return csv_->table5; }
 
   /// The results folder read (the base, not the overlay): where the diagnostics that are not
   /// error CSVs of this folder are looked for (results/deep/, results/readings/, the firing CSV
   /// of the safeguard).
-  const std::string& dir() const { return dir_; }
+  const std::string& dir() const { return csv_->dir; }
 
  private:
-  void build_series();
-  void build_timing();
+  struct Csv {
+    std::vector<ErrorRow> rows;
+    std::vector<Series> series;
+    std::map<std::string, TimingSeries> timing;
+    std::string timing_family;
+    std::optional<CsvTable> table2, table4, table5;
+    std::string dir;
+  };
+  static std::shared_ptr<const Csv> read(const std::string& dir, const std::string& overlay);
 
-  std::vector<ErrorRow> rows_;
-  std::vector<Series> series_;
-  std::map<std::string, TimingSeries> timing_;
-  std::string timing_family_;
-  std::string dir_;
+  std::shared_ptr<const Csv> csv_;
+  RateFormula rate_formula_ = RateFormula::measured_h;
+  std::map<std::string, std::string> substitutes_;  ///< family named -> family read
 };
 
 // ---- per-level values and the check kinds -----------------------------------------------------
@@ -176,15 +208,16 @@ std::vector<LevelValue> spreads(const std::vector<const Series*>& ss);
 std::vector<std::string> methods_of(const std::vector<const Series*>& ss);
 
 /// "<label>: rate <r> <cond> (level-halving rate <r'>); <detail>", the judged rate first (that of
-/// rate_formula()) and the other formula's in brackets.
-std::string rate_line(const Series& s, const std::string& cond);
+/// d.rate_formula()) and the other formula's in brackets.
+std::string rate_line(const Data& d, const Series& s, const std::string& cond);
 
 /// The series' rate in the band: "[ok|FAIL] <prefix><label>: rate r <band>; errors ...".
-void require_rate(Check& c, const Series& s, const Band& band, const std::string& prefix = "");
+void require_rate(const Data& d, Check& c, const Series& s, const Band& band,
+                  const std::string& prefix = "");
 
-/// "failed to converge": the reasons; empty = converges.
-std::vector<std::string> failure_reasons(const Series& s);
-void require_failure(Check& c, const Series& s, const std::string& prefix = "");
+/// "failed to converge" (rates of d.rate_formula()): the reasons; empty = converges.
+std::vector<std::string> failure_reasons(const Data& d, const Series& s);
+void require_failure(const Data& d, Check& c, const Series& s, const std::string& prefix = "");
 
 /// Every level value in the band.
 void require_every_level(Check& c, const std::vector<LevelValue>& v, const Band& band,
@@ -251,16 +284,7 @@ inline const std::string kPoor = "torus-iso-projected";
 inline const std::string kNoisyTorus = "torus-iso";
 inline const std::string kBumpIrr = "bump-irregular";
 inline const std::string kBump48 = "bump-48";
-/// The family the checks read for `family` (kWell, kBumpIrr): itself, unless evaluate_claims
-/// substitutes another family under a reading (readings.h) or for the mesh-shape diagnostic of a
-/// miss (the "Why" line of CLAIMS.md).
-const std::string& family(const std::string& family);
-/// Sets (or, with an empty `substitute`, clears) the substitution of `family` on this thread.
-void set_substitute(const std::string& family, const std::string& substitute);
-/// {family(kWell), kPoor}.
-std::vector<std::string> tori();
-/// {family(kBumpIrr), kBump48}.
-std::vector<std::string> bumps();
+// Data::family, tori() and bumps() give the families a check reads for these.
 inline const std::vector<std::string> kDeg2Others = {"LHF-2", "LOP-2", "LSCM-2"};
 
 }  // namespace curvbench::claims

@@ -28,12 +28,12 @@ int order_sign(double a, double b) {
 
 // B3: K and d1 rates in a band, and the same ordering of the methods as H at the finest level.
 void claim_b3(const Data& d, Check& c, const Band& rate) {
-  for (const auto& fam : tori()) {
+  for (const auto& fam : d.tori()) {
     std::map<std::string, std::vector<const Series*>> by_q;  // quantity -> LHF, LOP, LSCM
     for (const char* q : {"H", "K", "d1"})
       for (const auto& m : kDeg2Others) {
         const Series* s = torus2(d, c, fam, m, q, "L2");
-        if (s && std::string(q) != "H") require_rate(c, *s, rate);
+        if (s && std::string(q) != "H") require_rate(d, c, *s, rate);
         by_q[q].push_back(s);
       }
     // Ordering of the methods by L2 error at the finest common level, compared with H's.
@@ -92,11 +92,11 @@ void claim_b3(const Data& d, Check& c, const Band& rate) {
 // C4's check on the LSCM-4 rows of fig06-07 named `lscm` (LSCM-4, or LSCM-CG-4 for the Why line).
 void claim_c4(const Data& d, Check& c, const std::string& lscm, const Band& normal_rate,
               const Band& h_rate) {
-  if (const Series* s = torus34(d, c, family(kWell), lscm, "normal"))
-    require_rate(c, *s, normal_rate);
-  if (const Series* s = torus34(d, c, family(kWell), lscm, "H")) require_rate(c, *s, h_rate);
+  if (const Series* s = torus34(d, c, d.family(kWell), lscm, "normal"))
+    require_rate(d, c, *s, normal_rate);
+  if (const Series* s = torus34(d, c, d.family(kWell), lscm, "H")) require_rate(d, c, *s, h_rate);
   for (const char* q : {"H", "K"})
-    if (const Series* s = torus34(d, c, kPoor, lscm, q)) require_failure(c, *s);
+    if (const Series* s = torus34(d, c, kPoor, lscm, q)) require_failure(d, c, *s);
 }
 
 }  // namespace
@@ -113,10 +113,11 @@ std::vector<ClaimEntry> section5_1_claims() {
        "rate " + b1.text() + " (normal L2 and Linf; " + kWell + " and " + kPoor + "; rings 1.5)",
        {{"rate", b1}},
        [=](const Data& d, Check& c) {
-         for (const auto& fam : tori())
+         for (const auto& fam : d.tori())
            for (const auto& m : kDeg2Others)
              for (const char* norm : {"L2", "Linf"})
-               if (const Series* s = torus2(d, c, fam, m, "normal", norm)) require_rate(c, *s, b1);
+               if (const Series* s = torus2(d, c, fam, m, "normal", norm))
+                 require_rate(d, c, *s, b1);
        },
        {}});
 
@@ -129,10 +130,11 @@ std::vector<ClaimEntry> section5_1_claims() {
        "H Linf rate " + b2_linf.text() + "; H L2 rate " + b2_l2.text() + "; both torus mesh types",
        {{"H_Linf_rate", b2_linf}, {"H_L2_rate", b2_l2}},
        [=](const Data& d, Check& c) {
-         for (const auto& fam : tori())
+         for (const auto& fam : d.tori())
            for (const auto& m : kDeg2Others) {
-             if (const Series* s = torus2(d, c, fam, m, "H", "Linf")) require_rate(c, *s, b2_linf);
-             if (const Series* s = torus2(d, c, fam, m, "H", "L2")) require_rate(c, *s, b2_l2);
+             if (const Series* s = torus2(d, c, fam, m, "H", "Linf"))
+               require_rate(d, c, *s, b2_linf);
+             if (const Series* s = torus2(d, c, fam, m, "H", "L2")) require_rate(d, c, *s, b2_l2);
            }
        },
        {}});
@@ -160,24 +162,24 @@ std::vector<ClaimEntry> section5_1_claims() {
        {{"L2_ratio", b4_l2}, {"Linf_ratio", b4_linf}},
        [=](const Data& d, Check& c) {
          for (const char* q : {"normal", "H"}) {
-           const Series* xu = torus2(d, c, family(kWell), "Xu-2", q, "L2");
-           const Series* lhf = torus2(d, c, family(kWell), "LHF-2", q, "L2");
+           const Series* xu = torus2(d, c, d.family(kWell), "Xu-2", q, "L2");
+           const Series* lhf = torus2(d, c, d.family(kWell), "LHF-2", q, "L2");
            if (xu && lhf)
              require_most_levels(
                  c, error_ratios(*xu, *lhf), b4_l2,
-                 family(kWell) + " " + q + " L2 " + xu->method + " / " + lhf->method);
+                 d.family(kWell) + " " + q + " L2 " + xu->method + " / " + lhf->method);
          }
          for (const char* q : {"normal", "H"}) {
-           const Series* xu = torus2(d, c, family(kWell), "Xu-2", q, "Linf");
-           const Series* lhf = torus2(d, c, family(kWell), "LHF-2", q, "Linf");
+           const Series* xu = torus2(d, c, d.family(kWell), "Xu-2", q, "Linf");
+           const Series* lhf = torus2(d, c, d.family(kWell), "LHF-2", q, "Linf");
            if (!xu || !lhf) continue;
            const auto r = error_ratios(*xu, *lhf);
            if (r.empty()) {
-             c.missing(family(kWell) + " " + q + " Linf: no level in common");
+             c.missing(d.family(kWell) + " " + q + " Linf: no level in common");
              continue;
            }
            require_finest(c, r, b4_linf,
-                          family(kWell) + " " + q + " Linf " + xu->method + " / " + lhf->method);
+                          d.family(kWell) + " " + q + " Linf " + xu->method + " / " + lhf->method);
          }
        },
        {},
@@ -232,12 +234,12 @@ std::vector<ClaimEntry> section5_1_claims() {
                    for (const auto& [q, norm] : measures) {
                      const Series* xu = torus2(d, c, kPoor, "Xu-2", q, norm);
                      if (!xu) continue;
-                     require_failure(c, *xu);
+                     require_failure(d, c, *xu);
                      if (const Series* lhf = torus2(d, c, kPoor, "LHF-2", q, norm))
                        c.info(std::string(q) + " " + norm + ": rate(" + lhf->method + ") - rate(" +
-                              xu->method + ") = " + f2(lhf->rate()) + " - " + f2(xu->rate()) +
-                              " = " + f2(lhf->rate() - xu->rate()) + " (the weaker minimum asks " +
-                              b5_weaker.text() + ")");
+                              xu->method + ") = " + f2(d.rate(*lhf)) + " - " + f2(d.rate(*xu)) +
+                              " = " + f2(d.rate(*lhf) - d.rate(*xu)) +
+                              " (the weaker minimum asks " + b5_weaker.text() + ")");
                    }
                  },
                  {}});
@@ -251,7 +253,7 @@ std::vector<ClaimEntry> section5_1_claims() {
            " of LHF-2 at every level (normals and H, L2), both torus mesh types",
        {{"ratio", b6}},
        [=](const Data& d, Check& c) {
-         for (const auto& fam : tori())
+         for (const auto& fam : d.tori())
            for (const char* q : {"normal", "H"}) {
              const Series* lhf = torus2(d, c, fam, "LHF-2", q, "L2");
              for (const char* m : {"LOP-2", "LSCM-2"}) {
@@ -276,7 +278,7 @@ std::vector<ClaimEntry> section5_1_claims() {
        [=](const Data& d, Check& c) {
          int holds = 0, total = 0;
          bool ratio_ok = true;
-         for (const auto& fam : tori())
+         for (const auto& fam : d.tori())
            for (const char* q : {"normal", "H", "K", "d1"}) {
              const Series* lscm = torus34(d, c, fam, "LSCM-3", q);
              const Series* lhf = torus34(d, c, fam, "LHF-3", q);
@@ -303,7 +305,7 @@ std::vector<ClaimEntry> section5_1_claims() {
        [=](const Data& d) -> std::vector<WhyFinding> {
          std::vector<double> ratios;
          int better = 0;
-         for (const auto& fam : tori())
+         for (const auto& fam : d.tori())
            for (const char* q : {"normal", "H", "K", "d1"}) {
              Check scratch;
              const Series* lscm = torus34(d, scratch, fam, "LSCM-3", q);
@@ -336,7 +338,7 @@ std::vector<ClaimEntry> section5_1_claims() {
                      " at the finest level, for normals, H and K (L2), on both torus mesh types",
                  {{"ratio", c2}},
                  [=](const Data& d, Check& c) {
-                   for (const auto& fam : tori())
+                   for (const auto& fam : d.tori())
                      for (const char* q : {"normal", "H", "K"}) {
                        const Series* lscm = torus34(d, c, fam, "LSCM-4", q);
                        const Series* lhf = torus34(d, c, fam, "LHF-4", q);
@@ -362,24 +364,24 @@ std::vector<ClaimEntry> section5_1_claims() {
            c3_curvature.text(-1) + " (theory 3); both torus mesh types",
        {{"normal_rate", c3_normal}, {"curvature_rate", c3_curvature}},
        [=](const Data& d, Check& c) {
-         for (const auto& fam : tori())
+         for (const auto& fam : d.tori())
            for (const char* q : {"normal", "H", "K"})
              if (const Series* s = torus34(d, c, fam, "LHF-4", q))
-               require_rate(c, *s, std::string(q) == "normal" ? c3_normal : c3_curvature);
+               require_rate(d, c, *s, std::string(q) == "normal" ? c3_normal : c3_curvature);
        },
        {},
        // Localised: which quantities gain the order.
        [=](const Data& d) -> std::vector<WhyFinding> {
          std::vector<std::string> gain, theory;
-         for (const auto& fam : tori())
+         for (const auto& fam : d.tori())
            for (const char* q : {"normal", "H", "K"}) {
              Check scratch;
              const Series* s = torus34(d, scratch, fam, "LHF-4", q);
              if (!s) continue;
              const bool normal = std::string(q) == "normal";
              const Band& b = normal ? c3_normal : c3_curvature;
-             (b.holds(s->rate()) ? gain : theory)
-                 .push_back(fam + " " + q + " " + f2(s->rate()) + " (theory " +
+             (b.holds(d.rate(*s)) ? gain : theory)
+                 .push_back(fam + " " + q + " " + f2(d.rate(*s)) + " (theory " +
                             (normal ? "4" : "3") + ")");
            }
          if (gain.empty() || theory.empty()) return {};
@@ -407,12 +409,12 @@ std::vector<ClaimEntry> section5_1_claims() {
          // Not part of the band: the same map solved by OpenNL conjugate gradients (tolerance
          // 1e-6), CGAL's LSCM solver without Eigen and most likely the paper's. Reported when it
          // was run.
-         for (const auto& fam : tori())
+         for (const auto& fam : d.tori())
            for (const char* q : {"normal", "H", "K"}) {
              Check scratch;  // a missing series is not a missing piece of this claim
              if (const Series* s = torus34(d, scratch, fam, "LSCM-CG-4", q)) {
-               const auto why = failure_reasons(*s);
-               c.info(rate_line(*s, "(conjugate-gradient LSCM map, not judged)") +
+               const auto why = failure_reasons(d, *s);
+               c.info(rate_line(d, *s, "(conjugate-gradient LSCM map, not judged)") +
                       (why.empty() ? "; converges" : "; fails to converge"));
              }
            }
@@ -449,23 +451,23 @@ std::vector<ClaimEntry> section5_1_claims() {
            c5_gap.text() + ", for normals, H and K (L2), both torus mesh types",
        {{"cubic_rate_difference", c5_diff}, {"quartic_rate_gap", c5_gap}},
        [=](const Data& d, Check& c) {
-         for (const auto& fam : tori())
+         for (const auto& fam : d.tori())
            for (const char* q : {"normal", "H", "K"}) {
              const Series* lhf3 = torus34(d, c, fam, "LHF-3", q);
              const Series* lscm3 = torus34(d, c, fam, "LSCM-3", q);
              if (lhf3 && lscm3) {
-               const double diff = lscm3->rate() - lhf3->rate();
+               const double diff = d.rate(*lscm3) - d.rate(*lhf3);
                c.require(c5_diff.holds(std::abs(diff)),
-                         fam + " " + q + " L2: rate(LSCM-3) - rate(LHF-3) = " + f2(lscm3->rate()) +
-                             " - " + f2(lhf3->rate()) + " = " + f2(diff) + " (|.| " +
+                         fam + " " + q + " L2: rate(LSCM-3) - rate(LHF-3) = " + f2(d.rate(*lscm3)) +
+                             " - " + f2(d.rate(*lhf3)) + " = " + f2(diff) + " (|.| " +
                              c5_diff.text() + ")");
              }
              const Series* lhf4 = torus34(d, c, fam, "LHF-4", q);
              const Series* lscm4 = torus34(d, c, fam, "LSCM-4", q);
              if (lhf4 && lscm4) {
-               const double gap = lhf4->rate() - lscm4->rate();
+               const double gap = d.rate(*lhf4) - d.rate(*lscm4);
                c.require(c5_gap.holds(gap), fam + " " + q + " L2: rate(LHF-4) - rate(LSCM-4) = " +
-                                                f2(lhf4->rate()) + " - " + f2(lscm4->rate()) +
+                                                f2(d.rate(*lhf4)) + " - " + f2(d.rate(*lscm4)) +
                                                 " = " + f2(gap) + " (" + c5_gap.text() + ")");
              }
            }

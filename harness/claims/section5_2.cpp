@@ -69,7 +69,7 @@ std::string ratio_list(const Series& a, const Series& b, double& max_ratio) {
 std::vector<WhyFinding> why_d1(const Data& d, const Band& band) {
   std::vector<std::string> parts;
   bool interior_outside = false, ring_inside = true;
-  for (const auto& fam : bumps()) {
+  for (const auto& fam : d.bumps()) {
     Check scratch;
     const Series* lhf = interior(d, scratch, fam, "LHF-2", "K");
     const Series* lop = interior(d, scratch, fam, "LOP-2", "K");
@@ -107,16 +107,16 @@ std::vector<WhyFinding> why_d1(const Data& d, const Band& band) {
 // boundary lowers each bump's rate, and where the interior itself sets it.
 std::vector<WhyFinding> why_d2(const Data& d, const std::vector<std::string>& tori, double gap) {
   std::vector<std::string> parts;
-  for (const auto& fam : bumps()) {
+  for (const auto& fam : d.bumps()) {
     Check scratch;
     const Series* in = interior(d, scratch, fam, "LHF-2", "H");
     const Series* ring = boundary_ring(d, scratch, fam, "LHF-2", "H");
     const Series* all = bump(d, scratch, fam, "LHF-2", "H", "L2");
     if (!in || !ring || !all) return {};
-    const double loss = in->rate() - all->rate();
+    const double loss = d.rate(*in) - d.rate(*all);
     parts.push_back(
-        fam + ": interior " + f2(in->rate()) + ", boundary ring " + f2(ring->rate()) +
-        ", all vertices " + f2(all->rate()) +
+        fam + ": interior " + f2(d.rate(*in)) + ", boundary ring " + f2(d.rate(*ring)) +
+        ", all vertices " + f2(d.rate(*all)) +
         (loss >= gap ? " (the boundary lowers the rate by " + f2(loss) + ", as the paper says)"
                      : " (the interior converges no faster than the boundary ring: its irregular "
                        "stencils, not the boundary, set the rate)"));
@@ -125,7 +125,7 @@ std::vector<WhyFinding> why_d2(const Data& d, const std::vector<std::string>& to
   for (const auto& tor : tori) {
     Check scratch;
     if (const Series* t = torus2(d, scratch, tor, "LHF-2", "H", "L2"))
-      torus_rates.push_back(tor + " " + f2(t->rate()));
+      torus_rates.push_back(tor + " " + f2(d.rate(*t)));
   }
   return finding(CauseKind::localised,
                  "the rates split by vertex set (diagnostic diag-d-bump-interior, "
@@ -149,7 +149,7 @@ std::optional<Data> folder_data(const Data& d, const std::string& sub) {
   std::error_code ec;
   const std::string path = d.dir() + "/" + sub;
   if (d.dir().empty() || !std::filesystem::is_directory(path, ec)) return std::nullopt;
-  return Data(path);
+  return d.in_folder(path);
 }
 
 // The series restricted to levels [a, b].
@@ -176,7 +176,7 @@ std::string safeguard_rates(const Data& d, const std::vector<std::string>& metho
     for (const std::string& m : methods)
       for (const char* q : {"H", "normal"}) {
         const Series* s = src ? series(*src, m, q) : nullptr;
-        rates.push_back(m + " " + q + " " + (s ? f2(s->rate()) : std::string("n/a")));
+        rates.push_back(m + " " + q + " " + (s ? f2(d.rate(*s)) : std::string("n/a")));
       }
     parts.push_back(
         std::string(choice) + (adopted ? " (adopted)" : "") + ": " +
@@ -254,7 +254,8 @@ Fires safeguard_fires_on_bump48(const Data& d, const std::string& method) {
 
 // The rates of `series` over each run of levels where the stencils are the same, or "".
 template <class SeriesOf>
-std::string same_stencil_rates(const Fires& fires, const std::string& method, SeriesOf series) {
+std::string same_stencil_rates(const Data& d, const Fires& fires, const std::string& method,
+                               SeriesOf series) {
   std::vector<std::string> parts;
   for (const auto& [a, b] : fires.same_runs)
     for (const char* q : {"H", "normal"})
@@ -262,7 +263,7 @@ std::string same_stencil_rates(const Fires& fires, const std::string& method, Se
         const Series part = levels_of(*s, a, b);
         if (part.points.size() >= 2)
           parts.push_back(q + (" over levels " + std::to_string(a) + "-" + std::to_string(b)) +
-                          " " + f2(part.rate()));
+                          " " + f2(d.rate(part)));
       }
   return join(parts, ", ");
 }
@@ -276,7 +277,7 @@ std::optional<double> deep_rate(const std::optional<Data>& deep, const std::stri
   const Series* s =
       deep->find(scratch, query(experiment, family, method, q, "L2", "none", 0.0, vertex_set));
   if (!s || s->experiment != experiment || !s->at(5) || !s->at(6)) return std::nullopt;
-  return levels_of(*s, 5, 6).rate();
+  return deep->rate(levels_of(*s, 5, 6));
 }
 
 // "where the deep levels would come from" when results/deep/ lacks them.
@@ -299,11 +300,11 @@ struct D5Finding {
 // rate(LHF-4) - rate(<lscm>) for normals and H (L2) on each bump, from `series(family, method, q)`;
 // holds when normals or H reach the band on every bump. Empty text when a series is missing.
 template <class SeriesOf>
-D5Finding d5_gaps(const Band& band, const std::string& lscm, SeriesOf series,
+D5Finding d5_gaps(const Data& d, const Band& band, const std::string& lscm, SeriesOf series,
                   bool with_rates = false) {
   std::vector<std::string> parts, short_of;
   bool holds_everywhere = true;
-  for (const auto& fam : bumps()) {
+  for (const auto& fam : d.bumps()) {
     bool any = false;
     std::vector<std::string> gaps;
     for (const char* q : {"normal", "H"}) {
@@ -331,17 +332,17 @@ D5Finding prefixed(D5Finding f, const std::string& prefix) {
   return f;
 }
 
-std::optional<double> rate_of(const Series* s) {
-  return s ? std::optional<double>(s->rate()) : std::nullopt;
+std::optional<double> rate_of(const Data& d, const Series* s) {
+  return s ? std::optional<double>(d.rate(*s)) : std::nullopt;
 }
 
 // The LSCM map solved by conjugate gradients (lscm-cg-4, the solver of C4's Why line).
 D5Finding d5_solver(const Data& d, const Band& band) {
-  D5Finding f =
-      d5_gaps(band, "LSCM-CG-4", [&](const std::string& fam, const std::string& m, const char* q) {
-        Check scratch;
-        return rate_of(bump(d, scratch, fam, m, q, "L2"));
-      });
+  D5Finding f = d5_gaps(d, band, "LSCM-CG-4",
+                        [&](const std::string& fam, const std::string& m, const char* q) {
+                          Check scratch;
+                          return rate_of(d, bump(d, scratch, fam, m, q, "L2"));
+                        });
   return prefixed(std::move(f),
                   "the LSCM solver: with the map solved by conjugate gradients to 1e-6 "
                   "(lscm-cg-4), rate(LHF-4) - rate(LSCM-CG-4) is ");
@@ -350,10 +351,10 @@ D5Finding d5_solver(const Data& d, const Band& band) {
 // The gap over the interior vertices alone (diag-d-bump-interior).
 D5Finding d5_interior(const Data& d, const Band& band) {
   D5Finding f = d5_gaps(
-      band, "LSCM-4",
+      d, band, "LSCM-4",
       [&](const std::string& fam, const std::string& m, const char* q) {
         Check scratch;
-        return rate_of(interior(d, scratch, fam, m, q));
+        return rate_of(d, interior(d, scratch, fam, m, q));
       },
       true);
   return prefixed(
@@ -369,10 +370,10 @@ D5Finding d5_levels(const Data& d, const Band& band) {
   auto pair_rates = [&](const std::string& fam, const std::string& m, const char* q) {
     Check scratch;
     const Series* s = d.find(scratch, query(kD5Level5Diag, fam, m, q, "L2"));
-    return s && s->points.size() >= 5 ? s->pair_rates() : std::vector<double>{};
+    return s && s->points.size() >= 5 ? d.pair_rates(*s) : std::vector<double>{};
   };
   D5Finding f = d5_gaps(
-      band, "LSCM-4",
+      d, band, "LSCM-4",
       [&](const std::string& fam, const std::string& m, const char* q) -> std::optional<double> {
         const std::vector<double> r = pair_rates(fam, m, q);
         return r.empty() ? std::nullopt : std::optional<double>(r.back());
@@ -383,7 +384,7 @@ D5Finding d5_levels(const Data& d, const Band& band) {
   // finest pair on every bump (>= 0.3 below its earlier level-to-level rates).
   std::vector<std::string> rates, drops, at_theory;
   bool falls_everywhere = true, lhf_at_theory = true;
-  for (const auto& fam : bumps()) {
+  for (const auto& fam : d.bumps()) {
     for (const char* m : {"LHF-4", "LSCM-4"}) {
       std::vector<std::string> values;
       for (double r : pair_rates(fam, m, "H")) values.push_back(f2(r));
@@ -430,7 +431,7 @@ D5Finding d5_deep(const Data& d, const Band& band) {
   auto rate = [&](const std::string& fam, const std::string& m, const char* q) {
     return deep_rate(deep, kDeepD5, fam, m, q, "all");
   };
-  D5Finding f = d5_gaps(band, "LSCM-4", rate, true);
+  D5Finding f = d5_gaps(d, band, "LSCM-4", rate, true);
   if (f.text.empty()) return {false, "two levels finer: " + deep_absent(kDeepD5), {}, false};
   std::vector<std::string> rates;
   for (const char* fam : {"bump-irregular", "bump-48", "bump-unstructured"})
@@ -467,7 +468,7 @@ std::optional<WhyFinding> d5_safeguard(const Data& d) {
     }
     text += "; " + fires.text;
     const std::string same =
-        same_stencil_rates(fires, m, [&](const std::string& method, const char* q) {
+        same_stencil_rates(d, fires, m, [&](const std::string& method, const char* q) {
           Check scratch;
           return bump(d, scratch, kBump48, method, q, "L2");
         });
@@ -498,7 +499,7 @@ std::vector<WhyFinding> why_d5(const Data& d, const Band& band) {
 // level finer: the boundary ring from diag-d6-level5 and all vertices from diag-d5-level5.
 void claim_d6(const Data& d, Check& c, const Band& normal_offset, const Band& curvature_offset,
               double margin, bool finer) {
-  for (const auto& fam : bumps())
+  for (const auto& fam : d.bumps())
     for (const char* method : {"LHF", "LSCM"})
       for (int deg : {2, 3, 4}) {
         const std::string m = std::string(method) + "-" + std::to_string(deg);
@@ -519,11 +520,11 @@ void claim_d6(const Data& d, Check& c, const Band& normal_offset, const Band& cu
             }
           if (!s) continue;
           const Band& off = std::string(q) == "normal" ? normal_offset : curvature_offset;
-          require_rate(c, *s, Band::in(deg + off.lo, deg + off.hi, 2), "boundary-ring ");
+          require_rate(d, c, *s, Band::in(deg + off.lo, deg + off.hi, 2), "boundary-ring ");
           if (all)
-            c.require(s->rate() <= all->rate() + margin,
-                      fam + " " + m + " " + q + " L2: boundary-ring rate " + f2(s->rate()) +
-                          " <= all-vertex rate " + f2(all->rate()) + " + " + num(margin));
+            c.require(d.rate(*s) <= d.rate(*all) + margin,
+                      fam + " " + m + " " + q + " L2: boundary-ring rate " + f2(d.rate(*s)) +
+                          " <= all-vertex rate " + f2(d.rate(*all)) + " + " + num(margin));
         }
       }
 }
@@ -534,14 +535,14 @@ std::vector<WhyFinding> why_d6_levels(const Data& d, const Band& normal_offset,
                                       const Band& curvature_offset, double margin) {
   const Band band = Band::in(4 + curvature_offset.lo, 4 + curvature_offset.hi, 2);
   std::vector<std::string> parts;
-  for (const auto& fam : bumps())
+  for (const auto& fam : d.bumps())
     for (const char* q : {"H", "K"}) {
       Check scratch;
       const Series* s =
           d.find(scratch, query(kLevel5Diag, fam, "LHF-4", q, "L2", "none", 0.0, "boundary-ring"));
       if (!s || s->points.size() < 5) return {};
       parts.push_back(fam + " " + q + " rate over levels 1-" + std::to_string(s->last().level) +
-                      " " + f2(s->rate()) + " (" +
+                      " " + f2(d.rate(*s)) + " (" +
                       s->detail().substr(s->detail().find("level-to-level")) + ")");
     }
   Check finer;
@@ -614,7 +615,8 @@ std::optional<WhyFinding> why_d6_safeguard(const Data& d) {
     }
     text += "; " + fires.text;
     const std::string same = same_stencil_rates(
-        fires, m, [&](const std::string& method, const char* q) { return ring_of(d, method, q); });
+        d, fires, m,
+        [&](const std::string& method, const char* q) { return ring_of(d, method, q); });
     text += same.empty()
                 ? ": no two consecutive levels with the same stencils, so every "
                   "boundary-ring rate over levels 1-4 mixes stencils"
@@ -624,8 +626,8 @@ std::optional<WhyFinding> why_d6_safeguard(const Data& d) {
   // whose stencils reach a fifth grid line.
   const Fires fixed = safeguard_fires_on_bump48(d, "LHF-4 rings=3.5");
   if (!fixed.text.empty()) {
-    const std::string same =
-        same_stencil_rates(fixed, "LHF-4 3.5-ring", [&](const std::string& method, const char* q) {
+    const std::string same = same_stencil_rates(
+        d, fixed, "LHF-4 3.5-ring", [&](const std::string& method, const char* q) {
           Check scratch;
           return d.find(scratch,
                         query(kLevel5Diag, kBump48, method, q, "L2", "none", 0.0, "boundary-ring"));
@@ -655,7 +657,7 @@ std::vector<ClaimEntry> section5_2_claims() {
                  [=](const Data& d, Check& c) {
                    const std::pair<const char*, const char*> measures[] = {
                        {"normal", "L2"}, {"normal", "Linf"}, {"H", "L2"}, {"K", "L2"}};
-                   for (const auto& fam : bumps())
+                   for (const auto& fam : d.bumps())
                      for (const auto& [q, norm] : measures) {
                        std::vector<const Series*> ss;
                        for (const auto& m : kDeg2Others)
@@ -680,20 +682,20 @@ std::vector<ClaimEntry> section5_2_claims() {
                  {{"torus_minus_bump_rate", d2_gap}},
                  [=](const Data& d, Check& c) {
                    for (const auto& m : kDeg2Others)
-                     for (const auto& fam : bumps()) {
+                     for (const auto& fam : d.bumps()) {
                        const Series* b = bump(d, c, fam, m, "H", "L2");
-                       for (const auto& tor : tori()) {
+                       for (const auto& tor : d.tori()) {
                          const Series* t = torus2(d, c, tor, m, "H", "L2");
                          if (!b || !t) continue;
-                         c.require(b->rate() <= t->rate() - d2_gap.lo,
-                                   m + " H L2: rate on " + fam + " " + f2(b->rate()) +
-                                       " <= rate on " + tor + " " + f2(t->rate()) + " - " +
+                         c.require(d.rate(*b) <= d.rate(*t) - d2_gap.lo,
+                                   m + " H L2: rate on " + fam + " " + f2(d.rate(*b)) +
+                                       " <= rate on " + tor + " " + f2(d.rate(*t)) + " - " +
                                        num(d2_gap.lo) + "; bump " + b->detail());
                        }
                      }
                  },
                  {},
-                 [=](const Data& d) { return why_d2(d, tori(), d2_gap.lo); }});
+                 [=](const Data& d) { return why_d2(d, d.tori(), d2_gap.lo); }});
 
   out.push_back({"D3",
                  "Xu-2 curvatures fail to converge on the bump",
@@ -703,10 +705,10 @@ std::vector<ClaimEntry> section5_2_claims() {
                  "bump-48",
                  {},
                  [](const Data& d, Check& c) {
-                   for (const auto& fam : bumps())
+                   for (const auto& fam : d.bumps())
                      for (const char* q : {"H", "K"})
                        if (const Series* s = bump(d, c, fam, "Xu-2", q, "L2"))
-                         require_failure(c, *s);
+                         require_failure(d, c, *s);
                  },
                  {}});
 
@@ -721,7 +723,7 @@ std::vector<ClaimEntry> section5_2_claims() {
                  [=](const Data& d, Check& c) {
                    const std::pair<const char*, const char*> measures[] = {
                        {"normal", "L2"}, {"normal", "Linf"}, {"H", "L2"}, {"K", "L2"}};
-                   for (const auto& fam : bumps())
+                   for (const auto& fam : d.bumps())
                      for (int deg : {3, 4})
                        for (const auto& [q, norm] : measures) {
                          const std::string dd = std::to_string(deg);
@@ -744,7 +746,7 @@ std::vector<ClaimEntry> section5_2_claims() {
                      "mesh",
                  {{"rate_gap", d5}},
                  [=](const Data& d, Check& c) {
-                   for (const auto& fam : bumps()) {
+                   for (const auto& fam : d.bumps()) {
                      std::vector<std::string> parts;
                      bool any = false, complete = true;
                      for (const char* q : {"normal", "H"}) {
@@ -754,10 +756,10 @@ std::vector<ClaimEntry> section5_2_claims() {
                          complete = false;
                          continue;
                        }
-                       const double gap = lhf->rate() - lscm->rate();
+                       const double gap = d.rate(*lhf) - d.rate(*lscm);
                        any = any || d5.holds(gap);
-                       parts.push_back(std::string(q) + " L2 " + f2(lhf->rate()) + " - " +
-                                       f2(lscm->rate()) + " = " + f2(gap));
+                       parts.push_back(std::string(q) + " L2 " + f2(d.rate(*lhf)) + " - " +
+                                       f2(d.rate(*lscm)) + " = " + f2(gap));
                      }
                      if (complete)
                        c.require(any, fam + ": rate(LHF-4) - rate(LSCM-4): " + join(parts, "; ") +

@@ -16,7 +16,7 @@ const Series* noisy_torus(const Data& d, Check& c, const std::string& m, const s
 }
 
 // E3's Why line (localised), from the diagnostic experiment diag-e3-rings
-// (experiments/diagnostics/e3_ring_scan.exp): LHF-2's H and K errors on the noisy torus at
+// (experiments/diagnostics/diag-e3-rings.exp): LHF-2's H and K errors on the noisy torus at
 // rings 1.5 to 4, per level. "" if the diagnostic was not run.
 std::vector<WhyFinding> e3_ring_scan(const Data& d) {
   std::vector<std::string> parts;
@@ -30,10 +30,10 @@ std::vector<WhyFinding> e3_ring_scan(const Data& d) {
       const Series* s = d.find(scratch, query("diag-e3-rings", kNoisyTorus,
                                               std::string("LHF-2 r") + r, q, "L2", "isosurface"));
       if (!s || s->points.empty()) return {};
-      rises = rises && s->rate() > previous;
-      previous = s->rate();
-      if (std::string(r) == "2") rate_at_2 = std::max(rate_at_2, s->rate());
-      rings.push_back(std::string("ring ") + r + " rate " + f2(s->rate()) + ", finest " +
+      rises = rises && d.rate(*s) > previous;
+      previous = d.rate(*s);
+      if (std::string(r) == "2") rate_at_2 = std::max(rate_at_2, d.rate(*s));
+      rings.push_back(std::string("ring ") + r + " rate " + f2(d.rate(*s)) + ", finest " +
                       g3(s->last().e));
     }
     parts.push_back(std::string(q) + ": " + join(rings, "; "));
@@ -48,7 +48,7 @@ std::vector<WhyFinding> e3_ring_scan(const Data& d) {
     Check scratch;
     if (const Series* s = d.find(
             scratch, query("diag-e3-radius", kNoisyTorus, "LHF-2 r~h^0.5", q, "L2", "isosurface")))
-      growing.push_back(std::string(q) + " rate " + f2(s->rate()) + ", finest " + g3(s->last().e));
+      growing.push_back(std::string(q) + " rate " + f2(d.rate(*s)) + ", finest " + g3(s->last().e));
   }
   if (!growing.empty())
     out += " | diag-e3-radius (radius 0.44 h^(1/2): 1.5 to 4 rings over the levels): " +
@@ -140,7 +140,7 @@ std::vector<ClaimEntry> section5_3_claims() {
            if (!xu || !s) return found;
            const auto ratio = error_ratios(*xu, *s);
            if (ratio.empty()) return found;
-           rings.push_back(std::string("ring ") + r + ": LHF-2 H rate " + f2(s->rate()) +
+           rings.push_back(std::string("ring ") + r + ": LHF-2 H rate " + f2(d.rate(*s)) +
                            ", Xu-2 / LHF-2 at level " + std::to_string(ratio.back().level) + " " +
                            f2(ratio.back().value));
          }
@@ -168,10 +168,11 @@ std::vector<ClaimEntry> section5_3_claims() {
          for (const auto& m : kDeg2Others) {
            const Series* l2 = noisy_torus(d, c, m, "normal", "L2");
            const Series* linf = noisy_torus(d, c, m, "normal", "Linf");
-           if (l2) require_rate(c, *l2, e2_l2);
+           if (l2) require_rate(d, c, *l2, e2_l2);
            if (l2 && linf)
-             c.require(linf->rate() < l2->rate() && e2_linf.holds(linf->rate()),
-                       rate_line(*linf, "< L2 rate " + f2(l2->rate()) + " and " + e2_linf.text()));
+             c.require(
+                 d.rate(*linf) < d.rate(*l2) && e2_linf.holds(d.rate(*linf)),
+                 rate_line(d, *linf, "< L2 rate " + f2(d.rate(*l2)) + " and " + e2_linf.text()));
          }
        },
        {},
@@ -183,13 +184,13 @@ std::vector<ClaimEntry> section5_3_claims() {
            if (const Series* s =
                    d.find(scratch, query("diag-e3-rings", kNoisyTorus, std::string("LHF-2 r") + r,
                                          "normal", "L2", "isosurface")))
-             parts.push_back(std::string("ring ") + r + " " + f2(s->rate()) + " (" +
+             parts.push_back(std::string("ring ") + r + " " + f2(d.rate(*s)) + " (" +
                              s->detail().substr(s->detail().find("level-to-level")) + ")");
          }
          Check scratch;
          if (const Series* s = d.find(scratch, query("diag-e3-radius", kNoisyTorus, "LHF-2 r~h^0.5",
                                                      "normal", "L2", "isosurface")))
-           parts.push_back("radius 0.44 h^(1/2) " + f2(s->rate()));
+           parts.push_back("radius 0.44 h^(1/2) " + f2(d.rate(*s)));
          if (parts.empty()) return {};
          return finding(CauseKind::tried,
                         "diagnostics diag-e3-rings and diag-e3-radius (report/diag-e3-rings.md, "
@@ -210,7 +211,8 @@ std::vector<ClaimEntry> section5_3_claims() {
                  [=](const Data& d, Check& c) {
                    for (const auto& m : kDeg2Others)
                      for (const char* q : {"H", "K"})
-                       if (const Series* s = noisy_torus(d, c, m, q, "L2")) require_rate(c, *s, e3);
+                       if (const Series* s = noisy_torus(d, c, m, q, "L2"))
+                         require_rate(d, c, *s, e3);
                  },
                  {},
                  e3_ring_scan});
@@ -264,7 +266,7 @@ std::vector<ClaimEntry> section5_3_claims() {
            e5_ratio.text() + " at every level, and the rates differ by " + e5_rates.text(),
        {{"ratio", e5_ratio}, {"rate_difference", e5_rates}},
        [=](const Data& d, Check& c) {
-         for (const auto& fam : bumps())
+         for (const auto& fam : d.bumps())
            for (const auto& m : kDeg2All)
              for (const char* norm : {"L2", "Linf"}) {
                const Series* s3 = bump_noise(d, c, fam, m, "normal", norm, 3);
@@ -272,9 +274,9 @@ std::vector<ClaimEntry> section5_3_claims() {
                if (!s3 || !s2) continue;
                const std::string what = fam + " " + s3->method + " normal " + norm;
                require_every_level(c, error_ratios(*s2, *s3), e5_ratio, what + " h^2 / h^3");
-               const double diff = std::abs(s2->rate() - s3->rate());
-               c.require(e5_rates.holds(diff), what + ": rates h^3 " + f2(s3->rate()) + ", h^2 " +
-                                                   f2(s2->rate()) + " differ by " + f2(diff) +
+               const double diff = std::abs(d.rate(*s2) - d.rate(*s3));
+               c.require(e5_rates.holds(diff), what + ": rates h^3 " + f2(d.rate(*s3)) + ", h^2 " +
+                                                   f2(d.rate(*s2)) + " differ by " + f2(diff) +
                                                    " (" + e5_rates.text() + ")");
              }
        },
@@ -313,10 +315,10 @@ std::vector<ClaimEntry> section5_3_claims() {
                  {},
                  [](const Data& d, Check& c) {
                    for (int order : {3, 2})
-                     for (const auto& fam : bumps())
+                     for (const auto& fam : d.bumps())
                        for (const char* q : {"H", "K"})
                          if (const Series* s = bump_noise(d, c, fam, "Xu-2", q, "L2", order))
-                           require_failure(c, *s, "h^" + std::to_string(order) + " ");
+                           require_failure(d, c, *s, "h^" + std::to_string(order) + " ");
                  },
                  {}});
 
@@ -328,11 +330,11 @@ std::vector<ClaimEntry> section5_3_claims() {
                  "H and K L2 rate " + e8.text() + ", both bump meshes",
                  {{"rate", e8}},
                  [=](const Data& d, Check& c) {
-                   for (const auto& fam : bumps())
+                   for (const auto& fam : d.bumps())
                      for (const auto& m : kDeg2Others)
                        for (const char* q : {"H", "K"})
                          if (const Series* s = bump_noise(d, c, fam, m, q, "L2", 3))
-                           require_rate(c, *s, e8, "h^3 ");
+                           require_rate(d, c, *s, e8, "h^3 ");
                  },
                  {}});
 
@@ -346,16 +348,16 @@ std::vector<ClaimEntry> section5_3_claims() {
        {{"rate", e9}},
        [=](const Data& d, Check& c) {
          int pairs = 0, below = 0;
-         for (const auto& fam : bumps())
+         for (const auto& fam : d.bumps())
            for (const auto& m : kDeg2Others) {
              const Series* h = bump_noise(d, c, fam, m, "H", "L2", 2);
              const Series* k = bump_noise(d, c, fam, m, "K", "L2", 2);
              if (!h || !k) continue;
              ++pairs;
-             const bool ok = e9.holds(h->rate()) && e9.holds(k->rate());
+             const bool ok = e9.holds(d.rate(*h)) && e9.holds(d.rate(*k));
              below += ok;
-             c.info("h^2 " + fam + " " + h->method + ": H L2 rate " + f2(h->rate()) +
-                    ", K L2 rate " + f2(k->rate()) +
+             c.info("h^2 " + fam + " " + h->method + ": H L2 rate " + f2(d.rate(*h)) +
+                    ", K L2 rate " + f2(d.rate(*k)) +
                     (ok ? " (both " + e9.text() + ")" : " (not both " + e9.text() + ")"));
            }
          if (pairs > 0)

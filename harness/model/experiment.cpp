@@ -79,6 +79,12 @@ bool to_bool(const std::string& s, const std::string& where) {
 Experiment parse_experiment_text(const std::string& text, const std::string& source) {
   Experiment e;
   e.source = source;
+  // One name per experiment: the file's (results/<name>.csv, the report's section id).
+  e.name = std::filesystem::path(source).stem().string();
+  if (e.name.empty() || e.name.find_first_of(", \t\"") != std::string::npos)
+    throw InputError(source + ": the file name '" + e.name +
+                     "' is the experiment's name: it must be non-empty, without commas, spaces "
+                     "or quotes");
   std::istringstream in(text);
   std::string line;
   int lineno = 0;
@@ -93,8 +99,11 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
     };
     try {
       if (key == "name") {
+        throw InputError(where + ": no 'name' line: the experiment's name is its file name ('" +
+                         e.name + "')");
+      } else if (key == "report") {
         need(2);
-        e.name = w[1];
+        e.report = parse_report_section(w[1]);
       } else if (key == "title") {
         need(2);
         e.title = w[1];
@@ -133,6 +142,7 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
           if (!split_option(w[i], k, v)) throw InputError(where + ": expected key=value");
           if (k == "order") {
             e.noise_order = static_cast<int>(parse_integer(v, where));
+            check_noise_order(e.noise_order);
             order_given = true;
           } else if (k == "seed") {
             e.noise_seed = static_cast<std::uint64_t>(parse_integer(v, where));
@@ -155,8 +165,6 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
                              "' (order, seed, alpha, scale, model, outliers)");
           }
         }
-        if (order_given && (e.noise_order < 1 || e.noise_order > 3))
-          throw InputError(where + ": noise order must be 1, 2 or 3");
       } else if (key == "sweep") {
         need(2);
         if (w[1] != "radius" && w[1] != "noise")
@@ -174,8 +182,7 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
           split_option(w[i], k, v);
           if (k == "noise-order") {
             m.noise_order = static_cast<int>(parse_integer(v, where));
-            if (m.noise_order != 0 && m.noise_order != 2 && m.noise_order != 3)
-              throw InputError(where + ": noise-order must be 0, 2 or 3");
+            check_noise_order(m.noise_order);
           } else if (k == "levels") {
             for (const std::string& item : split_list(v))
               m.levels.push_back(static_cast<int>(parse_integer(item, where)));
@@ -276,7 +283,8 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
       throw InputError(where + ": " + err.what());
     }
   }
-  if (e.name.empty()) throw InputError(source + ": missing 'name'");
+  if (e.sweep.empty() != (e.report != ReportSection::sweeps))
+    throw InputError(source + ": a 'sweep' line and 'report sweeps' go together");
   if (e.meshes.empty()) throw InputError(source + ": no 'mesh' line");
   if (e.methods.empty()) throw InputError(source + ": no 'method' line");
   if (e.panels.empty()) throw InputError(source + ": no 'panel' line");
@@ -377,6 +385,29 @@ void parse_method(Experiment& e, const std::vector<std::string>& w, const std::s
 
 }  // namespace
 
+const char* to_string(ReportSection section) {
+  switch (section) {
+    case ReportSection::paper:
+      return "paper";
+    case ReportSection::field:
+      return "field";
+    case ReportSection::hard:
+      return "hard";
+    case ReportSection::sweeps:
+      return "sweeps";
+    case ReportSection::extra:
+      return "extra";
+  }
+  return "?";
+}
+
+ReportSection parse_report_section(const std::string& keyword) {
+  for (ReportSection s : {ReportSection::paper, ReportSection::field, ReportSection::hard,
+                          ReportSection::sweeps, ReportSection::extra})
+    if (keyword == to_string(s)) return s;
+  throw UsageError("report '" + keyword + "' is not one of paper, field, hard, sweeps, extra");
+}
+
 Experiment parse_experiment(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open experiment file");
@@ -411,7 +442,10 @@ std::vector<std::string> list_experiment_files(const std::string& directory, boo
     for (const auto& entry : std::filesystem::directory_iterator(folder, ec))
       if (entry.is_regular_file() && entry.path().extension() == ".exp")
         more.push_back(entry.path().string());
-    std::sort(more.begin(), more.end());
+    // By name ("field-estimators" before "field-estimators-noise-h2"), not by file name.
+    std::sort(more.begin(), more.end(), [](const std::string& a, const std::string& b) {
+      return std::filesystem::path(a).stem() < std::filesystem::path(b).stem();
+    });
     out.insert(out.end(), more.begin(), more.end());
   };
   add_folder(directory);

@@ -1,13 +1,15 @@
 // Declarative experiment definitions (experiments/*.exp), read by `curvbench run`.
 //
 // A file is a list of lines `key value...`; `#` starts a comment; double quotes group words.
+// The file name is the experiment's name, its unique id: experiments/fig03-05.exp writes
+// results/fig03-05.csv (a `name` line is refused).
 //
-//   name        fig03-05                        unique id (also the CSV name)
 //   title       "Noise-free torus, degree 2"    one line
 //   section     5.1                             paper section
 //   mesh        torus-structured levels=1,2,3,4 [noise-order=K] [aspect=A] [density=D]
-//               one line per mesh family (meshgen families); noise-order=K (0, 2 or 3) overrides
-//               the experiment's noise order for this family (e.g. noise on the bump only);
+//               one line per mesh family (meshgen families); noise-order=K (0 = none, else an
+//               order: meshgen/noise.h check_noise_order) overrides the experiment's noise
+//               order for this family (e.g. noise on the bump only);
 //               the mesh options of the family (meshgen/generate.h, mesh_option_table()) as
 //               name=value. The results name the meshes by ExperimentMesh::label()
 //               (torus-anisotropic-A16), so lines of one family with other options stay apart
@@ -22,10 +24,13 @@
 //               optional controlled noise alpha h^k (meshgen/noise.h; paper §5.3,
 //               docs/algorithms.md §10.3): alpha = scale N(0,1), scale U[0,1) or scale
 //               U[-sqrt3,sqrt3), along the normal (or isotropic, tangential; outliers: a fraction P
-//               of the vertices moved by 3h); order 1, 2 or 3; a line without order= sets the seed
-//               (and model) of the mesh lines' own noise
+//               of the vertices moved by 3h); order 1..4 (check_noise_order); a line without order=
+//               sets the seed (and model) of the mesh lines' own noise
 //   sweep       radius | noise                  a study at a fixed mesh (harness/report/sweeps.h):
-//               reported in its own REPORT.md section, not as convergence tables; no readings
+//               reported in its own REPORT.md section, not as convergence tables; no readings;
+//               needs `report sweeps`
+//   report      paper | field | hard | sweeps | extra   the part of REPORT.md and the site the
+//               experiment belongs to (ReportSection; default extra)
 //   noisy       yes [rings=all|quadratic]       input is noisy: default rings +0.5 (paper §5.3)
 //               for the fits of every degree (all) or of degree 2 only (quadratic)
 //   vertex-set  all                             all | interior | boundary-ring (default all)
@@ -113,8 +118,23 @@ struct ExperimentPanel {
   Norm norm = Norm::L2;
 };
 
+/// The part of REPORT.md and the site an experiment belongs to (`report <keyword>`). Every
+/// experiment but a sweep also gets its own section of tables and plots.
+enum class ReportSection {
+  paper,   ///< the paper's figures: first among the experiments' sections; the leaderboard
+  field,   ///< the estimators in common use: the field studies, the leaderboard, the cost page
+  hard,    ///< meshes that break estimators: its field study, the leaderboard's "hard meshes"
+           ///< class (and no other), the cost page
+  sweeps,  ///< a study at a fixed mesh (`sweep`): the sweeps section and the cost page only
+  extra,   ///< ablations, diagnostics, the radius scaling: its own section only
+};
+/// "paper", "field", "hard", "sweeps", "extra".
+const char* to_string(ReportSection section);
+/// The inverse of to_string; throws UsageError naming the keywords.
+ReportSection parse_report_section(const std::string& keyword);
+
 struct Experiment {
-  std::string name;
+  std::string name;  ///< the file name's stem
   std::string title;
   std::string section;
   std::string source;  ///< file it was read from
@@ -129,6 +149,7 @@ struct Experiment {
   double radius_alpha = 0.0;          ///< radius-scaling: radius c h^alpha (c > 0 when set)
   double radius_c = 0.0;
   std::string sweep;  ///< `sweep radius|noise`: a study at a fixed mesh; empty otherwise
+  ReportSection report = ReportSection::extra;  ///< `report <keyword>`
 
   /// The controlled noise order of a mesh line (its own, else the experiment's).
   int noise_order_of(const ExperimentMesh& m) const {
@@ -150,11 +171,12 @@ struct Experiment {
 /// Parses one experiment file. Throws InputError naming the file, line and problem.
 Experiment parse_experiment(const std::string& path);
 
-/// Parses experiment text (for tests); `source` names it in error messages.
+/// Parses experiment text (for tests); `source` names it in error messages and gives the name
+/// (its stem: "x.exp" is experiment x).
 Experiment parse_experiment_text(const std::string& text, const std::string& source);
 
-/// The experiment files in a directory (*.exp), sorted by file name, then those of its
-/// `diagnostics` subfolder (the diagnostic experiments behind CLAIMS.md's Why lines); with
+/// The experiment files in a directory (*.exp), sorted by name (the file name's stem), then those
+/// of its `diagnostics` subfolder (the diagnostic experiments behind CLAIMS.md's Why lines); with
 /// `full`, then those of its `sweeps` subfolder (the full sweeps, `curvbench run --full`).
 std::vector<std::string> list_experiment_files(const std::string& directory, bool full = false);
 

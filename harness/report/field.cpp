@@ -21,20 +21,20 @@ namespace {
 
 constexpr Quantity kQuantities[] = {Quantity::normal, Quantity::H, Quantity::K, Quantity::d1};
 
-// The sections of REPORT.md written here, each over the experiments whose name starts with its
-// prefix: a heading and the words before the per-mesh tables.
+// The sections of REPORT.md written here, each over the experiments of its report section
+// (`report field|hard`): a heading and the words before the per-mesh tables.
 struct FieldSection {
-  const char* prefix;
+  ReportSection section;
   const char* heading;
   const char* intro;
 };
 const FieldSection kFieldSections[] = {
-    {"field-estimators", "The estimators in common use",
+    {ReportSection::field, "The estimators in common use",
      "Every built-in estimator on the same meshes with the same metrics (experiments "
-     "`field_estimators*.exp`)."},
-    {"hard-meshes", "Meshes that break estimators",
+     "`field-estimators*.exp`)."},
+    {ReportSection::hard, "Meshes that break estimators",
      "Every built-in estimator, VTK's and ICC on meshes known to break estimators "
-     "(experiment `hard_meshes.exp`; docs/mesh_families.md): the Schwarz lantern of a cylinder "
+     "(experiment `hard-meshes.exp`; docs/mesh_families.md): the Schwarz lantern of a cylinder "
      "whose normals and area converge (`lantern`) and one whose positions converge but whose "
      "face normals and area do not (`lantern-squeezed`), triangles stretched A = 4 and 16 times "
      "(`-A4`, `-A16`), sampling density varying D = 8 times (`bump-density-D8`), and the "
@@ -43,7 +43,7 @@ const FieldSection kFieldSections[] = {
 };
 
 bool in_section(const Experiment& e, const FieldSection& section) {
-  return e.name.rfind(section.prefix, 0) == 0;
+  return e.report == section.section;
 }
 
 // "1.23e-04", or "n/a" when not finite.

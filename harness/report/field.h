@@ -1,5 +1,5 @@
 // REPORT.md section "The estimators in common use": the experiments named field-estimators*
-// (experiments/field_estimators*.exp) summarised per mesh family, from the errors CSVs and the
+// (experiments/field-estimators*.exp) summarised per mesh family, from the errors CSVs and the
 // timings CSVs (results_table.h) of the results folder:
 //   - a table of the finest level's L2 and Linf errors in normals, H, K and d1, each with the
 //     average convergence rate of its series, and the time per vertex;

@@ -29,41 +29,41 @@ bool is_bump(const std::string& f) {
 const std::vector<MeshClassRule>& mesh_classes() {
   static const std::vector<MeshClassRule> table = {
       {"well-shaped", "well-shaped",
-       [](const std::string& e, const std::string& f, const std::string& n, const std::string& v) {
-         return e != "hard-meshes" && is_torus_grid(f) && n == "none" && v == "all";
+       [](ReportSection e, const std::string& f, const std::string& n, const std::string& v) {
+         return e != ReportSection::hard && is_torus_grid(f) && n == "none" && v == "all";
        }},
       {"isosurface", "isosurface",
-       [](const std::string& e, const std::string& f, const std::string& n, const std::string& v) {
-         return e != "hard-meshes" && f == "torus-iso-projected" && n == "none" && v == "all";
+       [](ReportSection e, const std::string& f, const std::string& n, const std::string& v) {
+         return e != ReportSection::hard && f == "torus-iso-projected" && n == "none" && v == "all";
        }},
       {"irregular", "irregular / 4-8",
-       [](const std::string& e, const std::string& f, const std::string& n, const std::string& v) {
-         return e != "hard-meshes" && is_bump(f) && n == "none" && v == "all";
+       [](ReportSection e, const std::string& f, const std::string& n, const std::string& v) {
+         return e != ReportSection::hard && is_bump(f) && n == "none" && v == "all";
        }},
       {"boundary-ring", "boundary ring",
-       [](const std::string&, const std::string&, const std::string& n, const std::string& v) {
+       [](ReportSection, const std::string&, const std::string& n, const std::string& v) {
          return n == "none" && v == "boundary-ring";
        }},
       // The unprojected isosurface torus has O(h^2) position errors (Table 4).
       {"noisy-h2", "noisy O(h^2)",
-       [](const std::string&, const std::string&, const std::string& n, const std::string& v) {
+       [](ReportSection, const std::string&, const std::string& n, const std::string& v) {
          return (n == "h^2" || n == "isosurface") && v == "all";
        }},
       {"noisy-h3", "noisy O(h^3)",
-       [](const std::string&, const std::string&, const std::string& n, const std::string& v) {
+       [](ReportSection, const std::string&, const std::string& n, const std::string& v) {
          return n == "h^3" && v == "all";
        }},
       {"hard", "hard meshes",
-       [](const std::string& e, const std::string&, const std::string& n, const std::string& v) {
-         return e == "hard-meshes" && n == "none" && v == "all";
+       [](ReportSection e, const std::string&, const std::string& n, const std::string& v) {
+         return e == ReportSection::hard && n == "none" && v == "all";
        }},
   };
   return table;
 }
 
 bool feeds_leaderboard(const Experiment& e) {
-  return e.sweep.empty() &&
-         (e.name.rfind("fig", 0) == 0 || e.name.rfind("field-", 0) == 0 || e.name == "hard-meshes");
+  return e.report == ReportSection::paper || e.report == ReportSection::field ||
+         e.report == ReportSection::hard;
 }
 
 std::vector<LeaderRow> leaderboard_rows(const std::vector<Experiment>& experiments,
@@ -76,6 +76,7 @@ std::vector<LeaderRow> leaderboard_rows(const std::vector<Experiment>& experimen
   };
   struct SeriesData {
     std::string experiment;
+    ReportSection section = ReportSection::extra;
     std::map<int, ErrorRow> by_level;
   };
   std::map<SeriesKey, SeriesData> series;
@@ -87,7 +88,7 @@ std::vector<LeaderRow> leaderboard_rows(const std::vector<Experiment>& experimen
     if (!fs::exists(csv)) continue;
     for (ErrorRow& r : read_error_csv(csv)) {
       SeriesKey k{r.method, r.family, r.noise, r.vertex_set, r.quantity, r.norm};
-      auto [it, inserted] = series.try_emplace(k, SeriesData{e.name, {}});
+      auto [it, inserted] = series.try_emplace(k, SeriesData{e.name, e.report, {}});
       if (!inserted && it->second.experiment != e.name) continue;
       if (std::find(method_order.begin(), method_order.end(), r.method) == method_order.end())
         method_order.push_back(r.method);
@@ -129,7 +130,7 @@ std::vector<LeaderRow> leaderboard_rows(const std::vector<Experiment>& experimen
     const MeshClassRule* cls = nullptr;
     const std::string family = k.family.substr(0, k.family.find("(interior)"));
     for (const MeshClassRule& c : mesh_classes())
-      if (c.member(s.experiment, family, k.noise, k.set)) {
+      if (c.member(s.section, family, k.noise, k.set)) {
         cls = &c;
         break;
       }

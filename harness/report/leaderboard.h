@@ -25,8 +25,9 @@ namespace curvbench {
 struct MeshClassRule {
   std::string id;     ///< "well-shaped", ...
   std::string title;  ///< column heading on the site
-  /// Whether the rows of (experiment, family, noise, vertex set) belong to the class.
-  bool (*member)(const std::string& experiment, const std::string& family, const std::string& noise,
+  /// Whether the rows of (the experiment's report section, family, noise, vertex set) belong to
+  /// the class.
+  bool (*member)(ReportSection experiment, const std::string& family, const std::string& noise,
                  const std::string& vertex_set);
 };
 

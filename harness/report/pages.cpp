@@ -389,8 +389,9 @@ std::vector<report::Section> cost_sections(const std::vector<Experiment>& experi
   std::map<std::tuple<std::string, std::string, std::string>, Group> groups;
   std::vector<std::tuple<std::string, std::string, std::string>> order;
   for (const Experiment& e : experiments) {
-    const bool sweep = !e.sweep.empty();
-    if (!sweep && e.name.rfind("field-", 0) != 0 && e.name != "hard-meshes") continue;
+    if (e.report != ReportSection::field && e.report != ReportSection::hard &&
+        e.report != ReportSection::sweeps)
+      continue;
     const std::string csv = dir + "/" + e.name + ".csv", tcsv = dir + "/timings/" + e.name + ".csv";
     if (!fs::exists(csv) || !fs::exists(tcsv)) continue;
     std::map<std::tuple<std::string, int, std::string>, double> us;
@@ -411,7 +412,7 @@ std::vector<report::Section> cost_sections(const std::vector<Experiment>& experi
       if (t == us.end() || !std::isfinite(r.error) || r.error <= 0) continue;
       std::string cls;
       for (const MeshClassRule& c : mesh_classes())
-        if (c.member(e.name, r.family, r.noise, "all")) {
+        if (c.member(e.report, r.family, r.noise, "all")) {
           cls = c.title + ": ";
           break;
         }

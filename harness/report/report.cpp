@@ -17,11 +17,11 @@
 #include "core/atomic_file.h"
 #include "core/build_info.h"
 #include "core/errors.h"
-#include "harness/report/causes.h"
 #include "harness/model/metrics.h"
 #include "harness/model/paper_tables.h"
-#include "harness/report/plot_styles.h"
+#include "harness/report/causes.h"
 #include "harness/report/field.h"
+#include "harness/report/plot_styles.h"
 #include "harness/report/radius_scaling.h"
 #include "harness/report/sweeps.h"
 #include "harness/report/table5.h"
@@ -486,13 +486,13 @@ std::optional<ReportContent> build_report(const std::vector<Experiment>& experim
   out.paper.push_back(table5_section(dir));
 
   int missing_plots = 0;
-  // The paper's figures first (experiments named fig...), then the extra studies.
+  // The paper's figures first (`report paper`), then the extra studies.
   std::vector<const Experiment*> ordered;
   for (const auto& e : experiments) ordered.push_back(&e);
   std::stable_partition(ordered.begin(), ordered.end(),
-                        [](const Experiment* e) { return e->name.rfind("fig", 0) == 0; });
+                        [](const Experiment* e) { return e->report == ReportSection::paper; });
   for (const Experiment* e : ordered) {
-    if (!e->sweep.empty()) continue;  // the sweeps' own section (report/sweeps.h)
+    if (e->report == ReportSection::sweeps) continue;  // their own section (report/sweeps.h)
     report::Section s;
     if (!experiment_section(*e, options, missing_plots, s)) return std::nullopt;
     out.experiments.push_back(std::move(s));

@@ -55,7 +55,7 @@ TEST(CliMeshOptions, BadValuesExit2WithOneLine) {
 
 TEST(CliMeshOptions, TwoAspectsAreTwoFamiliesInTheResults) {
   const auto dir = fresh_dir("cli_mesh_options_run");
-  std::ofstream(dir / "aniso.exp") << "name aniso\ntitle \"Anisotropy\"\nsection x\n"
+  std::ofstream(dir / "aniso.exp") << "title \"Anisotropy\"\nsection x\n"
                                       "mesh torus-anisotropic levels=1 aspect=4\n"
                                       "mesh torus-anisotropic levels=1 aspect=16\n"
                                       "method lhf-2\npanel p \"H.\" H L2\n";

@@ -21,7 +21,7 @@ namespace fs = std::filesystem;
 fs::path small_results(const fs::path& dir) {
   fs::create_directories(dir / "experiments");
   std::ofstream(dir / "experiments" / "small.exp")
-      << "name    small\ntitle   \"Small\"\nsection 5.2\nmesh    bump-48 levels=1,2\n"
+      << "title   \"Small\"\nsection 5.2\nmesh    bump-48 levels=1,2\n"
          "method  lhf-2\npanel   small-h \"L2 errors in H.\" H L2\n";
   const auto r =
       run_cli("run small --experiments-dir " + (dir / "experiments").string() + " --output " +

@@ -33,8 +33,7 @@ namespace fs = std::filesystem;
 fs::path write_experiment(const fs::path& dir) {
   fs::create_directories(dir / "experiments");
   std::ofstream(dir / "experiments" / "resume.exp")
-      << "name    resume\n"
-         "title   \"Resume check\"\n"
+      << "title   \"Resume check\"\n"
          "section 5.2\n"
          "mesh    bump-48 levels=1,2,3\n"
          "mesh    torus-jittered levels=1,2,3\n"

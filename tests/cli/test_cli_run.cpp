@@ -26,8 +26,7 @@ namespace fs = std::filesystem;
 fs::path write_tiny_experiment(const fs::path& dir) {
   fs::create_directories(dir / "experiments");
   std::ofstream(dir / "experiments" / "tiny.exp")
-      << "name    tiny\n"
-         "title   \"Tiny end-to-end check\"\n"
+      << "title   \"Tiny end-to-end check\"\n"
          "section 5.2\n"
          "mesh    bump-48 levels=1,2,3\n"
          "method  lhf-2\n"
@@ -116,10 +115,10 @@ TEST(CliRun, ListAndBadUsage) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("unknown experiment 'nosuch'"), std::string::npos) << r.output;
   EXPECT_EQ(run_cli("run --experiments-dir " + exp_dir.string()).exit_code, 2);  // nothing named
-  std::ofstream(fs::path(exp_dir) / "broken.exp") << "name broken\nfoo bar\n";
+  std::ofstream(fs::path(exp_dir) / "broken.exp") << "foo bar\n";
   r = run_cli("run --list --experiments-dir " + exp_dir.string());
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find("broken.exp:2: unknown key 'foo'"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("broken.exp:1: unknown key 'foo'"), std::string::npos) << r.output;
 }
 
 // --full adds the experiments of sweeps/; one named like a top-level experiment replaces it.
@@ -129,11 +128,12 @@ TEST(CliRun, FullSweepsReplaceTrimmedAndBadNoiseExits2) {
   const auto exp_dir = write_tiny_experiment(dir);
   fs::create_directories(exp_dir / "sweeps");
   const std::string body =
-      "sweep radius\nmesh bump-48 levels=1 noise-sigma=0,0.01\nmethod icc ball-factor=1,2\n"
+      "sweep radius\nreport sweeps\nmesh bump-48 levels=1 noise-sigma=0,0.01\nmethod icc "
+      "ball-factor=1,2\n"
       "panel sr-h \"H.\" H L2\n";
-  std::ofstream(exp_dir / "sw.exp") << "name sw\ntitle \"trimmed\"\n" << body;
-  std::ofstream(exp_dir / "sweeps" / "sw.exp") << "name sw\ntitle \"full\"\n" << body;
-  std::ofstream(exp_dir / "sweeps" / "extra.exp") << "name extra\ntitle \"full only\"\n" << body;
+  std::ofstream(exp_dir / "sw.exp") << "title \"trimmed\"\n" << body;
+  std::ofstream(exp_dir / "sweeps" / "sw.exp") << "title \"full\"\n" << body;
+  std::ofstream(exp_dir / "sweeps" / "extra.exp") << "title \"full only\"\n" << body;
   auto r = run_cli("run --list --experiments-dir " + exp_dir.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("trimmed"), std::string::npos);
@@ -151,13 +151,13 @@ TEST(CliRun, FullSweepsReplaceTrimmedAndBadNoiseExits2) {
            {"mesh bump-48 levels=1 outliers=2", "outliers=2 is outside [0, 1]"},
            {"radius-scaling alpha=0 c=1", "radius-scaling alpha=0 c=1: needs"},
            {"method lhf-2 rings=0.5", "fit: ring 0.5 is not supported"}}) {
-    std::ofstream(exp_dir / "bad.exp") << "name bad\nmethod meyer\npanel b \"B.\" H L2\n"
+    std::ofstream(exp_dir / "bad.exp") << "method meyer\npanel b \"B.\" H L2\n"
                                        << "mesh bump-48 levels=1\n"
                                        << bad << "\n";
     r = run_cli("run --list --experiments-dir " + exp_dir.string());
     EXPECT_EQ(r.exit_code, 2) << bad;
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
-    EXPECT_NE(r.output.find("bad.exp:5: "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("bad.exp:4: "), std::string::npos) << r.output;
     EXPECT_NE(r.output.find(needle), std::string::npos) << r.output;
   }
 }

@@ -32,8 +32,7 @@ namespace fs = std::filesystem;
 void write_experiment(const fs::path& dir) {
   fs::create_directories(dir);
   std::ofstream(dir / "shard.exp")
-      << "name    shard\n"
-         "title   \"Shard check\"\n"
+      << "title   \"Shard check\"\n"
          "section 5.2\n"
          "mesh    bump-48 levels=1,2\n"
          "mesh    torus-structured levels=1,2\n"
@@ -210,8 +209,7 @@ TEST_F(CliShard, ShardsComputeTheReadingsToo) {
   const fs::path dir = root_ / "reading-experiments";
   fs::create_directories(dir);
   // torus-unstructured is swapped by the reading well-shaped-torus=min-valence-5.
-  std::ofstream(dir / "well.exp") << "name    well\n"
-                                     "title   \"Reading check\"\n"
+  std::ofstream(dir / "well.exp") << "title   \"Reading check\"\n"
                                      "section 5.1\n"
                                      "mesh    torus-unstructured levels=1\n"
                                      "method  lhf-2\n"

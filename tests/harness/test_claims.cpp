@@ -12,12 +12,15 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "core/errors.h"
 #include "harness/claims/claims.h"
+#include "harness/claims/kit.h"
 #include "harness/model/paper_tables.h"
 #include "harness/model/results_table.h"
 
@@ -690,6 +693,51 @@ TEST(Claims, MalformedCsvIsAnInputError) {
 namespace curvbench {
 namespace {
 
+// The rate formula and the family substitution are the Data's own fields: a copy with another
+// context reads the same CSVs under it and leaves the original as it was. The series has
+// e ~ 2^(-2 level) on meshes whose h shrinks by 1.6 per level: level-halving rate 2.00, rate over
+// the measured h 2 log 2 / log 1.6 = 2.95.
+TEST(ClaimsKit, ContextIsAFieldOfTheData) {
+  TempDir dir;
+  SyntheticSet s;
+  for (const char* family : {"torus-unstructured", "torus-jittered"})
+    s.add("fig03-05", family, {1, 2, 3, 4}, "LHF-2", "1.5", "none", "all", "normal", "L2", 1.0,
+          2.0);
+  for (auto& r : s.rows) {
+    r.h = 0.25 / std::pow(1.6, r.level - 1);
+    r.error = std::pow(2.0, -2.0 * r.level) * (r.family == "torus-jittered" ? 3.0 : 1.0);
+  }
+  s.write(dir);
+  const claims::Data ours(dir.str());
+  const claims::Data paper = ours.with_rate_formula(claims::RateFormula::level_halving);
+  claims::Check c;
+  const claims::Query q =
+      claims::query("fig03-05", "torus-unstructured", "LHF-2", "normal", "L2", "none", 1.5);
+  const claims::Series* series = ours.find(c, q);
+  ASSERT_NE(series, nullptr) << c.evidence();
+  EXPECT_EQ(ours.rate_formula(), claims::RateFormula::measured_h);
+  EXPECT_NEAR(ours.rate(*series), 2.0 * std::log(2.0) / std::log(1.6), 1e-12);
+  EXPECT_NEAR(paper.rate(*series), 2.0, 1e-12);
+  EXPECT_EQ(paper.find(c, q), series);  // the copy shares the series read
+  for (double r : paper.pair_rates(*series)) EXPECT_NEAR(r, 2.0, 1e-12);
+  claims::Check line;
+  claims::require_rate(paper, line, *series, Band::in(1.6, 2.6));
+  EXPECT_EQ(line.verdict(), Verdict::reproduced) << line.evidence();
+  claims::require_rate(ours, line, *series, Band::in(1.6, 2.6));
+  EXPECT_EQ(line.verdict(), Verdict::not_reproduced) << line.evidence();
+
+  const claims::Data jittered = paper.with_substitute(claims::kWell, "torus-jittered");
+  EXPECT_EQ(jittered.tori(), (std::vector<std::string>{"torus-jittered", claims::kPoor}));
+  EXPECT_EQ(jittered.family(claims::kBumpIrr), claims::kBumpIrr);
+  EXPECT_EQ(jittered.rate_formula(), claims::RateFormula::level_halving);
+  EXPECT_EQ(paper.tori(), (std::vector<std::string>{claims::kWell, claims::kPoor}));
+  EXPECT_EQ(jittered.with_substitute(claims::kWell, "").family(claims::kWell), claims::kWell);
+  // A subfolder's Data (results/deep/, a reading's folder) keeps the context.
+  const claims::Data folder = jittered.in_folder(dir.str());
+  EXPECT_EQ(folder.family(claims::kWell), "torus-jittered");
+  EXPECT_EQ(folder.rate_formula(), claims::RateFormula::level_halving);
+}
+
 // Every claim is evaluated with both rate formulas. Meshes whose levels shrink h by 1.6 instead of
 // 2: normals with e ~ 2^(-2 level) converge at rate 2 per level (the paper's level-halving rate,
 // inside B1's band) but at 2 log 2 / log 1.6 = 2.95 over the measured h (outside it).
@@ -1271,6 +1319,47 @@ TEST(Claims, D6LevelsAreACauseOnlyIfTheWholeCheckHoldsOneLevelFiner) {
                                "diag-d6-level5"),
             std::string::npos)
       << lhf_only.text;
+}
+
+}  // namespace
+}  // namespace curvbench
+
+namespace curvbench {
+namespace {
+
+// Every experiment a claim names (a string literal such as "fig03-05" or "diag-d5-level5" in
+// harness/claims/*.cpp: the experiments its queries prefer, its diagnostics) is an experiment
+// file of experiments/ (its diagnostics/ and deep/ subfolders included), so a renamed or
+// misspelt experiment cannot leave a claim "not applicable" for want of rows that no run writes.
+TEST(Claims, EveryExperimentAClaimNamesExists) {
+  const fs::path root(CURVBENCH_SOURCE_DIR);
+  std::set<std::string> experiments;
+  for (const char* sub : {"experiments", "experiments/diagnostics", "experiments/deep"})
+    for (const auto& entry : fs::directory_iterator(root / sub))
+      if (entry.path().extension() == ".exp") experiments.insert(entry.path().stem().string());
+  const std::regex literal(
+      "\"(fig[0-9]{2}-[0-9]{2}|diag-[a-z0-9-]+|ablation|field-estimators[a-z0-9-]*|hard-meshes|"
+      "sweep-[a-z0-9_-]+)\"");
+  std::set<std::string> named;
+  for (const auto& entry : fs::directory_iterator(root / "harness/claims")) {
+    std::ifstream in(entry.path());
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string s = text.str();
+    for (auto it = std::sregex_iterator(s.begin(), s.end(), literal); it != std::sregex_iterator();
+         ++it) {
+      const std::string name = (*it)[1];
+      named.insert(name);
+      EXPECT_TRUE(experiments.count(name))
+          << entry.path().filename().string() << " names experiment " << name
+          << ", which has no file experiments/[diagnostics/|deep/]" << name << ".exp";
+    }
+  }
+  // The claims name the paper's nine figure experiments and the diagnostics of their Why lines.
+  EXPECT_GE(named.size(), 15u);
+  for (const char* fig : {"fig03-05", "fig06-07", "fig09-10", "fig11-12", "fig13-14", "fig15-16",
+                          "fig17-18", "fig19-21", "fig20-22"})
+    EXPECT_TRUE(named.count(fig)) << fig;
 }
 
 }  // namespace

@@ -9,9 +9,9 @@
 #include <string>
 
 #include "core/errors.h"
-#include "harness/run/case_store.h"
 #include "harness/model/experiment.h"
 #include "harness/model/results_table.h"
+#include "harness/run/case_store.h"
 #include "harness/run/runner.h"
 #include "meshgen/generate.h"
 #include "methods/estimator.h"
@@ -23,9 +23,9 @@ namespace {
 TEST(Experiment, ParsesEveryKey) {
   const Experiment e = parse_experiment_text(
       "# comment line\n"
-      "name     demo   # trailing comment\n"
       "title    \"A demo, with commas\"\n"
       "section  5.3\n"
+      "report   paper\n"
       "noise    order=2 seed=77\n"
       "noisy    yes\n"
       "vertex-set interior\n"
@@ -39,6 +39,10 @@ TEST(Experiment, ParsesEveryKey) {
   EXPECT_EQ(e.name, "demo");
   EXPECT_EQ(e.title, "A demo, with commas");
   EXPECT_EQ(e.section, "5.3");
+  EXPECT_EQ(e.report, ReportSection::paper);
+  EXPECT_EQ(parse_experiment_text("mesh bump-48 levels=1\nmethod lhf-2\npanel p c H L2\n", "x.exp")
+                .report,
+            ReportSection::extra);  // the default
   EXPECT_EQ(e.noise_order, 2);
   EXPECT_EQ(e.noise_seed, 77u);
   EXPECT_TRUE(e.noisy);
@@ -66,7 +70,7 @@ TEST(Experiment, ParsesEveryKey) {
 }
 
 TEST(Experiment, ErrorsNameFileAndLine) {
-  const std::string base = "name x\nmesh bump-48 levels=1\nmethod lhf-2\npanel p c H L2\n";
+  const std::string base = "mesh bump-48 levels=1\nmethod lhf-2\npanel p c H L2\n";
   auto expect_error = [](const std::string& text, const std::string& needle) {
     try {
       parse_experiment_text(text, "bad.exp");
@@ -75,15 +79,32 @@ TEST(Experiment, ErrorsNameFileAndLine) {
       EXPECT_NE(std::string(err.what()).find(needle), std::string::npos) << err.what();
     }
   };
-  expect_error(base + "colour red\n", "bad.exp:5: unknown key 'colour'");
-  expect_error(base + "panel q c curvature L2\n", "bad.exp:5: unknown quantity");
-  expect_error(base + "noise order=5\n", "bad.exp:5: noise order must be 1, 2 or 3");
-  expect_error(base + "mesh bump-48 levels=1,x\n", "bad.exp:5: 'x' is not an integer");
-  expect_error(base + "title \"open\n", "bad.exp:5: unterminated quote");
-  expect_error(base + "method lhf-2 label=\"a,b\"\n", "bad.exp:5: a label must be");
-  expect_error(base + "method lhf-2 centre=maybe\n", "bad.exp:5: centre: expected yes or no");
-  expect_error("mesh bump-48 levels=1\nmethod lhf-2\npanel p c H L2\n", "missing 'name'");
-  expect_error("name x\nmethod lhf-2\npanel p c H L2\n", "no 'mesh' line");
+  expect_error(base + "colour red\n", "bad.exp:4: unknown key 'colour'");
+  expect_error(base + "panel q c curvature L2\n", "bad.exp:4: unknown quantity");
+  expect_error(base + "noise order=5\n",
+               "bad.exp:4: noise order 5 out of range (valid: 0 = none, 1..4)");
+  expect_error(base + "mesh bump-48 levels=1,x\n", "bad.exp:4: 'x' is not an integer");
+  expect_error(base + "title \"open\n", "bad.exp:4: unterminated quote");
+  expect_error(base + "method lhf-2 label=\"a,b\"\n", "bad.exp:4: a label must be");
+  expect_error(base + "method lhf-2 centre=maybe\n", "bad.exp:4: centre: expected yes or no");
+  expect_error(base + "report figures\n",
+               "bad.exp:4: report 'figures' is not one of paper, field, hard, sweeps, extra");
+  expect_error(base + "sweep radius\n", "bad.exp: a 'sweep' line and 'report sweeps' go together");
+  expect_error(base + "report sweeps\n", "bad.exp: a 'sweep' line and 'report sweeps' go together");
+  // One name per experiment: the file's; a name line is refused, the name must suit a CSV.
+  expect_error("name x\n" + base,
+               "bad.exp:1: no 'name' line: the experiment's name is its file name ('bad')");
+  try {
+    parse_experiment_text(base, "dir/a,b.exp");
+    ADD_FAILURE() << "a comma in the file name";
+  } catch (const InputError& err) {
+    EXPECT_NE(std::string(err.what()).find("dir/a,b.exp: the file name 'a,b' is the experiment's"),
+              std::string::npos)
+        << err.what();
+  }
+  EXPECT_EQ(parse_experiment_text(base, "experiments/sweeps/sweep-radius-a1_2.exp").name,
+            "sweep-radius-a1_2");
+  expect_error("method lhf-2\npanel p c H L2\n", "no 'mesh' line");
   // Two methods under one label would share every table row: a label= of its own is asked for.
   expect_error(base + "method lhf-2 centre=no\n",
                "bad.exp: methods 1 (lhf-2) and 2 (lhf-2) both report as 'LHF-2'");
@@ -98,7 +119,7 @@ TEST(Experiment, ErrorsNameFileAndLine) {
 // The options of single methods: parsed onto the method line, and checked there against the
 // method (make_estimator) so that a misplaced or bad option names the file and line.
 TEST(Experiment, SingleMethodOptions) {
-  const std::string head = "name x\nmesh bump-48 levels=1\npanel p c H L2\n";
+  const std::string head = "mesh bump-48 levels=1\npanel p c H L2\n";
   const Experiment e =
       parse_experiment_text(head +
                                 "method meyer vertex-normals=angle\n"
@@ -122,22 +143,22 @@ TEST(Experiment, SingleMethodOptions) {
     }
   };
   expect_error("method lhf-2 vertex-normals=area\n",
-               "bad.exp:4: vertex-normals applies to the discrete operators only");
+               "bad.exp:3: vertex-normals applies to the discrete operators only");
   expect_error("method meyer vertex-normals=cot\n",
-               "bad.exp:4: vertex-normals: unknown value 'cot'");
+               "bad.exp:3: vertex-normals: unknown value 'cot'");
   expect_error("method meyer quadric-constant=yes\n",
-               "bad.exp:4: quadric-constant applies to method 'quadric' only");
+               "bad.exp:3: quadric-constant applies to method 'quadric' only");
   expect_error("method quadric quadric-constant=maybe\n",
-               "bad.exp:4: quadric-constant: expected yes or no");
+               "bad.exp:3: quadric-constant: expected yes or no");
   expect_error("method taubin ball-factor=1\n",
-               "bad.exp:4: ball-factor applies to methods 'normal-cycle' and 'icc' only");
-  expect_error("method normal-cycle ball-factor=-1\n", "bad.exp:4: ball-factor -1: out of range");
-  expect_error("method lhf-2 rings=0.5\n", "bad.exp:4: fit: ring 0.5 is not supported");
+               "bad.exp:3: ball-factor applies to methods 'normal-cycle' and 'icc' only");
+  expect_error("method normal-cycle ball-factor=-1\n", "bad.exp:3: ball-factor -1: out of range");
+  expect_error("method lhf-2 rings=0.5\n", "bad.exp:3: fit: ring 0.5 is not supported");
 }
 
 // `method M key=v1,v2,...`: one method per value, labelled "<label> key=value".
 TEST(Experiment, MethodOptionListExpands) {
-  const std::string head = "name x\nmesh bump-48 levels=1\npanel p c H L2\n";
+  const std::string head = "mesh bump-48 levels=1\npanel p c H L2\n";
   const Experiment e = parse_experiment_text(head +
                                                  "method lhf-2 rings=1,1.5,2\n"
                                                  "method icc ball-factor=1,4 label=B\n"
@@ -161,15 +182,15 @@ TEST(Experiment, MethodOptionListExpands) {
     }
   };
   expect_error("method lhf-2 rings=1,2 qr-tol=1e-3,1e-8\n",
-               "bad.exp:4: only one option of a method line may list values");
-  expect_error("method lhf-2 rings=1,,2\n", "bad.exp:4: empty value in the list '1,,2'");
-  expect_error("method lhf-2 rings=1,0.5\n", "bad.exp:4: fit: ring 0.5 is not supported");
+               "bad.exp:3: only one option of a method line may list values");
+  expect_error("method lhf-2 rings=1,,2\n", "bad.exp:3: empty value in the list '1,,2'");
+  expect_error("method lhf-2 rings=1,0.5\n", "bad.exp:3: fit: ring 0.5 is not supported");
 }
 
 // Mesh lines with their own noise: one mesh per listed sigma/h or outlier fraction (sigma 0: the
 // noise-free mesh, listed once), the model on each; bad values name the option and value.
 TEST(Experiment, MeshNoiseVariants) {
-  const std::string head = "name x\nmethod meyer\npanel p c H L2\n";
+  const std::string head = "method meyer\npanel p c H L2\n";
   const Experiment e = parse_experiment_text(
       head +
           "noise seed=5\n"
@@ -190,7 +211,7 @@ TEST(Experiment, MeshNoiseVariants) {
   EXPECT_EQ(e.noise_model_of(e.meshes[2]).direction, NoiseDirection::normal);
   EXPECT_DOUBLE_EQ(e.noise_model_of(e.meshes[2]).scale, 0.1);
   EXPECT_DOUBLE_EQ(e.noise_model_of(e.meshes[3]).outlier_fraction, 0.01);
-  const std::string base = "name x\nmesh bump-48 levels=1\nmethod lhf-2\npanel p c H L2\n";
+  const std::string base = "mesh bump-48 levels=1\nmethod lhf-2\npanel p c H L2\n";
   const auto expect_error = [&](const std::string& line, const std::string& needle) {
     try {
       parse_experiment_text(base + line, "bad.exp");
@@ -200,27 +221,27 @@ TEST(Experiment, MeshNoiseVariants) {
     }
   };
   expect_error("mesh bump-48 levels=1 noise-sigma=0.1,-0.01\n",
-               "bad.exp:5: noise-sigma=-0.01 must be finite and >= 0");
-  expect_error("mesh bump-48 levels=1 outliers=1.5\n", "bad.exp:5: outliers=1.5 is outside [0, 1]");
+               "bad.exp:4: noise-sigma=-0.01 must be finite and >= 0");
+  expect_error("mesh bump-48 levels=1 outliers=1.5\n", "bad.exp:4: outliers=1.5 is outside [0, 1]");
   expect_error("mesh bump-48 levels=1 outliers=-0.1\n",
-               "bad.exp:5: outliers=-0.1 is outside [0, 1]");
+               "bad.exp:4: outliers=-0.1 is outside [0, 1]");
   expect_error("mesh bump-48 levels=1 noise-sigma=0.1 noise-model=radial\n",
-               "bad.exp:5: noise model 'radial' is not one of normal, isotropic, tangential");
+               "bad.exp:4: noise model 'radial' is not one of normal, isotropic, tangential");
   expect_error("mesh bump-48 levels=1 noise-model=isotropic\n",
-               "bad.exp:5: noise-model and noise-alpha need noise-sigma=S,...");
-  expect_error("noise outliers=2\n", "bad.exp:5: noise outliers=2 is outside (0, 1]");
-  expect_error("noise order=2 scale=-1\n", "bad.exp:5: noise scale=-1 must be finite and >= 0");
+               "bad.exp:4: noise-model and noise-alpha need noise-sigma=S,...");
+  expect_error("noise outliers=2\n", "bad.exp:4: noise outliers=2 is outside (0, 1]");
+  expect_error("noise order=2 scale=-1\n", "bad.exp:4: noise scale=-1 must be finite and >= 0");
   expect_error("radius-scaling alpha=0 c=1\n",
-               "bad.exp:5: radius-scaling alpha=0 c=1: needs c > 0 and 0 < alpha <= 1");
-  expect_error("radius-scaling alpha=-0.5 c=1\n", "bad.exp:5: radius-scaling alpha=-0.5 c=1");
-  expect_error("sweep size\n", "bad.exp:5: sweep 'size' is not one of radius, noise");
+               "bad.exp:4: radius-scaling alpha=0 c=1: needs c > 0 and 0 < alpha <= 1");
+  expect_error("radius-scaling alpha=-0.5 c=1\n", "bad.exp:4: radius-scaling alpha=-0.5 c=1");
+  expect_error("sweep size\n", "bad.exp:4: sweep 'size' is not one of radius, noise");
 }
 
 // The noise of each mesh line reaches the rows' noise column and the case ids (no collision
 // between meshes of one family with different noise).
 TEST(Experiment, MeshNoiseReachesRowsAndCaseIds) {
   const Experiment e = parse_experiment_text(
-      "name nz\nmethod meyer\npanel p c H L2\nnoise seed=3\n"
+      "method meyer\npanel p c H L2\nnoise seed=3\n"
       "mesh torus-structured levels=1 noise-sigma=0,0.03\n"
       "mesh torus-structured levels=1 noise-sigma=0.03 noise-model=tangential "
       "noise-alpha=uniform-centred\n"
@@ -249,7 +270,7 @@ TEST(Experiment, MeshNoiseReachesRowsAndCaseIds) {
 // from its method's default on the same mesh.
 TEST(Experiment, SingleMethodOptionsReachTheRunner) {
   const Experiment e = parse_experiment_text(
-      "name opts\nmesh torus-structured levels=1\npanel p c H L2\n"
+      "mesh torus-structured levels=1\npanel p c H L2\n"
       "method normal-cycle\nmethod normal-cycle ball-factor=2 label=NC-ball\n"
       "method quadric\nmethod quadric quadric-constant=yes label=Q6\n"
       "method meyer\nmethod meyer vertex-normals=angle label=Meyer-angle\n",

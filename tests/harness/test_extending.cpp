@@ -70,7 +70,7 @@ void register_toys() {
 TEST(Extending, AToyEstimatorAndFamilyRunThroughTheExperimentPath) {
   register_toys();
   const Experiment e = parse_experiment_text(
-      "name toy\nmesh toy-sphere levels=2,3\nmethod toy-normal label=\"TOY first\"\n"
+      "mesh toy-sphere levels=2,3\nmethod toy-normal label=\"TOY first\"\n"
       "method lhf-2\nmethod all-operators vertex-normals=angle\n"
       "panel toy-n \"Toy. Normals.\" normal L2\n",
       "toy.exp");

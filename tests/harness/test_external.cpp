@@ -65,7 +65,7 @@ TEST(External, CotangentExampleRunsEndToEndAndScoresAsScoreDoes) {
   const fs::path out = fresh_dir("external_example");
   // From the repository root, as docs/cli.md says.
   const auto r = sh("cd '" + kSource + "' && '" + kBinary +
-                    "' run experiments/examples/cotangent_external.exp --threads 1 "
+                    "' run experiments/examples/cotangent-external.exp --threads 1 "
                     "--table4-max 16 --no-plots --output '" +
                     out.string() + "'");
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -114,7 +114,7 @@ TEST(External, StoreKeysOnTheCommandAndTheScriptContent) {
   const fs::path dir = fresh_dir("external_store");
   const fs::path script = dir / "est.py";
   fs::copy_file(kSource + "/experiments/examples/cotangent_estimator.py", script);
-  std::ofstream(dir / "ext.exp") << "name ext\nmesh bump-48 levels=1\n"
+  std::ofstream(dir / "ext.exp") << "mesh bump-48 levels=1\n"
                                     "method external name=mine command=\"/usr/bin/python3 "
                                  << script.string()
                                  << " {mesh} {out}\"\nmethod lhf-2\npanel p \"p\" H L2\n";
@@ -158,7 +158,7 @@ TEST(External, FailuresAreTypedErrorsNamingTheCase) {
   };
   for (const Case& c : cases) {
     const fs::path exp = dir / (c.name + ".exp");
-    std::ofstream(exp) << "name " << c.name << "\nmesh bump-48 levels=1\nmethod external name=bad "
+    std::ofstream(exp) << "mesh bump-48 levels=1\nmethod external name=bad "
                        << c.method << "\npanel p \"p\" H L2\n";
     const auto r = sh("'" + kBinary + "' run '" + exp.string() + options);
     EXPECT_EQ(r.exit_code, 2) << c.name << ": " << r.output;
@@ -175,11 +175,11 @@ TEST(External, FailuresAreTypedErrorsNamingTheCase) {
         std::string("method external name=a command=\"x {mesh}\""),
         std::string("method external name=a command=\"x {mesh} {out}\" timeout=0"),
         std::string("method lhf-2 command=\"x {mesh} {out}\"")}) {
-    std::ofstream(dir / "parse.exp") << "name parse\nmesh bump-48 levels=1\n"
+    std::ofstream(dir / "parse.exp") << "mesh bump-48 levels=1\n"
                                      << method << "\npanel p \"p\" H L2\n";
     const auto r = sh("'" + kBinary + "' run '" + (dir / "parse.exp").string() + options);
     EXPECT_EQ(r.exit_code, 2) << method << ": " << r.output;
-    EXPECT_NE(r.output.find("parse.exp:3"), std::string::npos) << method << ": " << r.output;
+    EXPECT_NE(r.output.find("parse.exp:2"), std::string::npos) << method << ": " << r.output;
   }
 }
 
@@ -228,12 +228,12 @@ TEST(External, ExitCode77IsUnavailableNotFailed) {
 
 TEST(External, DescriptionIsParsedForOutsideEstimatorsOnly) {
   const Experiment e = parse_experiment_text(
-      "name d\nmesh bump-48 levels=1\nmethod external name=a command=\"x {mesh} {out}\" "
+      "mesh bump-48 levels=1\nmethod external name=a command=\"x {mesh} {out}\" "
       "description=\"what it does, in words\"\npanel p \"p\" H L2\n",
       "d.exp");
   ASSERT_EQ(e.methods.size(), 1u);
   EXPECT_EQ(e.methods[0].description, "what it does, in words");
-  EXPECT_THROW(parse_experiment_text("name d\nmesh bump-48 levels=1\nmethod lhf-2 "
+  EXPECT_THROW(parse_experiment_text("mesh bump-48 levels=1\nmethod lhf-2 "
                                      "description=\"x\"\npanel p \"p\" H L2\n",
                                      "d.exp"),
                InputError);
@@ -250,7 +250,7 @@ TEST(External, SkippedMethodLeavesTheRunGoingAndSaysWhy) {
                               " || { echo 'libfoo is missing, install it' >&2; exit 77; }; " +
                               kShEstimator;
   std::ofstream(dir / "skip.exp")
-      << "name skip\nmesh bump-48 levels=1,2\nmesh torus-structured levels=1\n"
+      << "mesh bump-48 levels=1,2\nmesh torus-structured levels=1\n"
          "method external name=gone command=\""
       << command << "\" description=\"a test estimator\"\nmethod lhf-2\npanel p \"p\" H L2\n";
   const fs::path out = dir / "out";
@@ -317,7 +317,7 @@ TEST(External, ShardedStudyReportsTheSkippedMethod) {
   const fs::path dir = fresh_dir("external_skip_shard");
   fs::create_directories(dir / "none");
   std::ofstream(dir / "skip.exp")
-      << "name skip\nmesh bump-48 levels=1,2\nmethod external name=gone command=\""
+      << "mesh bump-48 levels=1,2\nmethod external name=gone command=\""
       << "echo 'libfoo is missing' >&2; : {mesh} {out}; exit 77"
       << "\"\nmethod lhf-2\npanel p \"p\" H L2\n";
   // A fixed date: REPORT.md's header would otherwise differ between runs a second apart.

@@ -1,5 +1,5 @@
-// The leaderboard (harness/report/leaderboard.h) and the report's pages (harness/report/pages.h): a class
-// with several meshes shows each estimator's worst; the CSV round-trips; the site is written
+// The leaderboard (harness/report/leaderboard.h) and the report's pages (harness/report/pages.h): a
+// class with several meshes shows each estimator's worst; the CSV round-trips; the site is written
 // whole or not at all; the summary names the winners.
 #include <gtest/gtest.h>
 
@@ -24,7 +24,7 @@ namespace fs = std::filesystem;
 
 Experiment field_experiment() {
   return parse_experiment_text(
-      "name field-test\ntitle \"Field test\"\nsection beyond\n"
+      "title \"Field test\"\nsection beyond\nreport field\n"
       "mesh torus-unstructured levels=1,2,3\nmesh torus-structured levels=1,2,3\n"
       "mesh torus-iso-projected levels=1,2,3\nmethod lhf-2\nmethod meyer\n"
       "panel ft-h \"Field test. L2 errors in H.\" H L2\n",

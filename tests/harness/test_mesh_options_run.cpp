@@ -6,15 +6,14 @@
 #include <string>
 
 #include "core/errors.h"
-#include "harness/run/case_store.h"
 #include "harness/model/experiment.h"
+#include "harness/run/case_store.h"
 #include "harness/run/runner.h"
 
 namespace curvbench {
 namespace {
 
-const std::string kHead =
-    "name aniso\ntitle \"Anisotropy\"\nsection x\nmethod lhf-2\npanel p \"H.\" H L2\n";
+const std::string kHead = "title \"Anisotropy\"\nsection x\nmethod lhf-2\npanel p \"H.\" H L2\n";
 
 std::string parse_error(const std::string& mesh_line) {
   try {
@@ -30,7 +29,7 @@ TEST(MeshOptionsRun, ParsedAndCheckedOnTheMeshLine) {
       kHead +
           "mesh torus-anisotropic levels=1\nmesh torus-anisotropic levels=1 aspect=16\n"
           "mesh bump-density levels=1 density=2\nmesh bump-48 levels=1\n",
-      "ok.exp");
+      "aniso.exp");
   ASSERT_EQ(e.meshes.size(), 4u);
   EXPECT_FALSE(e.meshes[0].shape.aspect.has_value());
   EXPECT_EQ(e.meshes[1].shape.aspect, 16.0);
@@ -41,17 +40,17 @@ TEST(MeshOptionsRun, ParsedAndCheckedOnTheMeshLine) {
   EXPECT_EQ(e.meshes[3].label(), "bump-48");
 
   EXPECT_EQ(parse_error("mesh torus-anisotropic levels=1 aspect=1"),
-            "bad.exp:6: aspect 1 out of range: must be > 1");
+            "bad.exp:5: aspect 1 out of range: must be > 1");
   EXPECT_EQ(parse_error("mesh bump-density levels=1 density=0.5"),
-            "bad.exp:6: density 0.5 out of range: must be >= 1");
+            "bad.exp:5: density 0.5 out of range: must be >= 1");
   EXPECT_EQ(parse_error("mesh torus-structured levels=1 aspect=4"),
-            "bad.exp:6: aspect 4 does not apply to torus-structured (only to torus-anisotropic, "
+            "bad.exp:5: aspect 4 does not apply to torus-structured (only to torus-anisotropic, "
             "bump-anisotropic)");
   EXPECT_EQ(parse_error("mesh bump-anisotropic levels=1 aspect=wide"),
-            "bad.exp:6: 'wide' is not a number");
+            "bad.exp:5: 'wide' is not a number");
   EXPECT_EQ(
       parse_error("mesh bump-anisotropic levels=1 stretch=2"),
-      "bad.exp:6: expected levels=1,2,3,4 [noise-order=K] [noise-sigma=S,...] [noise-model=M] "
+      "bad.exp:5: expected levels=1,2,3,4 [noise-order=K] [noise-sigma=S,...] [noise-model=M] "
       "[noise-alpha=A] [outliers=P,...] [aspect=A] [density=D]");
 }
 
@@ -59,7 +58,7 @@ TEST(MeshOptionsRun, TwoAspectsStayApartInKeysIdsAndRows) {
   const std::vector<Experiment> experiments = {parse_experiment_text(
       kHead + "mesh torus-anisotropic levels=1 aspect=4\nmesh torus-anisotropic levels=1 "
               "aspect=16\nmesh torus-anisotropic levels=1\n",
-      "two.exp")};
+      "aniso.exp")};
   const std::vector<RunCase> cases = expand_cases(experiments);  // points into `experiments`
   ASSERT_EQ(cases.size(), 3u);
   EXPECT_NE(case_inputs(cases[0]), case_inputs(cases[1]));

@@ -31,7 +31,7 @@ std::vector<std::string> registered_labels() {
       labels.push_back(make_estimator(m.name, o)->label());
     }
   }
-  labels.push_back("vtk-curvatures");  // experiments/field_estimators.exp's outside estimator
+  labels.push_back("vtk-curvatures");  // experiments/field-estimators.exp's outside estimator
   return labels;
 }
 

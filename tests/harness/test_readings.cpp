@@ -24,7 +24,7 @@ const ReadingChoice& choice(const std::string& reading, const std::string& name)
 
 Experiment parse(const std::string& body, const std::string& section = "5") {
   return parse_experiment_text(
-      "name t\ntitle t\nsection " + section + "\n" + body + "panel p \"p\" normal L2\n", "t.exp");
+      "title t\nsection " + section + "\n" + body + "panel p \"p\" normal L2\n", "t.exp");
 }
 
 TEST(Readings, EveryReadingHasTheAdoptedChoiceFirstAndItChangesNothing) {
@@ -262,7 +262,7 @@ TEST(MeshNoiseOrder, OverridesTheExperimentsNoiseForOneFamily) {
   EXPECT_EQ(run_case({&e, &e.meshes[1], 1, &e.methods[0]}, cache, 1).front().noise, "h^2");
   // The noise-alpha reading reaches an experiment whose noise is on a mesh line only.
   EXPECT_EQ(apply_reading({e}, choice("noise-alpha", "uniform-0.1")).size(), 1u);
-  EXPECT_THROW(parse("mesh bump-48 levels=1 noise-order=4\nmethod lhf-2\n"), InputError);
+  EXPECT_THROW(parse("mesh bump-48 levels=1 noise-order=5\nmethod lhf-2\n"), InputError);
 }
 
 TEST(Readings, ExperimentFilesTakeTheOptionsAndRefuseBadValues) {

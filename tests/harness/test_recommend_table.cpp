@@ -130,7 +130,7 @@ TEST(RecommendTable, CommittedLabelsResolveToTheirOwnColumns) {
 // scaling).
 TEST(RecommendTable, SweepLabelsAreTheWholeEstimator) {
   for (const char* file :
-       {"/experiments/sweep_radius.exp", "/experiments/sweeps/sweep_radius.exp"}) {
+       {"/experiments/sweep-radius.exp", "/experiments/sweeps/sweep-radius.exp"}) {
     const Experiment e = parse_experiment(std::string(CURVBENCH_SOURCE_DIR) + file);
     EXPECT_FALSE(e.noisy) << file;
     EXPECT_EQ(e.radius_c, 0.0) << file;

@@ -34,7 +34,7 @@ std::vector<ErrorRow> rows_of(const std::string& method, double e0, double rate,
 
 Experiment experiment(const std::string& section = "5.2") {
   return parse_experiment_text(
-      "name report-test\ntitle \"A report test\"\nsection " + section +
+      "title \"A report test\"\nsection " + section +
           "\n"
           "mesh torus-unstructured levels=1,2,3\nmethod lhf-2\nmethod lhf-4\n"
           "panel rt-h \"Report test. L2 errors in H.\" H L2\n",

@@ -10,9 +10,9 @@
 #include <variant>
 #include <vector>
 
+#include "harness/model/results_table.h"
 #include "harness/report/field.h"
 #include "harness/report/model.h"
-#include "harness/model/results_table.h"
 #include "tests/cli/cli_runner.h"
 #include "tests/harness/synthetic_rows.h"
 
@@ -56,6 +56,7 @@ TEST(ReportField, TablesRatesTimesAndWordsFollowTheNumbers) {
   const fs::path dir = testing::fresh_dir("report_field");
   Experiment e;
   e.name = "field-estimators-test";
+  e.report = ReportSection::field;
   e.meshes = {{"bump-irregular", {1, 2, 3}}};
   std::vector<ErrorRow> rows;
   for (const auto& [method, e0, rate] : std::vector<std::tuple<std::string, double, double>>{
@@ -168,6 +169,7 @@ TEST(ReportField, TwoSettingsOfAFamilyCompareAtTheirFinestLevels) {
   const fs::path dir = testing::fresh_dir("report_field_settings");
   Experiment e;
   e.name = "hard-meshes-test";
+  e.report = ReportSection::hard;
   MeshShape a4, a16;
   a4.aspect = 4.0;
   a16.aspect = 16.0;

@@ -10,9 +10,9 @@
 #include <variant>
 #include <vector>
 
+#include "harness/model/results_table.h"
 #include "harness/report/model.h"
 #include "harness/report/sweeps.h"
-#include "harness/model/results_table.h"
 #include "tests/cli/cli_runner.h"
 
 namespace curvbench {
@@ -114,6 +114,7 @@ TEST(ReportSweeps, SectionAndCsvFromTheResults) {
   e.name = "sweep-test";
   e.title = "A sweep";
   e.sweep = "radius";
+  e.report = ReportSection::sweeps;
   e.source = "experiments/sweep_test.exp";
   std::vector<ErrorRow> rows;
   for (const char* q : {"normal", "H", "K"}) {

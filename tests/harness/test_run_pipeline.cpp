@@ -21,7 +21,7 @@ namespace fs = std::filesystem;
 
 Experiment tiny() {
   return parse_experiment_text(
-      "name pipeline-test\ntitle \"A pipeline test\"\nsection beyond\n"
+      "title \"A pipeline test\"\nsection beyond\n"
       "mesh torus-structured levels=1,2\nmethod lhf-2\nmethod meyer\n"
       "panel pt-h \"Pipeline test. L2 errors in H.\" H L2\n",
       "pipeline-test.exp");
