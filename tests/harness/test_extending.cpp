@@ -106,7 +106,7 @@ TEST(Extending, AToyEstimatorAndFamilyRunThroughTheExperimentPath) {
 TEST(Extending, RunCaseBuildsTheEstimatorOnce) {
   register_toys();
   const std::vector<Experiment> experiments = {parse_experiment_text(
-      "name toy-once\nmesh toy-sphere levels=2\nnoisy yes\nradius-scaling alpha=0.5 c=0.44\n"
+      "mesh toy-sphere levels=2\nnoisy yes\nradius-scaling alpha=0.5 c=0.44\n"
       "method toy-normal\npanel toy-n \"Toy. Normals.\" normal L2\n",
       "toy-once.exp")};
   const std::vector<RunCase> cases = expand_cases(experiments);
