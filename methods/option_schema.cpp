@@ -322,8 +322,10 @@ const Option& find_option(std::string_view name) {
   throw UsageError("unknown option '" + std::string(name) + "' (valid: " + valid + ")");
 }
 
-// The registered methods whose neighbourhood is a ball (option scope ball_radius).
-std::vector<std::string> ball_radius_methods() {
+// The methods a scope names: its list, or for ball_radius the registered methods whose
+// neighbourhood is a ball.
+std::vector<std::string> scope_methods(const OptionInfo& info) {
+  if (info.scope != OptionScope::ball_radius) return info.methods;
   std::vector<std::string> names;
   for (const MethodInfo& m : method_table())
     if (m.radius == NeighbourhoodSize::ball_factor) names.push_back(m.name);
@@ -335,8 +337,7 @@ std::string scope_text(const OptionInfo& info) {
   if (info.scope == OptionScope::ring_fits)
     return "the fits of the weighted least-squares framework only (lhf, lop, lscm)";
   if (info.scope == OptionScope::operators) return "the discrete operators only";
-  const std::vector<std::string> methods =
-      info.scope == OptionScope::ball_radius ? ball_radius_methods() : info.methods;
+  const std::vector<std::string> methods = scope_methods(info);
   std::string names;
   for (size_t i = 0; i < methods.size(); ++i) {
     if (i > 0) names += i + 1 == methods.size() ? " and " : ", ";
@@ -384,9 +385,7 @@ std::string taken_by(const OptionInfo& o) {
       break;
   }
   std::string names;
-  for (const std::string& m :
-       o.scope == OptionScope::ball_radius ? ball_radius_methods() : o.methods)
-    names += (names.empty() ? "" : ", ") + m;
+  for (const std::string& m : scope_methods(o)) names += (names.empty() ? "" : ", ") + m;
   return names;
 }
 
