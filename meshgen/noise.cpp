@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -97,6 +98,31 @@ std::string noise_label(int k, const NoiseModel& model) {
                   to_string(model.direction), label_word(model.distribution), model.scale, k);
   }
   return buf;
+}
+
+NoiseLevel noise_level(int k, const NoiseModel& model) {
+  if (k == 0) return {"", 0.0};
+  if (k != 1 || model.is_outliers()) return {};
+  return {std::string(to_string(model.direction)) + " " + label_word(model.distribution),
+          model.scale};
+}
+
+NoiseLevel parse_noise_label(const std::string& label) {
+  if (label == "none") return {"", 0.0};
+  // "<direction> <distribution> <scale>h": order 1 only (order k ends "h^k").
+  const size_t space = label.rfind(' ');
+  if (space == std::string::npos || label.back() != 'h') return {};
+  const std::string model = label.substr(0, space);
+  bool known = false;
+  for (auto d : {NoiseDirection::normal, NoiseDirection::isotropic, NoiseDirection::tangential})
+    for (auto w : {NoiseDistribution::gaussian, NoiseDistribution::uniform,
+                   NoiseDistribution::uniform_centred})
+      known = known || model == std::string(to_string(d)) + " " + label_word(w);
+  const std::string value = label.substr(space + 1, label.size() - space - 2);
+  char* end = nullptr;
+  const double x = std::strtod(value.c_str(), &end);
+  if (!known || value.empty() || *end != '\0' || !std::isfinite(x)) return {};
+  return {model, x};
 }
 
 void check_noise_order(int k) {

@@ -26,6 +26,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 
 #include "meshgen/generated_mesh.h"
@@ -82,6 +83,24 @@ void validate_noise_model(const NoiseModel& model);
 /// one-signed U[0,1)); other directions at order k "<direction> <dist> <scale>h^k"; outliers
 /// "outliers <100 p>%" (e.g. "outliers 0.1%").
 std::string noise_label(int k, const NoiseModel& model);
+
+/// The noise of a results row as numbers: for order-1 noise (the sweeps' sigma h) its model
+/// ("<direction> <distribution>", e.g. "normal gauss") and sigma/h; no noise is sigma/h 0 with
+/// no model; any other noise (h^k, outliers, an isosurface's own) has no model and sigma/h NaN.
+struct NoiseLevel {
+  std::string model;
+  double sigma_over_h = std::numeric_limits<double>::quiet_NaN();
+  bool operator==(const NoiseLevel& o) const {
+    return model == o.model && (sigma_over_h == o.sigma_over_h ||
+                                (sigma_over_h != sigma_over_h && o.sigma_over_h != o.sigma_over_h));
+  }
+};
+/// The level of noise of order k (0: none) under a model, as the runner knows it.
+NoiseLevel noise_level(int k, const NoiseModel& model);
+/// The level a `noise` column says (noise_label's text, or a family's own label: "none",
+/// "isosurface"): parse_noise_label(noise_label(k, m)) == noise_level(k, m). Results read from a
+/// CSV are typed by it, once, where they are read.
+NoiseLevel parse_noise_label(const std::string& label);
 
 /// Throws UsageError if k is not an order of noise (check_noise_order; 0 adds none) or the model
 /// is invalid (validate_noise_model).

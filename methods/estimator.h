@@ -219,6 +219,13 @@ enum class NeighbourhoodSize {
   whole_rings,  ///< option `rings`, whole rings (the quadric)
   ball_factor,  ///< option `ball-factor`: a ball of radius C h (normal cycle, ICC)
 };
+/// The option that sets a neighbourhood size of this kind: "rings" (half_rings, whole_rings),
+/// "ball-factor" (ball_factor), "" (fixed).
+const char* radius_option(NeighbourhoodSize size);
+/// Every kind, for code that looks an option name up (is "rings" a radius option?).
+inline constexpr NeighbourhoodSize kNeighbourhoodSizes[] = {
+    NeighbourhoodSize::fixed, NeighbourhoodSize::half_rings, NeighbourhoodSize::whole_rings,
+    NeighbourhoodSize::ball_factor};
 
 /// One line of the registry (methods/registry.cpp): what the rest of the project needs to know
 /// of a method besides its estimator.

@@ -220,6 +220,19 @@ void register_estimator(const MethodInfo& info, EstimatorFactory factory) {
   registry().push_back({info, factory});
 }
 
+const char* radius_option(NeighbourhoodSize size) {
+  switch (size) {
+    case NeighbourhoodSize::half_rings:
+    case NeighbourhoodSize::whole_rings:
+      return "rings";
+    case NeighbourhoodSize::ball_factor:
+      return "ball-factor";
+    case NeighbourhoodSize::fixed:
+      return "";
+  }
+  return "";
+}
+
 const char* to_string(MethodGroup g) {
   switch (g) {
     case MethodGroup::paper_fit:

@@ -66,7 +66,7 @@ std::vector<std::string> split_list(const std::string& v) {
 }
 
 void parse_method(Experiment& e, const std::vector<std::string>& w, const std::string& where,
-                  const std::string& label_suffix);
+                  const std::pair<std::string, std::string>& listed);
 
 bool to_bool(const std::string& s, const std::string& where) {
   if (s == "yes" || s == "true") return true;
@@ -263,7 +263,7 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
             values = split_list(v);
           }
         if (list_at == 0) {
-          parse_method(e, w, where, "");
+          parse_method(e, w, where, {});
           continue;
         }
         std::string list_key, unused;
@@ -271,7 +271,7 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
         for (const std::string& v : values) {
           std::vector<std::string> one = w;
           one[list_at] = list_key + "=" + v;
-          parse_method(e, one, where, " " + list_key + "=" + v);
+          parse_method(e, one, where, {list_key, v});
         }
       } else if (key == "panel") {
         need(5);
@@ -307,10 +307,12 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
 
 namespace {
 
-// One `method` line's words; `label_suffix` (" rings=1.5") is appended to the label of a line
-// expanded from a list of values.
+// One `method` line's words; `listed` is the option and value of a line expanded from a list of
+// values ({"rings", "1.5"}; empty else), whose label gains " rings=1.5".
 void parse_method(Experiment& e, const std::vector<std::string>& w, const std::string& where,
-                  const std::string& label_suffix) {
+                  const std::pair<std::string, std::string>& listed) {
+  const std::string label_suffix =
+      listed.first.empty() ? "" : " " + listed.first + "=" + listed.second;
   {
     {
       ExperimentMethod m;
@@ -375,8 +377,17 @@ void parse_method(Experiment& e, const std::vector<std::string>& w, const std::s
       } else {
         // a bad name, degree or option, with the line
         const auto est = make_estimator(m.spec, m.options);
-        if (!label_suffix.empty())
-          m.label = (m.label.empty() ? est->label() : m.label) + label_suffix;
+        if (!label_suffix.empty()) {
+          const std::string base = m.label.empty() ? est->label() : m.label;
+          m.label = base + label_suffix;
+          // A swept radius (rings=1,1.5,2 or ball-factor=2,4): the rows carry it typed.
+          for (NeighbourhoodSize size : kNeighbourhoodSizes)
+            if (listed.first == radius_option(size)) {
+              m.radius_parameter = listed.first;
+              m.radius = parse_double(listed.second, where);
+              m.radius_base_label = base;
+            }
+        }
         e.methods.push_back(m);
       }
     }

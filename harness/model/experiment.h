@@ -59,6 +59,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -107,6 +108,12 @@ struct ExperimentMethod {
   /// description="...": what it computes, one line in REPORT.md (not part of the case's key:
   /// it does not change the results)
   std::string description;
+  /// A line expanded from a list of its radius option's values (`rings=1,1.5,2`,
+  /// `ball-factor=2,4`): that option and this line's value, and its label without the
+  /// " rings=1.5" suffix; parameter "" and radius NaN otherwise.
+  std::string radius_parameter;
+  double radius = std::numeric_limits<double>::quiet_NaN();
+  std::string radius_base_label;
 
   bool is_external() const { return spec == "external"; }
 };

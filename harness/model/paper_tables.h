@@ -9,7 +9,8 @@
 //            the "average edge length" column (half the true mean edge length, claim A4), the
 //            L2 and Linf vertex distances to the torus, and the printed level-to-level rates
 //   kTable5  §5.4 Table 5: seconds per whole-mesh pass on the unstructured well-shaped torus
-//            meshes (GAMBIT; 3 GHz Pentium 4, gcc 4.2.4) for the eight methods of kTable5Methods
+//            meshes (GAMBIT; 3 GHz Pentium 4, gcc 4.2.4) for the eight methods of kTable5Methods;
+//            kTable5Ratios the ratios §5.4 discusses, kTable5Reference the method they divide by
 #pragma once
 
 #include <array>
@@ -59,6 +60,24 @@ inline constexpr std::array<Table5Row, 4> kTable5 = {{
 }};
 
 /// Seconds of Table 5 for a method label and level 1-4; 0 if the paper has no such entry.
+/// The method §5.4 measures the others against (the fastest of Table 5): its label at a degree
+/// is "LHF-<d>"; the report's ratios and scaling table use it.
+inline constexpr std::string_view kTable5Reference = "LHF";
+
+/// The time ratios §5.4's text draws from Table 5 (numerator, denominator), in its order.
+struct Table5Ratio {
+  std::string_view a, b;
+};
+inline constexpr std::array<Table5Ratio, 9> kTable5Ratios = {{{"LOP-2", "LHF-2"},
+                                                              {"LHF-3", "LHF-2"},
+                                                              {"LHF-4", "LHF-3"},
+                                                              {"Xu-2", "LHF-2"},
+                                                              {"Xu-2", "LOP-2"},
+                                                              {"LSCM-2", "LHF-2"},
+                                                              {"LSCM-3", "LHF-3"},
+                                                              {"LSCM-4", "LHF-4"},
+                                                              {"LSCM-2", "Xu-2"}}};
+
 constexpr double table5_seconds(std::string_view method, int level) {
   if (level < 1 || level > static_cast<int>(kTable5.size())) return 0.0;
   for (size_t j = 0; j < kTable5Methods.size(); ++j)

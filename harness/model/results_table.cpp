@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -19,6 +20,7 @@
 #include "core/text.h"
 #include "harness/model/metrics.h"
 #include "mesh/io.h"
+#include "methods/estimator.h"
 
 namespace curvbench {
 
@@ -228,6 +230,30 @@ std::vector<ErrorRow> read_error_csv(const std::string& path) {
   return parse_error_csv(read_file(path), path);
 }
 
+RadiusLabel split_radius_label(const std::string& label) {
+  for (NeighbourhoodSize size : kNeighbourhoodSizes) {
+    const std::string option = radius_option(size);
+    if (option.empty()) continue;
+    const std::string key = " " + option + "=";
+    const auto at = label.rfind(key);
+    if (at == std::string::npos) continue;
+    const std::string value = label.substr(at + key.size());
+    char* end = nullptr;
+    const double x = std::strtod(value.c_str(), &end);
+    if (value.empty() || *end != '\0' || !std::isfinite(x)) continue;
+    return {label.substr(0, at), option, x};
+  }
+  return {label, "", std::nan("")};
+}
+
+void type_columns(ErrorRow& row) {
+  const RadiusLabel radius = split_radius_label(row.method);
+  row.method_base = radius.method;
+  row.radius_parameter = radius.parameter;
+  row.radius = radius.radius;
+  row.noise_level = parse_noise_label(row.noise);
+}
+
 std::vector<ErrorRow> parse_error_csv(const std::string& text, const std::string& path) {
   const CsvTable t = parse_csv_table(text, path);
   std::string header;
@@ -255,6 +281,7 @@ std::vector<ErrorRow> parse_error_csv(const std::string& text, const std::string
     r.excluded = t.integer(i, 15);
     r.degree_reduced = t.integer(i, 16);
     r.failed = t.integer(i, 17);
+    type_columns(r);
     rows.push_back(std::move(r));
   }
   return rows;

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "core/atomic_file.h"
+#include "meshgen/noise.h"
 
 namespace curvbench {
 
@@ -49,7 +50,33 @@ struct ErrorRow {
   /// seconds; NaN when unknown. Not a column of the errors CSV (timings vary from run to run,
   /// the errors CSV does not): kept in the case store and written to the timings CSV.
   double seconds = std::numeric_limits<double>::quiet_NaN();
+
+  // Typed columns, not written to the CSV: what `method` and `noise` say, as values. The runner
+  // sets them from the experiment; reading a CSV sets them from the text, once
+  // (split_radius_label, parse_noise_label), so no reader of rows parses a label.
+  /// The label without its swept radius ("LHF-2" of "LHF-2 rings=1.5"); the whole label else.
+  std::string method_base;
+  /// The radius option the case swept (radius_option(): "rings", "ball-factor"), "" when its
+  /// label names none, and its value (NaN then).
+  std::string radius_parameter;
+  double radius = std::numeric_limits<double>::quiet_NaN();
+  NoiseLevel noise_level;  ///< the noise's model and sigma/h (meshgen/noise.h)
 };
+
+/// A method label split at the radius an experiment's method line swept: "LHF-2 rings=1.5" ->
+/// {"LHF-2", "rings", 1.5}, "ICC ball-factor=4" -> {"ICC", "ball-factor", 4}. A label without a
+/// "<radius option>=<number>" suffix (radius_option() of any NeighbourhoodSize) is its own
+/// method with parameter "" and radius NaN.
+struct RadiusLabel {
+  std::string method;
+  std::string parameter;
+  double radius = std::numeric_limits<double>::quiet_NaN();
+};
+RadiusLabel split_radius_label(const std::string& label);
+
+/// Sets a row's typed columns from its `method` and `noise` text (split_radius_label,
+/// parse_noise_label): what reading an errors CSV does to every row.
+void type_columns(ErrorRow& row);
 
 struct RateRow {
   std::string experiment, family, method;

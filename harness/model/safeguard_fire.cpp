@@ -54,4 +54,9 @@ std::vector<SafeguardFire> read_safeguard_fires_csv(const std::string& path) {
   return out;
 }
 
+std::vector<SafeguardFireCase> default_safeguard_fire_cases() {
+  return {{"bump-48", {1, 2, 3, 4}, {"lhf-4", "lscm-4", "lhf-4 rings=3.5"}},
+          {"bump-irregular", {1, 2, 3, 4}, {"lhf-4", "lscm-4"}}};
+}
+
 }  // namespace curvbench

@@ -134,7 +134,11 @@ report::Table speed_table(const std::string& dir) {
   for (const std::string& m : order) {
     const size_t dash = m.rfind('-');
     const std::string degree = dash == std::string::npos ? "" : m.substr(dash + 1);
-    const auto jet = seconds.find("Jet-" + degree);
+    // The jet (MethodGroup::jet) of the same degree.
+    auto jet = seconds.end();
+    for (auto it = seconds.begin(); it != seconds.end(); ++it)
+      if (method_group(it->first) == MethodGroup::jet && it->first.ends_with("-" + degree))
+        jet = it;
     const double s = seconds[m];
     std::vector<report::Cell> row{
         m, report::Cell::number(s, scientific(s)),

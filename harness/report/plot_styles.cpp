@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cctype>
 #include <cstddef>
+#include <mutex>
 #include <string_view>
 
 #include "core/hash.h"
+#include "methods/estimator.h"
 
 namespace curvbench {
 
@@ -16,39 +18,30 @@ namespace {
 // A fit's marker by degree 1..6 (filled shapes).
 constexpr int kDegreeMarker[] = {0, 11, 7, 5, 9, 13, 15};
 
-struct Entry {
-  const char* label;  ///< a fit's display name (label without "-d"), or a whole label
-  bool fit;           ///< the marker follows the degree
+struct Look {
   const char* colour;
-  int marker;  ///< for a non-fit
+  int marker;  ///< an operator's (a fit's marker is its degree's)
   int dash;
 };
 
 // clang-format off
-constexpr Entry kTable[] = {
-    // fits: one colour each, the degree by marker
-    {"LHF",          true,  "#0072b2", 0,  1},
-    {"LOP",          true,  "#e69f00", 0,  1},
-    {"Xu",           true,  "#009e73", 0,  1},
-    {"LSCM",         true,  "#cc79a7", 0,  1},
-    {"LSCM-fast",    true,  "#d55e00", 0,  2},
-    {"LSCM-CG",      true,  "#56b4e9", 0,  3},
-    {"Jet",          true,  "#000000", 0,  1},
-    // discrete operators and known outside estimators: open markers, broken lines
-    {"Meyer",        false, "#8b0000", 6,  2},
-    {"Taubin",       false, "#6a3d9a", 4,  4},
-    {"Rusinkiewicz", false, "#b8860b", 8,  2},
-    {"Quadric",      false, "#8c564b", 10, 4},
-    {"Goldfeather",  false, "#e7298a", 12, 2},
-    {"Normal-cycle", false, "#555555", 14, 4},
-    {"ICC",          false, "#66a61e", 3,  5},
-    {"ICC (LHF-3 normals)", false, "#66a61e", 12, 1}, {"Normal-cycle (LHF-3 normals)", false, "#555555", 6, 1},
-    {"vtk-curvatures", false, "#17becf", 2, 5},
-    {"APSS",         false, "#7570b3", 5,  3},
-    {"SurfVar",      false, "#a6761d", 7,  3},
-    {"pcl",          false, "#e6ab02", 9,  4},
+// The looks of the registered methods, dealt out in registry order: the k-th fit (a method with
+// degrees) takes the k-th fit look, the k-th degree-free method the k-th operator look. Fits:
+// one colour each (Okabe-Ito first), the degree in the marker, mostly solid lines. Operators: a
+// colour, an open marker and a broken line each. Each list has room for methods to come.
+constexpr Look kFitLooks[] = {
+    {"#0072b2", 0, 1}, {"#e69f00", 0, 1}, {"#009e73", 0, 1}, {"#cc79a7", 0, 1},
+    {"#d55e00", 0, 2}, {"#56b4e9", 0, 3}, {"#000000", 0, 1}, {"#f0e442", 0, 4},
+    {"#0072b2", 0, 5}, {"#e69f00", 0, 5}, {"#009e73", 0, 5}, {"#cc79a7", 0, 5},
 };
-// The spare palette of the fallback styles: colours no entry above uses.
+constexpr Look kOperatorLooks[] = {
+    {"#8b0000", 6, 2},  {"#6a3d9a", 4, 4}, {"#b8860b", 8, 2}, {"#8c564b", 10, 4},
+    {"#e7298a", 12, 2}, {"#555555", 14, 4}, {"#66a61e", 3, 5}, {"#7570b3", 5, 3},
+    {"#a6761d", 7, 3},  {"#17becf", 2, 5}, {"#e6ab02", 9, 4}, {"#1b9e77", 13, 3},
+    {"#d95f02", 15, 2}, {"#666666", 1, 5},
+};
+// The spare palette of the fallback styles (labels that are no registered method: outside
+// estimators, labelled variants): colours no look above uses.
 constexpr const char* kSpareColours[] = {"#d62728", "#9467bd", "#bcbd22", "#1a5276",
                                          "#ff69b4", "#2ca02c", "#5d6d7e", "#a0522d"};
 constexpr int kSpareMarkers[] = {1, 2, 3, 4, 6, 8, 10, 12};
@@ -73,11 +66,50 @@ size_t spare_slot(const std::string& label) {
   return static_cast<size_t>(fnv1a64(label) % kSpareSlots);
 }
 
+// A registered method as its labels spell it: the display name ("LSCM-fast", "Meyer") and
+// whether it is a fit ("<name>-<degree>"), with its look.
+struct Styled {
+  std::string display;
+  bool fit = false;
+  Look look{};
+};
+
+// The registry's methods with their looks, in registry order; rebuilt when the registry grows
+// (register_estimator). A method past the end of its list gets none (fallback).
+std::vector<Styled> styled_methods() {
+  static std::mutex mutex;
+  static std::vector<Styled> cache;
+  static size_t registered = 0;
+  const std::lock_guard<std::mutex> lock(mutex);
+  const std::vector<MethodInfo> table = method_table();
+  if (table.size() != registered) {
+    cache.clear();
+    size_t fits = 0, operators = 0;
+    for (const MethodInfo& m : table) {
+      EstimatorOptions o;
+      if (m.is_fit()) o.degree = m.min_degree;
+      Styled s;
+      s.display = make_estimator(m.name, o)->display_name();
+      s.fit = m.is_fit();
+      size_t& k = s.fit ? fits : operators;
+      const size_t n = s.fit ? std::size(kFitLooks) : std::size(kOperatorLooks);
+      if (k < n) {
+        s.look = s.fit ? kFitLooks[k] : kOperatorLooks[k];
+        cache.push_back(s);
+      }
+      ++k;
+    }
+    registered = table.size();
+  }
+  return cache;
+}
+
 }  // namespace
 
 PlotStyle plot_style(const std::string& label) {
-  for (const Entry& e : kTable)
-    if (!e.fit && label == e.label) return {e.colour, e.marker, e.dash, false};
+  const std::vector<Styled> methods = styled_methods();
+  for (const Styled& m : methods)
+    if (!m.fit && label == m.display) return {m.look.colour, m.look.marker, m.look.dash, false};
   // A fit's label: "<name>-<degree>".
   const size_t dash = label.rfind('-');
   if (dash != std::string::npos && dash + 2 == label.size() &&
@@ -85,8 +117,9 @@ PlotStyle plot_style(const std::string& label) {
     const int degree = label.back() - '0';
     const std::string_view name = std::string_view(label).substr(0, dash);
     if (degree >= 1 && degree < static_cast<int>(std::size(kDegreeMarker)))
-      for (const Entry& e : kTable)
-        if (e.fit && name == e.label) return {e.colour, kDegreeMarker[degree], e.dash, false};
+      for (const Styled& m : methods)
+        if (m.fit && name == m.display)
+          return {m.look.colour, kDegreeMarker[degree], m.look.dash, false};
   }
   return spare_style(spare_slot(label));
 }

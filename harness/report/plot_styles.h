@@ -1,12 +1,12 @@
-// The look of each method in every plot (colour, marker, dash), from one table keyed by the
-// method's label, so that a method looks the same in every plot of every study.
+// The look of each method in every plot (colour, marker, dash), so that a method looks the same
+// in every plot of every study. The looks are dealt out by registry position (a new registry
+// line gets the next one), so no method is named here:
 //
-//   fits (LHF-d, LOP-d, Xu-d, LSCM-d, LSCM-fast-d, LSCM-CG-d, Jet-d): one colour per method,
-//        one filled marker per degree d, solid lines (LSCM-fast dashed, LSCM-CG dotted)
-//   discrete operators (Meyer, Taubin, ...) and known outside estimators (vtk-curvatures):
-//        a colour, an open marker and a dashed line each
+//   fits (LHF-d, LOP-d, Xu-d, LSCM-d, ...): one colour per method, one filled marker per degree
+//        d, solid lines (the 5th and 6th fits, LSCM-fast and LSCM-CG, dashed and dotted)
+//   degree-free methods (Meyer, Taubin, ..., APSS): a colour, an open marker and a broken line
 //   any other label (an outside estimator, a labelled variant such as "LHF-2 (1.5-ring)"):
-//        a fallback style from a hash of the label into a spare palette used by no table entry
+//        a fallback style from a hash of the label into a spare palette no method's look uses
 #pragma once
 
 #include <string>

@@ -55,10 +55,10 @@ bool same_level(double a, double b) {
   return std::fabs(a - b) <= 1e-9 * std::fmax(1.0, b);
 }
 
-// sigma/h of a noise label of normal Gaussian noise ("none" is 0), NaN for any other label.
-double normal_sigma(const std::string& noise) {
-  if (noise == "none") return 0.0;
-  return noise_model_of_label(noise) == "normal gauss" ? sigma_over_h(noise) : std::nan("");
+// sigma/h of normal Gaussian noise (no noise is 0), NaN for any other noise.
+double normal_sigma(const NoiseLevel& noise) {
+  if (noise.sigma_over_h == 0.0) return 0.0;
+  return noise.model == noise_level(1, {}).model ? noise.sigma_over_h : std::nan("");
 }
 
 }  // namespace
@@ -109,7 +109,8 @@ std::vector<Recommendation> recommendations(const std::vector<ErrorRow>& rows,
       std::vector<ErrorRow> cell;
       for (const ErrorRow& r : rows) {
         if (r.quantity != kRecommendQuantity || r.norm != kRecommendNorm ||
-            quality_of_family(r.family) != quality || !same_level(normal_sigma(r.noise), level))
+            quality_of_family(r.family) != quality ||
+            !same_level(normal_sigma(r.noise_level), level))
           continue;
         if (!cell.empty() &&
             (r.experiment != cell.front().experiment || r.level != cell.front().level))
@@ -144,11 +145,10 @@ std::vector<Recommendation> recommendations(const std::vector<ErrorRow>& rows,
         if (rec.has_cheapest && (s > rec.cheapest_seconds ||
                                  (s == rec.cheapest_seconds && r.error >= rec.cheapest.error)))
           continue;
-        const SweepLabel l = parse_sweep_label(r.method);
         BestRadius c = *pick;
-        c.method = l.method;
-        c.parameter = l.parameter;
-        c.radius = l.radius;
+        c.method = r.method_base;
+        c.parameter = r.radius_parameter;
+        c.radius = r.radius;
         c.label = r.method;
         c.error = r.error;
         c.radii = 1;  // no "(largest)": only the best radius of a method says so

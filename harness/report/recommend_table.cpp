@@ -216,14 +216,14 @@ std::vector<std::string> EstimatorChoice::flags() const {
 }
 
 std::string EstimatorChoice::text() const {
-  const std::string name = parse_sweep_label(label).method;
+  const std::string name = split_radius_label(label).method;
   if (parameter.empty()) return name + " at its own neighbourhood (no radius option)";
   if (parameter == "rings") return name + ", rings " + format_g(radius);
   return name + ", ball factor C = " + format_g(radius) + " (a ball of radius C h)";
 }
 
 EstimatorChoice estimator_choice(const std::string& label) {
-  const SweepLabel l = parse_sweep_label(label);
+  const RadiusLabel l = split_radius_label(label);
   EstimatorChoice c;
   c.label = label;
   c.method = lower(l.method);
@@ -231,8 +231,7 @@ EstimatorChoice estimator_choice(const std::string& label) {
   c.radius = l.radius;
   if (c.method.empty() || c.method.find(' ') != std::string::npos)
     throw UsageError("'" + label + "' is not a method label with an optional radius");
-  if (c.parameter == "rings") set_option(c.options, "rings", format_double(c.radius));
-  if (c.parameter == "ball-factor") set_option(c.options, "ball-factor", format_double(c.radius));
+  if (!c.parameter.empty()) set_option(c.options, c.parameter, format_double(c.radius));
   (void)make_estimator(c.method, c.options);  // throws UsageError for what it cannot make
   return c;
 }

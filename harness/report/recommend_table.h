@@ -74,7 +74,7 @@ std::string recommendations_provenance(const std::string& path);
 
 /// What `curvbench estimate` runs for a sweep's case label: "LHF-4 rings=2" -> method "lhf-4",
 /// rings 2; "ICC ball-factor=4" -> "icc", ball-factor 4; "Rusinkiewicz" -> "rusinkiewicz" at
-/// its 1-ring (parse_sweep_label, harness/report/sweeps.h). The sweeps' method lines set no
+/// its 1-ring (split_radius_label, harness/model/results_table.h). The sweeps' method lines set no
 /// other option (experiments/sweep-radius.exp), so the label is the whole estimator.
 struct EstimatorChoice {
   std::string label;      ///< the case label, as in the table

@@ -13,12 +13,34 @@
 #include "harness/model/metrics.h"
 #include "harness/report/plot_styles.h"
 #include "harness/report/recommend.h"
+#include "methods/estimator.h"
 
 namespace curvbench {
 
 namespace fs = std::filesystem;
 
 namespace {
+
+// The registered methods whose neighbourhood size `option` sets (radius_option of their
+// registry line's NeighbourhoodSize), by display name: "LHF, LOP, ..., Quadric".
+std::string methods_sized_by(const std::string& option) {
+  std::string out;
+  for (const MethodInfo& m : method_table()) {
+    if (radius_option(m.radius) != option) continue;
+    EstimatorOptions o;
+    if (m.is_fit()) o.degree = m.min_degree;
+    out += (out.empty() ? "" : ", ") + make_estimator(m.name, o)->display_name();
+  }
+  return out.empty() ? "none" : out;
+}
+
+// The radius options of a plot in words: "rings", "rings; ball factor C".
+std::string radius_words(const std::set<std::string>& parameters) {
+  std::string out;
+  for (const std::string& p : parameters)
+    out += (out.empty() ? "" : "; ") + (p == "ball-factor" ? std::string("ball factor C") : p);
+  return out;
+}
 
 constexpr Quantity kQuantities[] = {Quantity::normal, Quantity::H, Quantity::K};
 
@@ -138,17 +160,18 @@ bool radius_sweep(report::Section& out, const Experiment& e, const std::vector<E
         std::vector<std::string> order;
         std::vector<std::pair<std::string, double>> fixed;
         double lowest = INFINITY, highest = -INFINITY;  // the radii swept
+        std::set<std::string> parameters;               // the radius options swept
         for (const ErrorRow* r : sel) {
           if (r->quantity != to_string(q) || !std::isfinite(r->error) || r->error <= 0) continue;
-          const SweepLabel l = parse_sweep_label(r->method);
-          if (l.parameter.empty()) {
-            fixed.push_back({l.method, r->error});
+          if (r->radius_parameter.empty()) {
+            fixed.push_back({r->method_base, r->error});
             continue;
           }
-          if (!curves.count(l.method)) order.push_back(l.method);
-          curves[l.method][l.radius] = r->error;
-          lowest = std::min(lowest, l.radius);
-          highest = std::max(highest, l.radius);
+          if (!curves.count(r->method_base)) order.push_back(r->method_base);
+          parameters.insert(r->radius_parameter);
+          curves[r->method_base][r->radius] = r->error;
+          lowest = std::min(lowest, r->radius);
+          highest = std::max(highest, r->radius);
         }
         if (order.empty() && fixed.empty()) continue;  // a quantity no panel asked for
         if (order.empty()) lowest = highest = 1.0;     // fixed methods only: their 1-ring
@@ -159,7 +182,7 @@ bool radius_sweep(report::Section& out, const Experiment& e, const std::vector<E
         report::Plot plot;
         plot.title = "L2 error in " + quantity_words(q) + " against the radius [" + family +
                      ", noise " + noise + "]";
-        plot.x_label = "radius / h (fits, quadric: rings; normal cycle, ICC: ball factor C)";
+        plot.x_label = "radius / h (" + radius_words(parameters) + ")";
         plot.log_x = false;
         for (size_t i = 0; i < order.size(); ++i) {
           report::Series se = styled_series(order[i], styles[i]);
@@ -239,7 +262,7 @@ bool noise_sweep(report::Section& out, const Experiment& e, const std::vector<Er
     }
     std::vector<std::string> models;
     for (const ErrorRow& r : fam)
-      if (const std::string m = noise_model_of_label(r.noise);
+      if (const std::string& m = r.noise_level.model;
           !m.empty() && std::find(models.begin(), models.end(), m) == models.end())
         models.push_back(m);
     const std::vector<PlotStyle> styles = plot_styles(methods);  // one look per method
@@ -252,8 +275,8 @@ bool noise_sweep(report::Section& out, const Experiment& e, const std::vector<Er
           std::map<double, double> curve;
           for (const ErrorRow& r : fam)
             if (r.method == methods[i] && r.quantity == to_string(q) &&
-                noise_model_of_label(r.noise) == model && std::isfinite(r.error) && r.error > 0)
-              curve[sigma_over_h(r.noise)] = r.error;
+                r.noise_level.model == model && std::isfinite(r.error) && r.error > 0)
+              curve[r.noise_level.sigma_over_h] = r.error;
           if (curve.empty()) continue;
           report::Series se = styled_series(methods[i], styles[i]);
           for (const auto& [x, y] : curve)
@@ -280,47 +303,13 @@ std::string radius_text(const BestRadius& b) {
   return s;
 }
 
-SweepLabel parse_sweep_label(const std::string& label) {
-  for (const char* key : {" rings=", " ball-factor="}) {
-    const auto at = label.rfind(key);
-    if (at == std::string::npos) continue;
-    const std::string value = label.substr(at + std::string(key).size());
-    char* end = nullptr;
-    const double x = std::strtod(value.c_str(), &end);
-    if (value.empty() || *end != '\0' || !std::isfinite(x)) continue;
-    return {label.substr(0, at), std::string(key).substr(1, std::string(key).size() - 2), x};
-  }
-  return {label, "", std::nan("")};
-}
-
-double sigma_over_h(const std::string& noise) {
-  if (noise == "none") return 0.0;
-  const auto space = noise.rfind(' ');
-  if (space == std::string::npos || noise.back() != 'h' || noise_model_of_label(noise).empty())
-    return std::nan("");
-  const std::string value = noise.substr(space + 1, noise.size() - space - 2);
-  char* end = nullptr;
-  const double x = std::strtod(value.c_str(), &end);
-  return !value.empty() && *end == '\0' ? x : std::nan("");
-}
-
-std::string noise_model_of_label(const std::string& noise) {
-  const auto space = noise.rfind(' ');
-  if (space == std::string::npos || noise.back() != 'h') return "";
-  const std::string model = noise.substr(0, space);
-  for (const char* dir : {"normal ", "isotropic ", "tangential "})
-    if (model.rfind(dir, 0) == 0) return model;
-  return "";
-}
-
 std::vector<BestRadius> best_radii(const std::vector<ErrorRow>& rows) {
   using Key =
       std::tuple<std::string, std::string, int, std::string, std::string, std::string, std::string>;
   std::map<Key, size_t> index;
   std::vector<BestRadius> out;
   for (const ErrorRow& r : rows) {
-    const SweepLabel l = parse_sweep_label(r.method);
-    const Key key{r.experiment, r.family, r.level, r.noise, l.method, r.quantity, r.norm};
+    const Key key{r.experiment, r.family, r.level, r.noise, r.method_base, r.quantity, r.norm};
     auto [it, inserted] = index.try_emplace(key, out.size());
     if (inserted) {
       BestRadius b;
@@ -330,27 +319,28 @@ std::vector<BestRadius> best_radii(const std::vector<ErrorRow>& rows) {
       b.vertices = r.vertices;
       b.h = r.h;
       b.noise = r.noise;
-      b.method = l.method;
-      b.parameter = l.parameter;
-      b.radius = l.radius;
+      b.noise_level = r.noise_level;
+      b.method = r.method_base;
+      b.parameter = r.radius_parameter;
+      b.radius = r.radius;
       b.label = r.method;
       b.quantity = r.quantity;
       b.norm = r.norm;
       b.error = r.error;
       b.radii = 1;
-      b.lowest = b.highest = l.radius;
+      b.lowest = b.highest = r.radius;
       out.push_back(b);
       continue;
     }
     BestRadius& b = out[it->second];
     ++b.radii;
-    b.lowest = std::fmin(b.lowest, l.radius);
-    b.highest = std::fmax(b.highest, l.radius);
+    b.lowest = std::fmin(b.lowest, r.radius);
+    b.highest = std::fmax(b.highest, r.radius);
     const bool better = std::isfinite(r.error) && (!std::isfinite(b.error) || r.error < b.error ||
-                                                   (r.error == b.error && l.radius < b.radius));
+                                                   (r.error == b.error && r.radius < b.radius));
     if (better) {
-      b.parameter = l.parameter;
-      b.radius = l.radius;
+      b.parameter = r.radius_parameter;
+      b.radius = r.radius;
       b.label = r.method;
       b.error = r.error;
     }
@@ -365,7 +355,7 @@ void write_best_radius_csv(const std::string& path, const std::vector<BestRadius
          "quantity,norm,error,radii,lowest_radius,highest_radius\n";
   for (const BestRadius& b : rows)
     out << b.experiment << ',' << b.family << ',' << b.level << ',' << b.vertices << ','
-        << format_double(b.h) << ',' << b.noise << ',' << format_double(sigma_over_h(b.noise))
+        << format_double(b.h) << ',' << b.noise << ',' << format_double(b.noise_level.sigma_over_h)
         << ',' << b.method << ',' << (b.parameter.empty() ? "fixed" : b.parameter) << ','
         << format_double(b.radius) << ',' << b.label << ',' << b.quantity << ',' << b.norm << ','
         << format_double(b.error) << ',' << b.radii << ',' << format_double(b.lowest) << ','
@@ -397,8 +387,11 @@ bool sweeps_section(const std::vector<Experiment>& experiments, const ReportOpti
           "(experiments with `sweep radius` or `sweep noise`; `curvbench run --all --full` runs "
           "the full sweeps of `experiments/sweeps/` in place of the trimmed ones). Errors are "
           "L2: normals absolute, curvatures relative (as above). Radii are in units of the mean "
-          "edge length h: rings for the fits and the quadric, the ball factor C (ball of radius "
-          "C h) for the normal cycle and ICC; a fit asked for fewer rings than its degree needs "
+          "edge length h: rings for " +
+          methods_sized_by("rings") + ", the ball factor C (ball of radius C h) for " +
+          methods_sized_by("ball-factor") +
+          " (their registry lines' neighbourhood size); a fit asked for fewer rings than its "
+          "degree needs "
           "grows by half rings until it has enough points (paper §4.1), so its smallest radii "
           "are lower bounds. Noise: sigma = (sigma/h) h, Gaussian or centred uniform (same "
           "standard deviation), along the exact normal, isotropic, or tangential (vertices "

@@ -22,29 +22,11 @@
 #include <vector>
 
 #include "harness/model/experiment.h"
-#include "harness/report/report.h"
-#include "harness/report/model.h"
 #include "harness/model/results_table.h"
+#include "harness/report/model.h"
+#include "harness/report/report.h"
 
 namespace curvbench {
-
-/// A method label of a sweep split into the method and its radius: "LHF-2 rings=1.5" ->
-/// {"LHF-2", "rings", 1.5}; "ICC ball-factor=4" -> {"ICC", "ball-factor", 4}; a label without
-/// a rings= or ball-factor= suffix (a fixed 1-ring method, or a method at its default radius) ->
-/// {label, "", NaN}.
-struct SweepLabel {
-  std::string method;
-  std::string parameter;
-  double radius = std::numeric_limits<double>::quiet_NaN();
-};
-SweepLabel parse_sweep_label(const std::string& label);
-
-/// sigma/h of a noise label: 0 for "none", 0.03 for "normal gauss 0.03h"; NaN for any other
-/// label ("h^2", "isosurface", "outliers 1%").
-double sigma_over_h(const std::string& noise);
-
-/// The noise model of a label: "normal gauss" for "normal gauss 0.03h", "" otherwise.
-std::string noise_model_of_label(const std::string& noise);
 
 /// One method's best radius on one mesh, noise, quantity and norm.
 struct BestRadius {
@@ -52,8 +34,9 @@ struct BestRadius {
   int level = 0, vertices = 0;
   double h = 0.0;
   std::string noise;
-  std::string method;     ///< "LHF-2"
-  std::string parameter;  ///< "rings", "ball-factor", or "" (fixed: one radius)
+  NoiseLevel noise_level;  ///< the noise's model and sigma/h
+  std::string method;      ///< "LHF-2"
+  std::string parameter;   ///< "rings", "ball-factor", or "" (fixed: one radius)
   double radius = std::numeric_limits<double>::quiet_NaN();  ///< NaN when fixed
   std::string label;                                         ///< the best case's method label
   std::string quantity, norm;

@@ -1,6 +1,7 @@
 #include "harness/report/table5.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -83,23 +84,30 @@ std::string machine_line(const std::string& path) {
   return "";
 }
 
-// The discrete operators of the registry (every method that is not a fit), by label.
-std::vector<std::string> operator_labels() {
-  std::vector<std::string> out;
-  for (const MethodInfo& m : method_table())
-    if (!m.is_fit()) out.push_back(make_estimator(m.name, EstimatorOptions{})->label());
-  return out;
+// A bench_solvers row (QR against SVD on identical systems): the solver table's, not a method's.
+bool is_solver_row(const std::string& method) {
+  return method.find("QR") != std::string::npos || method.find("SVD") != std::string::npos;
+}
+
+// The reference method of the ratios (paper::kTable5Reference) at a degree: "LHF-2".
+std::string reference(int degree) {
+  return std::string(paper::kTable5Reference) + "-" + std::to_string(degree);
+}
+
+// The columns of our tables: the paper's eight methods, then every other one-thread row of the
+// timings (registry methods and bench variants such as "LHF-2 scalar"), in the file's order.
+std::vector<std::string> our_methods(const std::vector<BenchRow>& rows) {
+  std::vector<std::string> ours(paper::kTable5Methods.begin(), paper::kTable5Methods.end());
+  for (const BenchRow& r : rows)
+    if (r.threads == 1 && !is_solver_row(r.method) &&
+        std::find(ours.begin(), ours.end(), r.method) == ours.end())
+      ours.push_back(r.method);
+  return ours;
 }
 
 // Our times with the paper's in parentheses, then the throughput.
-void times_tables(report::Section& s, const Lookup& t) {
-  std::vector<std::string> ours(paper::kTable5Methods.begin(), paper::kTable5Methods.end());
-  for (const char* m :
-       {"Jet-2", "Jet-3", "Jet-4", "LSCM-fast-2", "LSCM-fast-3", "LSCM-fast-4", "LHF-2 scalar",
-        "LHF-4 scalar", "LOP-2 scalar", "LHF-2 cached", "LHF-4 cached"})
-    ours.push_back(m);
-  for (const std::string& m : operator_labels()) ours.push_back(m);
-
+void times_tables(report::Section& s, const std::vector<BenchRow>& rows, const Lookup& t) {
+  const std::vector<std::string> ours = our_methods(rows);
   report::Table times;
   times.id = "table5-times";
   times.columns = {"mesh", "#V", "#T"};
@@ -108,7 +116,7 @@ void times_tables(report::Section& s, const Lookup& t) {
   throughput.id = "table5-throughput";
   throughput.columns = {"mesh"};
   throughput.columns.insert(throughput.columns.end(), ours.begin(), ours.end());
-  throughput.columns.push_back("LHF-2 (2 threads)");
+  throughput.columns.push_back(reference(2) + " (2 threads)");
   // Thousand triangles per second of a row, as a cell.
   const auto rate = [](const BenchRow* r) {
     if (r == nullptr) return report::Cell("-");
@@ -116,7 +124,7 @@ void times_tables(report::Section& s, const Lookup& t) {
     return report::Cell::number(k, fmt("%.0f", k));
   };
   for (int level = 1; level <= kLevels; ++level) {
-    const BenchRow* any = t.get("LHF-2", level);
+    const BenchRow* any = t.get(reference(2), level);
     const paper::Table5Row& p = paper::kTable5[static_cast<size_t>(level - 1)];
     std::vector<report::Cell> row{
         report::Cell::number(level, std::to_string(level)),
@@ -135,7 +143,7 @@ void times_tables(report::Section& s, const Lookup& t) {
                       : report::Cell("-" + paper_text));
       trow.push_back(rate(r));
     }
-    trow.push_back(rate(t.get("LHF-2", level, 2)));
+    trow.push_back(rate(t.get(reference(2), level, 2)));
     times.add(std::move(row));
     throughput.add(std::move(trow));
   }
@@ -145,26 +153,30 @@ void times_tables(report::Section& s, const Lookup& t) {
       .table(std::move(throughput));
 }
 
-// Time ratios, ours and (where the paper has both methods) the paper's.
-void ratio_table(report::Section& s, const Lookup& t) {
+// Time ratios, ours and (where the paper has both methods) the paper's: the paper's ratios
+// (paper::kTable5Ratios), then each other method against the reference of its degree (a
+// degree-free one against degree 2) and each bench variant ("LHF-2 scalar") against its method.
+void ratio_table(report::Section& s, const std::vector<BenchRow>& rows, const Lookup& t) {
   struct RatioDef {
     std::string a, b;
     bool paper;
   };
-  std::vector<RatioDef> ratios = {{"Jet-2", "LHF-2", false},       {"LOP-2", "LHF-2", true},
-                                  {"LHF-3", "LHF-2", true},        {"LHF-4", "LHF-3", true},
-                                  {"Xu-2", "LHF-2", true},         {"Xu-2", "LOP-2", true},
-                                  {"LSCM-2", "LHF-2", true},       {"LSCM-3", "LHF-3", true},
-                                  {"LSCM-4", "LHF-4", true},       {"LSCM-2", "Xu-2", true},
-                                  {"LSCM-fast-2", "LHF-2", false}, {"LSCM-fast-3", "LHF-3", false},
-                                  {"LSCM-fast-4", "LHF-4", false}};
-  for (const std::string& op : operator_labels()) ratios.push_back({op, "LHF-2", false});
-  for (const RatioDef& r : std::initializer_list<RatioDef>{{"LHF-2 scalar", "LHF-2", false},
-                                                           {"LHF-4 scalar", "LHF-4", false},
-                                                           {"LOP-2 scalar", "LOP-2", false},
-                                                           {"LHF-2 cached", "LHF-2", false},
-                                                           {"Jet-2", "LHF-2 cached", false}})
-    ratios.push_back(r);
+  std::vector<RatioDef> ratios;
+  for (const paper::Table5Ratio& r : paper::kTable5Ratios)
+    ratios.push_back({std::string(r.a), std::string(r.b), true});
+  const std::vector<std::string> ours = our_methods(rows);
+  for (size_t i = paper::kTable5Methods.size(); i < ours.size(); ++i) {
+    const std::string& m = ours[i];
+    if (const size_t space = m.find(' '); space != std::string::npos) {
+      ratios.push_back({m, m.substr(0, space), false});  // a bench variant of its method
+      continue;
+    }
+    const size_t dash = m.rfind('-');
+    const bool fit = dash != std::string::npos && dash + 2 == m.size() &&
+                     std::isdigit(static_cast<unsigned char>(m.back()));
+    const std::string ref = reference(fit ? m.back() - '0' : 2);
+    if (m != ref) ratios.push_back({m, ref, false});
+  }
   report::Table tab;
   tab.id = "table5-ratios";
   tab.columns = {"ratio"};
@@ -194,7 +206,7 @@ void solver_table(report::Section& s, const std::vector<BenchRow>& rows, const L
   std::vector<std::string> methods;
   std::string qr;
   for (const BenchRow& r : rows)
-    if ((r.method.find("QR") != std::string::npos || r.method.find("SVD") != std::string::npos) &&
+    if (is_solver_row(r.method) &&
         std::find(methods.begin(), methods.end(), r.method) == methods.end()) {
       methods.push_back(r.method);
       if (r.method.find("QR") != std::string::npos) qr = r.method;
@@ -236,7 +248,7 @@ void scaling_table(report::Section& s, const std::vector<BenchRow>& table5,
   std::vector<BenchRow> rows;
   for (const auto* part : {&table5, &sweep})
     for (const BenchRow& r : *part)
-      if (r.method == "LHF-2") rows.push_back(r);
+      if (r.method == reference(2)) rows.push_back(r);
   if (rows.empty()) return;
   const Lookup t(rows);
   int top = 0;
@@ -247,8 +259,8 @@ void scaling_table(report::Section& s, const std::vector<BenchRow>& table5,
                  "2 threads (s)", "ns/vertex", "speed-up"};
   double lo = 0.0, hi = 0.0;
   for (int level = 1; level <= top; ++level) {
-    const BenchRow* a = t.get("LHF-2", level, 1);
-    const BenchRow* b = t.get("LHF-2", level, 2);
+    const BenchRow* a = t.get(reference(2), level, 1);
+    const BenchRow* b = t.get(reference(2), level, 2);
     if (!a && !b) continue;
     const long verts = a ? a->verts : b->verts;
     std::vector<report::Cell> row{report::Cell::number(level, std::to_string(level)),
@@ -262,7 +274,7 @@ void scaling_table(report::Section& s, const std::vector<BenchRow>& table5,
       row.push_back(report::Cell::number(r->seconds, fmt("%.3g", r->seconds)));
       row.push_back(report::Cell::number(ns, fmt("%.0f", ns)));
     }
-    row.push_back(ratio_cell(t.ratio("LHF-2", "LHF-2", level, 1, 2)));
+    row.push_back(ratio_cell(t.ratio(reference(2), reference(2), level, 1, 2)));
     tab.add(std::move(row));
     if (a) {
       const double ns = 1e9 * a->seconds / static_cast<double>(verts);
@@ -362,8 +374,8 @@ report::Section table5_section(const std::string& results_dir) {
       "the well-shaped unstructured torus (`torus-unstructured`, levels 1-4; the scaling "
       "sweep's levels 5-6 are `torus-structured`). Paper: 3 GHz Pentium 4, gcc 4.2.4 "
       "(docs/claims.md, F). Data: `table5_timing.csv`, `table5_scaling.csv`, `end_to_end.csv`.");
-  times_tables(s, t);
-  ratio_table(s, t);
+  times_tables(s, rows, t);
+  ratio_table(s, rows, t);
   solver_table(s, rows, t);
   scaling_table(s, rows, read_timings(results_dir + "/table5_scaling.csv"));
   limits_table(s, results_dir + "/limits.csv");

@@ -25,6 +25,13 @@ std::string noise_label(const Experiment& e, const ExperimentMesh& m) {
   return mesh_family(m.family).noise_label;
 }
 
+NoiseLevel noise_level(const Experiment& e, const ExperimentMesh& m) {
+  const int order = e.noise_order_of(m);
+  if (order > 0) return curvbench::noise_level(order, e.noise_model_of(m));
+  // A family's own noise, as its table line names it: "none", or "isosurface" (not a sigma h).
+  return parse_noise_label(mesh_family(m.family).noise_label);
+}
+
 double case_work(const RunCase& c) {
   return static_cast<double>(1u << (2 * c.level));
 }
@@ -163,7 +170,7 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads,
     EstimatorOptions opt = c.method->options;
     opt.threads = threads;
     // The noisy-data half ring for the degrees the experiment gives it (the degree is the
-    // estimator's: "lhf-3" names it).
+    // estimator's, from its spec).
     opt.noisy = opt.noisy || e.noisy_for_degree(estimator_degree(c.method->spec, opt));
     if (e.radius_c > 0.0) scale_radius(e, c.method->spec, mesh.mean_edge_length(), opt);
     const auto estimator = make_estimator(c.method->spec, opt);
@@ -208,6 +215,11 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads,
   like.degree = degree;
   like.rings = rings;
   like.noise = noise_label(e, *c.mesh);
+  like.method_base =
+      c.method->radius_parameter.empty() ? method_label : c.method->radius_base_label;
+  like.radius_parameter = c.method->radius_parameter;
+  like.radius = c.method->radius;
+  like.noise_level = noise_level(e, *c.mesh);
   like.vertex_set = to_string(set);
   like.degree_reduced = reduced;
   like.failed = failed;

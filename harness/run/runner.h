@@ -118,10 +118,10 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads,
                                std::vector<CauseRow>* causes = nullptr);
 
 /// radius-scaling (experiment.h): sets the neighbourhood parameter of `method` (a name or label
-/// method_info() knows, e.g. "lhf-2") in `opt` to the
-/// radius e.radius_c h^e.radius_alpha, i.e. n = c h^(alpha - 1) edge lengths: rings n rounded to
-/// half rings (>= 1) for the fits (Jet included, Xu keeps its 1-ring), to whole rings (>= 1) for
-/// the quadric, ball-factor n for the normal cycle and ICC; other methods are left alone.
+/// method_info() knows) in `opt` to the radius e.radius_c h^e.radius_alpha, i.e.
+/// n = c h^(alpha - 1) edge lengths, as its registry line declares its size (NeighbourhoodSize):
+/// rings n rounded to half rings (>= 1) for half_rings, to whole rings (>= 1) for whole_rings,
+/// ball-factor n for ball_factor; a fixed method is left alone.
 void scale_radius(const Experiment& e, const std::string& method, double h, EstimatorOptions& opt);
 
 /// Expected relative cost of a case for balancing shards: 4^level (the vertex count grows about

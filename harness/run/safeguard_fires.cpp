@@ -14,11 +14,6 @@
 
 namespace curvbench {
 
-std::vector<SafeguardFireCase> default_safeguard_fire_cases() {
-  return {{"bump-48", {1, 2, 3, 4}, {"lhf-4", "lscm-4", "lhf-4 rings=3.5"}},
-          {"bump-irregular", {1, 2, 3, 4}, {"lhf-4", "lscm-4"}}};
-}
-
 std::vector<SafeguardFire> safeguard_fires(const std::vector<SafeguardFireCase>& cases) {
   std::vector<SafeguardFire> out;
   for (const SafeguardFireCase& c : cases)

@@ -14,20 +14,6 @@
 
 namespace curvbench {
 
-/// One mesh of the table: a family at some levels, with the methods to run (ring fits, e.g.
-/// "lhf-4", "lscm-4", or with options: "lhf-4 rings=3.5"; the CSV's method is the label and the
-/// options, "LHF-4 rings=3.5").
-struct SafeguardFireCase {
-  std::string family;
-  std::vector<int> levels;
-  std::vector<std::string> methods;
-};
-
-/// The cases `make experiments` writes: bump-48 and bump-irregular at levels 1-4, LHF-4 and
-/// LSCM-4 (the fits of claims D5 and D6), and on bump-48 LHF-4 at 3.5 rings (diag-d6-level5's
-/// fixed stencil).
-std::vector<SafeguardFireCase> default_safeguard_fire_cases();
-
 /// Every vertex where the condition test cuts the first stencil, in case, level, method and
 /// vertex order. A level where it fires nowhere has one row with vertex = -1 (the level was
 /// looked at).

@@ -37,6 +37,7 @@ ErrorRow row(const std::string& family, const std::string& method, const std::st
   r.quantity = quantity;
   r.norm = "L2";
   r.error = error;
+  type_columns(r);  // as reading the CSV does
   return r;
 }
 

@@ -73,6 +73,7 @@ TEST(RecommendTable, WrittenTableReadsBackToTheSamePicks) {
     r.quantity = "H";
     r.norm = "L2";
     r.error = error;
+    type_columns(r);  // as reading the CSV does
     rows.push_back(r);
   }
   const std::vector<TimingRow> timings{

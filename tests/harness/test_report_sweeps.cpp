@@ -35,31 +35,36 @@ ErrorRow row(const std::string& method, const std::string& noise, const std::str
   r.quantity = quantity;
   r.norm = "L2";
   r.error = error;
+  type_columns(r);  // as reading the CSV does
   return r;
 }
 
+// The typed columns of a row read back from its text: the swept radius from the label, sigma/h
+// and the noise model from the noise column.
 TEST(ReportSweeps, LabelsAndNoiseLabelsReadBack) {
-  const SweepLabel a = parse_sweep_label("LHF-2 rings=1.5");
+  const RadiusLabel a = split_radius_label("LHF-2 rings=1.5");
   EXPECT_EQ(a.method, "LHF-2");
   EXPECT_EQ(a.parameter, "rings");
   EXPECT_EQ(a.radius, 1.5);
-  const SweepLabel b = parse_sweep_label("My ICC ball-factor=4");
+  const RadiusLabel b = split_radius_label("My ICC ball-factor=4");
   EXPECT_EQ(b.method, "My ICC");
   EXPECT_EQ(b.parameter, "ball-factor");
   EXPECT_EQ(b.radius, 4.0);
-  const SweepLabel c = parse_sweep_label("Meyer");
+  const RadiusLabel c = split_radius_label("Meyer");
   EXPECT_EQ(c.method, "Meyer");
   EXPECT_EQ(c.parameter, "");
   EXPECT_TRUE(std::isnan(c.radius));
-  EXPECT_EQ(parse_sweep_label("X rings=wide").parameter, "");
-  EXPECT_EQ(sigma_over_h("none"), 0.0);
-  EXPECT_EQ(sigma_over_h("normal gauss 0.03h"), 0.03);
-  EXPECT_EQ(sigma_over_h("tangential uniform 0.1h"), 0.1);
-  EXPECT_TRUE(std::isnan(sigma_over_h("h^2")));
-  EXPECT_TRUE(std::isnan(sigma_over_h("outliers 1%")));
-  EXPECT_TRUE(std::isnan(sigma_over_h("isotropic gauss 0.1h^2")));
-  EXPECT_EQ(noise_model_of_label("isotropic uniform 0.003h"), "isotropic uniform");
-  EXPECT_EQ(noise_model_of_label("none"), "");
+  EXPECT_EQ(split_radius_label("X rings=wide").parameter, "");
+  // A listed option that is not a radius stays in the method's label.
+  EXPECT_EQ(split_radius_label("LHF-2 qr-tol=1e-8").method, "LHF-2 qr-tol=1e-8");
+  EXPECT_EQ(parse_noise_label("none").sigma_over_h, 0.0);
+  EXPECT_EQ(parse_noise_label("normal gauss 0.03h").sigma_over_h, 0.03);
+  EXPECT_EQ(parse_noise_label("normal gauss 0.03h").model, "normal gauss");
+  EXPECT_EQ(parse_noise_label("tangential uniform 0.1h").sigma_over_h, 0.1);
+  for (const char* other : {"h^2", "outliers 1%", "isotropic gauss 0.1h^2", "isosurface", "x 0.1h"})
+    EXPECT_TRUE(std::isnan(parse_noise_label(other).sigma_over_h)) << other;
+  EXPECT_EQ(parse_noise_label("isotropic uniform 0.003h").model, "isotropic uniform");
+  EXPECT_EQ(parse_noise_label("none").model, "");
 }
 
 // The smallest error wins, per (noise, quantity); a tie goes to the smaller radius; a NaN error

@@ -309,6 +309,27 @@ TEST(NoiseModels, DeterministicAndZeroSigmaIsTheIdentity) {
   EXPECT_TRUE(test::identical(add_noise(clean, 1, 7, none).mesh.vertices(), clean.mesh.vertices()));
 }
 
+// The noise level a label says is the level it was written for: the runner's typed columns and
+// those of a row read back from its CSV agree, for every order, direction, distribution and the
+// sweeps' scales.
+TEST(NoiseModels, LabelReadsBackAsItsLevel) {
+  for (int k = 0; k <= kMaxNoiseOrder; ++k)
+    for (auto dir : {NoiseDirection::normal, NoiseDirection::isotropic, NoiseDirection::tangential})
+      for (auto dist : {NoiseDistribution::gaussian, NoiseDistribution::uniform,
+                        NoiseDistribution::uniform_centred})
+        for (double scale : {0.0, 0.001, 0.003, 0.01, 0.03, 0.1, 0.3})
+          for (double outliers : {0.0, 0.01}) {
+            NoiseModel m{dist, scale, dir, outliers};
+            const NoiseLevel written = noise_level(k, m);
+            const NoiseLevel read = parse_noise_label(k == 0 ? "none" : noise_label(k, m));
+            EXPECT_TRUE(written == read) << k << " " << (k == 0 ? "none" : noise_label(k, m));
+          }
+  EXPECT_EQ(noise_level(1, {NoiseDistribution::gaussian, 0.03}).sigma_over_h, 0.03);
+  EXPECT_EQ(noise_level(1, {NoiseDistribution::gaussian, 0.03}).model, "normal gauss");
+  EXPECT_TRUE(std::isnan(noise_level(2, {}).sigma_over_h));  // alpha h^2: not a sigma h
+  EXPECT_EQ(noise_level(0, {}).sigma_over_h, 0.0);
+}
+
 TEST(NoiseModels, LabelsAndValidation) {
   NoiseModel m;
   EXPECT_EQ(noise_label(2, m), "h^2");  // the paper's labels, unchanged
