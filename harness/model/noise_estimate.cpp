@@ -12,16 +12,50 @@
 
 namespace curvbench {
 
-double estimate_sigma_over_h(const Mesh& mesh) {
+namespace {
+
+// Median of the dihedral angles of the manifold interior edges (each once), degrees; 0 for none.
+double median_dihedral_angle(const Mesh& mesh) {
+  std::vector<double> angles;
+  for (int f = 0; f < mesh.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k)
+      if (mesh.face_neighbor(f, k) > f) {
+        const double a = dihedral_angle_deg(mesh, f, k);
+        if (!std::isnan(a)) angles.push_back(a);
+      }
+  if (angles.empty()) return 0.0;
+  auto mid = angles.begin() + static_cast<std::ptrdiff_t>(angles.size() / 2);
+  std::nth_element(angles.begin(), mid, angles.end());
+  return *mid;
+}
+
+}  // namespace
+
+NoiseEstimate estimate_noise(const Mesh& mesh, double crease_angle) {
   constexpr int kDegree = 4;
+  NoiseEstimate e;
+  e.h = mesh.mean_edge_length();
+  (void)detect_creases(mesh, crease_angle);  // throws UsageError for an angle out of range
+  e.crease_angle = std::fmax(crease_angle, kCreaseOverMedianAngle * median_dihedral_angle(mesh));
+  const Creases creases = e.crease_angle < 180.0 ? detect_creases(mesh, e.crease_angle) : Creases{};
+  e.sharp_edges = creases.num_edges();
   RingCollector rings(mesh);
   FitSettings settings;
   settings.degree = kDegree;
   settings.include_constant = true;
   FitScratch scratch;
-  std::vector<double> heights;
+  // |height| of each vertex above its fit: away from creases, and next to one (a crease vertex
+  // in the fit neighbourhood); crease vertices themselves are not fitted.
+  std::vector<double> away, near;
+  auto is_crease = [&](int v) {
+    return !creases.is_vertex.empty() && creases.is_vertex[static_cast<size_t>(v)] != 0;
+  };
   for (int v = 0; v < mesh.num_vertices(); ++v) {
     if (mesh.is_boundary_vertex(v)) continue;
+    if (is_crease(v)) {
+      ++e.crease_vertices;
+      continue;
+    }
     rings.collect_at_least(v, 2.0, min_neighbours(kDegree), 4.0);
     const auto nb = rings.neighbours();
     if (static_cast<int>(nb.size()) < min_neighbours(kDegree) ||
@@ -42,14 +76,25 @@ double estimate_sigma_over_h(const Mesh& mesh) {
     }
     const FitResult fit = fit_polynomial(u, w, f, none, settings, scratch);
     if (fit.degree < 2) continue;
-    heights.push_back(std::fabs(fit.taylor(kF, 0)));  // the vertex is at height 0
+    const double height = std::fabs(fit.taylor(kF, 0));  // the vertex is at height 0
+    (std::any_of(nb.begin(), nb.end(), is_crease) ? near : away).push_back(height);
   }
+  e.near_crease_vertices = static_cast<int>(near.size());
+  std::vector<double>& heights = away.empty() ? near : away;
+  e.creases_left_out = !away.empty();
   if (heights.empty())
-    throw InputError("recommend: cannot estimate the noise: no interior vertex has " +
+    throw InputError("cannot estimate the noise: no interior vertex off the creases has " +
                      std::to_string(min_neighbours(kDegree)) + " neighbours within 4 rings");
+  e.vertices_used = static_cast<int>(heights.size());
   auto mid = heights.begin() + static_cast<std::ptrdiff_t>(heights.size() / 2);
   std::nth_element(heights.begin(), mid, heights.end());
-  return 1.4826 * *mid / kNoiseResidualGain / mesh.mean_edge_length();
+  e.sigma_over_h = 1.4826 * *mid / kNoiseResidualGain / e.h;
+  e.sigma_over_h2 = e.sigma_over_h / e.h;
+  return e;
+}
+
+double estimate_sigma_over_h(const Mesh& mesh) {
+  return estimate_noise(mesh).sigma_over_h;
 }
 
 }  // namespace curvbench
