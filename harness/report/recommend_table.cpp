@@ -246,6 +246,7 @@ Advice advise(const Mesh& mesh, double noise, const RecommendationTable& table) 
   const Creases creases = detect_creases(mesh, a.crease_angle);
   a.sharp_edges = creases.num_edges();
   a.crease_vertices = creases.num_vertices();
+  a.crease_vertex_ids = creases.vertices;
   if (a.noise_estimated) {
     const NoiseEstimate e = estimate_noise(mesh, a.crease_angle);
     a.sigma_over_h = e.sigma_over_h;
@@ -352,7 +353,10 @@ std::string advice_text(const Advice& a, const std::string& mesh_path, const std
        "the normals')\n";
   s += "creases:    " + std::to_string(a.sharp_edges) + " sharp edges (face normals more than " +
        format_g(a.crease_angle) + " degrees apart), " + std::to_string(a.crease_vertices) +
-       " crease vertices" + (a.crease_vertices > 0 ? ": no smooth-surface curvature there" : "") +
+       " crease vertices" +
+       (a.crease_vertices > 0
+            ? ": no smooth-surface curvature there (`--format json` lists them, crease_vertex_ids)"
+            : "") +
        (a.noise_estimated && a.noise_crease_vertices > 0
             ? "; the noise estimate left out " + std::to_string(a.noise_crease_vertices) +
                   " crease vertices and the " + std::to_string(a.noise_near_crease_vertices) +
@@ -408,7 +412,11 @@ std::string advice_json(const Advice& a, const std::string& mesh_path, const std
        ", \"sharp_edges\": " + std::to_string(a.sharp_edges) +
        ", \"crease_vertices\": " + std::to_string(a.crease_vertices) +
        ", \"noise_crease_vertices\": " + std::to_string(a.noise_crease_vertices) +
-       ", \"noise_near_crease_vertices\": " + std::to_string(a.noise_near_crease_vertices);
+       ", \"noise_near_crease_vertices\": " + std::to_string(a.noise_near_crease_vertices) +
+       ", \"crease_vertex_ids\": [";
+  for (size_t i = 0; i < a.crease_vertex_ids.size(); ++i)
+    j += (i ? ", " : "") + std::to_string(a.crease_vertex_ids[i]);
+  j += "]";
   j += ", \"table\": " + json_string(a.table) + ", \"provenance\": " + json_string(a.provenance) +
        ", \"row\": {";
   for (size_t i = 0; i < a.header.size() && i < r.fields.size(); ++i)

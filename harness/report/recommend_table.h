@@ -114,7 +114,8 @@ struct Advice {
   double sigma_over_h2 = 0.0;
   double crease_angle = kDefaultCreaseAngle;  ///< degrees (mesh/creases.h)
   int sharp_edges = 0;                        ///< at crease_angle
-  int crease_vertices = 0;  ///< on a sharp edge: no smooth-surface curvature there
+  int crease_vertices = 0;             ///< on a sharp edge: no smooth-surface curvature there
+  std::vector<int> crease_vertex_ids;  ///< those vertices, increasing
   /// Left out of the noise estimate (when estimated; harness/model/noise_estimate.h, which may
   /// take its creases at a larger angle on a noisy mesh): crease vertices, and the vertices with
   /// a crease vertex in their fit.
