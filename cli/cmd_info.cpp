@@ -1,5 +1,7 @@
-// `curvbench info MESH [--skip-invalid]`: counts, boundary, defects (mesh/mesh_checks.h), mean
-// edge length, Euler characteristic, orientation. What the reader dropped (faces with fewer than
+// `curvbench info MESH [--skip-invalid] [--crease-angle DEG]`: counts, boundary, defects
+// (mesh/mesh_checks.h), mean edge length, Euler characteristic, orientation, sharp edges and
+// crease vertices (mesh/creases.h) and the noise estimate away from them
+// (harness/model/noise_estimate.h). What the reader dropped (faces with fewer than
 // 3 vertices or a repeated index; with --skip-invalid, vertices with NaN/Inf coordinates and
 // their faces) is also reported as a one-line warning on stderr.
 #include <array>
@@ -8,6 +10,10 @@
 #include <string>
 
 #include "cli/commands.h"
+#include "core/errors.h"
+#include "core/text.h"
+#include "harness/model/noise_estimate.h"
+#include "mesh/creases.h"
 #include "mesh/io.h"
 #include "mesh/mesh_checks.h"
 
@@ -18,6 +24,7 @@ namespace {
 struct InfoOptions {
   std::string path;
   bool skip_invalid = false;
+  double crease_angle = kDefaultCreaseAngle;
 };
 
 }  // namespace
@@ -34,6 +41,9 @@ Mesh read_input_mesh(const std::string& path, bool skip_invalid, MeshReadReport&
 namespace {
 
 int run_info(const InfoOptions& o) {
+  if (!(o.crease_angle > 0 && o.crease_angle < 180))
+    throw UsageError("--crease-angle " + format_g(o.crease_angle) +
+                     ": the angle between face normals must be in (0, 180) degrees");
   MeshReadReport report;
   const Mesh mesh = read_input_mesh(o.path, o.skip_invalid, report);
   const MeshChecks c = check_mesh(mesh);
@@ -86,6 +96,25 @@ int run_info(const InfoOptions& o) {
   if (!mesh.has_boundary() && mesh.is_consistently_oriented())
     std::printf("signed volume:         %.6g (%s)\n", vol,
                 vol > 0 ? "outward normals" : "inward normals");
+  const Creases creases = detect_creases(mesh, o.crease_angle);
+  std::printf("sharp edges:           %d (face normals more than %g degrees apart)\n",
+              creases.num_edges(), o.crease_angle);
+  std::printf("crease vertices:       %d\n", creases.num_vertices());
+  try {
+    const NoiseEstimate e = estimate_noise(mesh, o.crease_angle);
+    std::printf(
+        "noise estimate:        sigma/h = %.3g, sigma/h^2 = %.3g (from %d vertices; %d "
+        "crease vertices and %d next to one left out",
+        e.sigma_over_h, e.sigma_over_h2, e.vertices_used, e.crease_vertices,
+        e.near_crease_vertices);
+    if (!e.creases_left_out) std::printf(", then counted: no other vertex has a fit");
+    if (e.crease_angle > o.crease_angle)
+      std::printf("; creases taken at %.3g degrees, %g times the median dihedral angle",
+                  e.crease_angle, kCreaseOverMedianAngle);
+    std::printf(")\n");
+  } catch (const InputError& e) {
+    std::printf("noise estimate:        none (%s)\n", e.what());
+  }
   return 0;
 }
 
@@ -95,12 +124,17 @@ Command add_info_command(CLI::App& app) {
   auto* sub = app.add_subcommand("info",
                                  "Print counts, boundary, defects (zero-area, duplicate and "
                                  "non-manifold elements, components), mean edge length, Euler "
-                                 "characteristic and orientation of a mesh");
+                                 "characteristic, orientation, sharp edges and the noise "
+                                 "estimate of a mesh");
   auto o = std::make_shared<InfoOptions>();
   sub->add_option("MESH", o->path, "Mesh file (.off, .obj, .ply)")->required();
   sub->add_flag("--skip-invalid", o->skip_invalid,
                 "Drop vertices with a NaN/Inf coordinate and the faces using them (reported) "
                 "instead of failing");
+  sub->add_option("--crease-angle", o->crease_angle,
+                  "An edge is sharp (a crease) when its two faces' normals are more than this many "
+                  "degrees apart, in (0, 180); crease vertices are left out of the noise estimate")
+      ->capture_default_str();
   return [o]() { return run_info(*o); };
 }
 

@@ -23,6 +23,7 @@ Command add_methods_command(CLI::App& app);
 Command add_recommend_command(CLI::App& app);
 Command add_report_command(CLI::App& app);
 Command add_safeguard_command(CLI::App& app);
+Command add_noise_check_command(CLI::App& app);
 
 /// Reads the mesh a command was given (read_mesh with --skip-invalid as `skip_invalid`), printing
 /// each read warning (dropped faces, skipped vertices) to stderr as "curvbench: warning: ...".

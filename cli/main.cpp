@@ -41,6 +41,7 @@ int main(int argc, char** argv) {
   add(&cli::add_recommend_command);
   add(&cli::add_report_command);
   add(&cli::add_safeguard_command);
+  add(&cli::add_noise_check_command);
 
   try {
     app.parse(argc, argv);

@@ -17,9 +17,10 @@
 #include <string>
 #include <vector>
 
+#include "harness/model/noise_estimate.h"
+#include "harness/model/results_table.h"
 #include "harness/report/model.h"
 #include "harness/report/sweeps.h"
-#include "harness/model/results_table.h"
 #include "mesh/mesh.h"
 
 namespace curvbench {
@@ -83,16 +84,5 @@ inline constexpr int kMinRecommendVertices = 50;
 inline constexpr double kIsosurfaceSmallAngleFraction = 0.01;
 inline constexpr double kWellShapedMinAngle = 20.0;
 MeshClass classify_mesh(const Mesh& mesh);
-
-/// sigma/h estimated from the mesh: per interior vertex, the height of the vertex above the
-/// degree-4 polynomial fitted (unweighted least squares with a constant term, the fitting
-/// routine of LHF-4) to its neighbours' heights, ring 2 grown to at least 23 neighbours, in the
-/// frame of its area-weighted normal; sigma = 1.4826 x median |height| / kNoiseResidualGain
-/// (a robust deviation; the gain, the ratio of that deviation to the true sigma measured on the
-/// well-shaped torus, level 2, at sigma/h = 0.01, 0.03 and 0.1, accounts for the noise of the
-/// fitted surface itself), divided by the mean edge length. Throws
-/// InputError when no vertex has enough neighbours.
-inline constexpr double kNoiseResidualGain = 1.22;
-double estimate_sigma_over_h(const Mesh& mesh);
 
 }  // namespace curvbench

@@ -12,8 +12,8 @@
 
 #include "core/errors.h"
 #include "core/text.h"
-#include "harness/report/sweeps.h"
 #include "harness/model/results_table.h"
+#include "harness/report/sweeps.h"
 #include "mesh/io.h"
 #include "methods/estimator.h"
 #include "methods/option_schema.h"
@@ -242,13 +242,25 @@ Advice advise(const Mesh& mesh, double noise, const RecommendationTable& table) 
   Advice a;
   a.mesh_class = classify_mesh(mesh);
   a.noise_estimated = std::isnan(noise);
-  a.sigma_over_h = a.noise_estimated ? estimate_sigma_over_h(mesh) : noise;
+  const Creases creases = detect_creases(mesh, a.crease_angle);
+  a.sharp_edges = creases.num_edges();
+  a.crease_vertices = creases.num_vertices();
+  a.crease_vertex_ids = creases.vertices;
+  if (a.noise_estimated) {
+    const NoiseEstimate e = estimate_noise(mesh, a.crease_angle);
+    a.sigma_over_h = e.sigma_over_h;
+    a.noise_crease_vertices = e.crease_vertices;
+    a.noise_near_crease_vertices = e.near_crease_vertices;
+  } else {
+    a.sigma_over_h = noise;
+  }
   a.noise_level = nearest_noise_level(a.sigma_over_h);
   a.table = table.name;
   a.provenance = table.provenance;
   a.header = table.header;
   a.vertices = mesh.num_vertices();
   a.h = mesh.mean_edge_length();
+  a.sigma_over_h2 = a.sigma_over_h / a.h;
   for (const RecommendationRow& r : table.rows)
     if (r.quality == a.mesh_class.quality && same_level(r.sigma_over_h, a.noise_level)) {
       a.row = r;
@@ -334,6 +346,22 @@ std::string advice_text(const Advice& a, const std::string& mesh_path, const std
        (a.noise_estimated ? " (estimated from the residuals of a degree-4 fit at each vertex)"
                           : " (given)") +
        ", nearest level of the table " + format_g(a.noise_level) + "\n";
+  std::snprintf(buf, sizeof buf, "%.3g", a.sigma_over_h2);
+  s += "curvature:  sigma/h^2 = " + std::string(buf) +
+       " (per unit length: the scale of the curvature error this noise causes, where sigma/h is "
+       "the normals')\n";
+  s += "creases:    " + std::to_string(a.sharp_edges) + " sharp edges (face normals more than " +
+       format_g(a.crease_angle) + " degrees apart), " + std::to_string(a.crease_vertices) +
+       " crease vertices" +
+       (a.crease_vertices > 0
+            ? ": no smooth-surface curvature there (`--format json` lists them, crease_vertex_ids)"
+            : "") +
+       (a.noise_estimated && a.noise_crease_vertices > 0
+            ? "; the noise estimate left out " + std::to_string(a.noise_crease_vertices) +
+                  " crease vertices and the " + std::to_string(a.noise_near_crease_vertices) +
+                  " next to them"
+            : "") +
+       "\n";
   if (!a.has_choice) {
     s += "estimator:  none: no sweep ran for " + a.mesh_class.quality + " meshes at sigma/h " +
          format_g(a.noise_level) +
@@ -378,6 +406,16 @@ std::string advice_json(const Advice& a, const std::string& mesh_path, const std
     j += ", \"method\": null, \"options\": {}, \"label\": null, \"quantity\": null, \"norm\": "
          "null, \"error\": null, \"command\": null";
   }
+  j += ", \"sigma_over_h2\": " + json_number(a.sigma_over_h2) +
+       ", \"crease_angle\": " + json_number(a.crease_angle) +
+       ", \"sharp_edges\": " + std::to_string(a.sharp_edges) +
+       ", \"crease_vertices\": " + std::to_string(a.crease_vertices) +
+       ", \"noise_crease_vertices\": " + std::to_string(a.noise_crease_vertices) +
+       ", \"noise_near_crease_vertices\": " + std::to_string(a.noise_near_crease_vertices) +
+       ", \"crease_vertex_ids\": [";
+  for (size_t i = 0; i < a.crease_vertex_ids.size(); ++i)
+    j += (i ? ", " : "") + std::to_string(a.crease_vertex_ids[i]);
+  j += "]";
   j += ", \"table\": " + json_string(a.table) + ", \"provenance\": " + json_string(a.provenance) +
        ", \"row\": {";
   for (size_t i = 0; i < a.header.size() && i < r.fields.size(); ++i)

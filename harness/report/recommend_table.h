@@ -17,7 +17,9 @@
 #include <vector>
 
 #include "curvbench/estimator_options.h"
+#include "harness/model/noise_estimate.h"
 #include "harness/report/recommend.h"
+#include "mesh/creases.h"
 #include "mesh/mesh.h"
 
 namespace curvbench {
@@ -107,9 +109,21 @@ struct Advice {
   std::vector<std::string> header;  ///< the table's header (for the row's CSV and JSON)
   int vertices = 0;                 ///< of the mesh
   double h = 0.0;                   ///< its mean edge length
+  /// sigma/h^2 = sigma_over_h / h (1/length): the noise in the unit of the curvature error it
+  /// causes (harness/model/noise_estimate.h); small sigma/h can be large here on a fine mesh.
+  double sigma_over_h2 = 0.0;
+  double crease_angle = kDefaultCreaseAngle;  ///< degrees (mesh/creases.h)
+  int sharp_edges = 0;                        ///< at crease_angle
+  int crease_vertices = 0;             ///< on a sharp edge: no smooth-surface curvature there
+  std::vector<int> crease_vertex_ids;  ///< those vertices, increasing
+  /// Left out of the noise estimate (when estimated; harness/model/noise_estimate.h, which may
+  /// take its creases at a larger angle on a noisy mesh): crease vertices, and the vertices with
+  /// a crease vertex in their fit.
+  int noise_crease_vertices = 0;
+  int noise_near_crease_vertices = 0;
 };
-/// Throws InputError as classify_mesh and estimate_sigma_over_h do, UsageError for a negative or
-/// non-finite `noise`.
+/// Throws InputError as classify_mesh and estimate_noise do, UsageError for a negative or
+/// non-finite `noise`. Creases are those of detect_creases at its default angle.
 Advice advise(const Mesh& mesh, double noise, const RecommendationTable& table);
 
 /// Whether `method` is "auto" (case-insensitive): the estimator and radius of the advice.

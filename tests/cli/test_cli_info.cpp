@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <fstream>
 
+#include "mesh/io.h"
 #include "tests/cli/cli_runner.h"
+#include "tests/mesh/crease_test_meshes.h"
 
 namespace curvbench {
 namespace {
@@ -53,6 +55,52 @@ TEST(Cli, InfoOnOctahedron) {
         "duplicate faces:       0\n", "components:            1\n"})
     EXPECT_NE(r.output.find(line), std::string::npos) << line;
   EXPECT_EQ(r.output.find("warning"), std::string::npos) << r.output;
+}
+
+// Sharp edges and the noise estimate (mesh/creases.h, harness/model/noise_estimate.h): the 12
+// edges of n = 8 segments of a meshed cube, its 12 (n - 1) + 8 crease vertices, and a noise
+// estimate of 0 from the face centres; no crease above 95 degrees, and then the fits across the
+// edges read as noise.
+TEST(Cli, InfoReportsCreasesAndNoise) {
+  const auto dir = fresh_dir("info_creases");
+  const std::string path = (dir / "cube.off").string();
+  write_mesh(path, crease_test::meshed_cube(8).mesh);
+  auto r = run_cli("info " + path);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("sharp edges:           96 (face normals more than 60 degrees apart)\n"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("crease vertices:       92\n"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("noise estimate:        sigma/h = 0, sigma/h^2 = 0 (from 6 vertices; 92 "
+                          "crease vertices and 288 next to one left out)"),
+            std::string::npos)
+      << r.output;
+  r = run_cli("info " + path + " --crease-angle 95");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("sharp edges:           0 (face normals more than 95 degrees apart)"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(r.output.find("sigma/h = 0,"), std::string::npos) << r.output;
+  for (const char* bad : {"0", "180", "-5", "nan"}) {
+    r = run_cli("info " + path + " --crease-angle " + bad);
+    EXPECT_EQ(r.exit_code, 2) << bad;
+    EXPECT_NE(r.output.find("--crease-angle"), std::string::npos) << r.output;
+  }
+}
+
+// Too few vertices for a fit: the octahedron's 12 edges (70.5 degrees) are all sharp.
+TEST(Cli, InfoOnOctahedronHasNoNoiseEstimate) {
+  const auto dir = fresh_dir("info_octa_noise");
+  const auto path = dir / "octa.off";
+  std::ofstream(path) << "OFF\n6 8 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n"
+                         "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n";
+  const auto r = run_cli("info " + path.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("sharp edges:           12 "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("crease vertices:       6\n"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("noise estimate:        none (cannot estimate the noise"),
+            std::string::npos)
+      << r.output;
 }
 
 TEST(Cli, InfoReportsBoundaryAndQuads) {

@@ -10,7 +10,10 @@
 #include <string>
 #include <tuple>
 
+#include "core/text.h"
+#include "mesh/io.h"
 #include "tests/cli/cli_runner.h"
+#include "tests/mesh/crease_test_meshes.h"
 
 namespace curvbench {
 namespace {
@@ -209,6 +212,45 @@ TEST(CliRecommend, FormatsCsvAndJson) {
   r = run_cli("recommend --help");
   EXPECT_NE(r.output.find(fs::canonical(kCommitted).string()), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("(curvbench "), std::string::npos) << r.output;
+  fs::remove_all(dir);
+}
+
+// A meshed cube (16 segments an edge): 12 x 16 sharp edges and 12 x 15 + 8 crease vertices,
+// named in both formats; its noise, estimated off the creases, is 0 in both units; given, the
+// second unit is sigma/h over h.
+TEST(CliRecommend, CreasesAndNoiseInBothUnits) {
+  const auto dir = fresh_dir("recommend_creases");
+  const std::string mesh = (dir / "cube.off").string();
+  const crease_test::CreasedMesh built = crease_test::meshed_cube(16);
+  const Mesh& cube = built.mesh;
+  write_mesh(mesh, cube);
+  std::string ids;  // the crease vertices as built, as the JSON lists them
+  for (int v : built.crease_vertices) ids += (ids.empty() ? "" : ", ") + std::to_string(v);
+  auto r = run_cli("recommend " + mesh);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("noise:      sigma/h = 0 (estimated"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("curvature:  sigma/h^2 = 0 ("), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("creases:    192 sharp edges (face normals more than 60 degrees apart), "
+                          "188 crease vertices: no smooth-surface curvature there (`--format "
+                          "json` lists them, crease_vertex_ids); the noise estimate left out 188 "
+                          "crease vertices and the 864 next to them\n"),
+            std::string::npos)
+      << r.output;
+  r = run_cli("recommend " + mesh + " --format json");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("\"sigma_over_h2\": 0, \"crease_angle\": 60, \"sharp_edges\": 192, "
+                          "\"crease_vertices\": 188, \"noise_crease_vertices\": 188, "
+                          "\"noise_near_crease_vertices\": 864, \"crease_vertex_ids\": [" +
+                          ids + "], \"table\": "),
+            std::string::npos)
+      << r.output;
+  r = run_cli("recommend " + mesh + " --noise 0.01 --format json");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("\"sigma_over_h2\": " + json_number(0.01 / cube.mean_edge_length()) +
+                          ", \"crease_angle\": 60, \"sharp_edges\": 192, \"crease_vertices\": "
+                          "188, \"noise_crease_vertices\": 0, \"noise_near_crease_vertices\": 0,"),
+            std::string::npos)
+      << r.output;
   fs::remove_all(dir);
 }
 
