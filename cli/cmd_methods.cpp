@@ -1,8 +1,8 @@
 // `curvbench methods [--labels LO-HI] [--options [--markdown flags|spellings]]`: the registered
-// estimators (name, degrees, one line each) and the estimator options, both from their tables
-// (methods/registry.cpp, include/curvbench/estimator_options.h). --labels prints one label a line,
-// each fit at each of its degrees in LO..HI and each degree-free operator once, for scripts
-// (tools/realmeshes.sh).
+// estimators (name, degrees, the option that sizes the neighbourhood, one line each) and the
+// estimator options, both from their tables (methods/registry.cpp,
+// include/curvbench/estimator_options.h). --labels prints one label a line, each fit at each of its
+// degrees in LO..HI and each degree-free operator once, for scripts (tools/realmeshes.sh).
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -46,10 +46,15 @@ int run_methods(const MethodsOptions& o) {
                   option.default_text.c_str(), option.help.c_str());
     return 0;
   }
+  // name, degrees, the option that sizes its neighbourhood (its registry line's
+  // NeighbourhoodSize: rings, ball-factor; "-" for a fixed 1-ring), summary
+  std::printf("%-17s %-7s %-11s %s\n", "method", "degrees", "size", "what it is");
   for (const MethodInfo& m : method_table()) {
     const std::string degrees =
         m.is_fit() ? std::to_string(m.min_degree) + ".." + std::to_string(m.max_degree) : "-";
-    std::printf("%-13s %-5s %s\n", m.name.c_str(), degrees.c_str(), m.summary.c_str());
+    const std::string size = *radius_option(m.radius) ? radius_option(m.radius) : "-";
+    std::printf("%-17s %-7s %-11s %s\n", m.name.c_str(), degrees.c_str(), size.c_str(),
+                m.summary.c_str());
   }
   return 0;
 }

@@ -381,6 +381,7 @@ std::string taken_by(const OptionInfo& o) {
     case OptionScope::operators:
       return "operators";
     case OptionScope::ball_radius:
+      return "ball-sized methods";  // a scope, not a list: a new ball-sized method changes nothing
     case OptionScope::listed:
       break;
   }
@@ -439,7 +440,7 @@ std::string option_table_markdown(OptionTableStyle style) {
     const std::string value = away_from_default(o);
     const std::string python = o.type == OptionType::boolean  ? (value == "yes" ? "True" : "False")
                                : o.type == OptionType::choice ? "\"" + o.choices.back() + "\""
-        : o.type == OptionType::text   ? "\"" + value + "\""
+                               : o.type == OptionType::text   ? "\"" + value + "\""
                                                               : value;
     md += "| " + o.name + " (" + taken_by(o) + ") | `" + cell(flag(o)) + "` | " +
           (o.role == OptionRole::run ? std::string("-") : "`" + o.name + "=" + cell(value) + "`") +
