@@ -48,7 +48,7 @@ TEST(CliEstimateOptions, ReachTheMethodAndBadUseExitsTwo) {
   expect_usage_error("--method meyer --vertex-normals cotan", "valid: default, area, angle, max");
   expect_usage_error("--method meyer --quadric-constant", "applies to method 'quadric' only");
   expect_usage_error("--method quadric --ball-factor 2",
-                     "applies to methods 'normal-cycle' and 'icc' only");
+                     "only (the methods sized by a ball), not to 'quadric'");
   expect_usage_error("--method normal-cycle --ball-factor -1", "ball-factor -1: out of range");
 
   const auto help = run_cli("estimate --help");

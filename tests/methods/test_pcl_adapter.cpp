@@ -33,7 +33,11 @@ struct Row {
 
 // Writes the mesh, runs the script on it, returns the rows (one per vertex) of its CSV.
 std::vector<Row> run_adapter(const Mesh& m) {
-  const fs::path dir = fs::temp_directory_path() / "curvbench_test_pcl_adapter";
+  // One folder per test: ctest runs the tests of this file in parallel processes.
+  const fs::path dir =
+      fs::temp_directory_path() /
+      ("curvbench_test_pcl_adapter_" +
+       std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
   fs::create_directories(dir);
   const std::string mesh = (dir / "mesh.ply").string(), out = (dir / "out.csv").string();
   write_mesh(mesh, m);
