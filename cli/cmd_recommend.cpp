@@ -1,6 +1,6 @@
 // `curvbench recommend MESH [--noise SIGMA_OVER_H] [--results DIR] [--format text|csv|json]`: the
-// advice of the recommendations table for a mesh (harness/report/recommend_table.h): its quality class
-// from its triangle angles (classify_mesh), its noise given or estimated
+// advice of the recommendations table for a mesh (harness/report/recommend_table.h): its quality
+// class from its triangle angles (classify_mesh), its noise given or estimated
 // (estimate_sigma_over_h), the estimator and radius of the table's row for them, the error the
 // sweep measured, and the `curvbench estimate` command line that runs them.
 #include <cmath>
@@ -56,7 +56,8 @@ int run_recommend(const RecommendOptions& o) {
       o.results.empty() ? default_recommendations() : read_recommendations_csv(o.results);
   MeshReadReport report;
   const Mesh mesh = read_input_mesh(o.path, o.skip_invalid, report);
-  const Advice a = advise(mesh, o.noise, table);
+  const std::optional<AdviceTable> cases = advice_cases_beside(table.name);
+  const Advice a = advise(mesh, o.noise, table, cases ? &*cases : nullptr);
   const std::string command = a.has_choice
                                   ? estimate_command(program_name(), o.path, a.choice,
                                                      o.skip_invalid, advice_output_path(o.path))

@@ -13,6 +13,7 @@
 #include "core/atomic_file.h"
 #include "core/build_info.h"
 #include "core/errors.h"
+#include "harness/report/advice.h"
 #include "harness/report/plot_styles.h"
 #include "harness/report/recommend_table.h"
 #include "harness/report/site_assets.h"
@@ -230,6 +231,9 @@ std::string summary_markdown(const ReportContent& content, const std::vector<Lea
       "estimate MESH --method auto` runs it. The table behind it: "
       "[report/sweeps.md](report/sweeps.md) and the site's advice page.");
   md << report::to_markdown(advice);
+  const std::string validation_csv = dir + "/advice_cross_validation.csv";
+  if (fs::exists(validation_csv))
+    md << report::to_markdown(cross_validation_section(read_cross_validation_csv(validation_csv)));
 
   report::Section details{"details", "Details", {}};
   std::string list = "- [Paper tables 2, 4 and 5](report/paper-tables.md)\n";
@@ -572,7 +576,9 @@ std::vector<report::Section> advice_sections(const std::string& dir) {
              t.text(i, cc), report::Cell::number(t.number(i, cce), scientific(t.number(i, cce)))});
   }
   s.table(std::move(tab));
-  return {s};
+  const std::string validation_csv = dir + "/advice_cross_validation.csv";
+  if (!fs::exists(validation_csv)) return {s};
+  return {s, cross_validation_section(read_cross_validation_csv(validation_csv))};
 }
 
 void copy_file_checked(const std::string& from, const fs::path& to) {

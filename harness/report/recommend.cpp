@@ -11,6 +11,7 @@
 #include "core/build_info.h"
 #include "core/errors.h"
 #include "core/text.h"
+#include "harness/report/advice.h"
 #include "mesh/mesh_checks.h"
 #include "meshgen/generate.h"
 
@@ -50,12 +51,6 @@ std::string case_text(const BestRadius& b) {
 
 bool same_level(double a, double b) {
   return std::fabs(a - b) <= 1e-9 * std::fmax(1.0, b);
-}
-
-// sigma/h of normal Gaussian noise (no noise is 0), NaN for any other noise.
-double normal_sigma(const NoiseLevel& noise) {
-  if (noise.sigma_over_h == 0.0) return 0.0;
-  return noise.model == noise_level(1, {}).model ? noise.sigma_over_h : std::nan("");
 }
 
 }  // namespace
@@ -107,7 +102,7 @@ std::vector<Recommendation> recommendations(const std::vector<ErrorRow>& rows,
       for (const ErrorRow& r : rows) {
         if (r.quantity != kRecommendQuantity || r.norm != kRecommendNorm ||
             quality_of_family(r.family) != quality ||
-            !same_level(normal_sigma(r.noise_level), level))
+            !same_level(normal_noise_sigma(r.noise_level), level))
           continue;
         if (!cell.empty() &&
             (r.experiment != cell.front().experiment || r.level != cell.front().level))
