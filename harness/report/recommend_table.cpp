@@ -447,7 +447,7 @@ std::string feature_advice_text(const Advice& a) {
     s += ": the advice below extrapolates, its error range is not measured for such meshes\n";
   }
   for (const QuantityAdvice& q : a.quantities) {
-    const std::string head = q.pick.quantity == "normal" ? "normals:    " : "curvature:  ";
+    const std::string head = q.pick.quantity == "normal" ? "normals:    " : "curvatures: ";
     if (!q.pick.found) {
       s += head + "none: no swept mesh has " + advice_quantity_words(q.pick.quantity) + "\n";
       continue;
@@ -613,12 +613,13 @@ std::string advice_json(const Advice& a, const std::string& mesh_path, const std
   for (size_t i = 0; i < a.crease_vertex_ids.size(); ++i)
     j += (i ? ", " : "") + std::to_string(a.crease_vertex_ids[i]);
   j += "]";
-  if (a.has_feature_advice) j += feature_advice_json(a);
   j += ", \"table\": " + json_string(a.table) + ", \"provenance\": " + json_string(a.provenance) +
        ", \"row\": {";
   for (size_t i = 0; i < a.header.size() && i < r.fields.size(); ++i)
     j += std::string(i ? ", " : "") + json_string(a.header[i]) + ": " + json_string(r.fields[i]);
-  return j + "}}\n";
+  j += "}";
+  if (a.has_feature_advice) j += feature_advice_json(a);
+  return j + "}\n";
 }
 
 std::string advice_csv(const Advice& a) {

@@ -9,7 +9,6 @@
 
 #include "core/atomic_file.h"
 #include "core/build_info.h"
-#include "core/errors.h"
 #include "core/text.h"
 #include "harness/model/metrics.h"
 #include "harness/report/advice.h"
@@ -430,15 +429,16 @@ bool sweeps_section(const std::vector<Experiment>& experiments, const ReportOpti
     for (report::Block& b : choosing.blocks) out.blocks.push_back(std::move(b));
     if (options.write_tables) write_recommendations_csv(dir + "/recommendations.csv", recs);
     // The advice from mesh features and its leave-one-family-out cross-validation (advice.h),
-    // the features measured on the swept meshes without noise.
+    // the features measured on the swept meshes without noise (a label no mesh line gives is
+    // read as a family name with its default options).
     const auto features_of = [&](const std::string& label, int level) {
-      const auto it = swept_meshes.find(label);
-      if (it == swept_meshes.end())
-        throw InputError("sweeps: the rows' mesh " + label + " is no mesh line of a radius sweep");
       MeshSpec spec;
-      spec.family = it->second.family;
-      spec.shape = it->second.shape;
+      spec.family = label;
       spec.level = level;
+      if (const auto it = swept_meshes.find(label); it != swept_meshes.end()) {
+        spec.family = it->second.family;
+        spec.shape = it->second.shape;
+      }
       return measure_mesh_features(generate_mesh(spec).mesh);
     };
     const std::vector<AdviceCase> cases = advice_cases(radius_rows, timings, features_of);

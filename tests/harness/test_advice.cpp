@@ -224,7 +224,7 @@ TEST(Advice, RecommendTextSaysHowSureAndWhatIsOutOfRange) {
   EXPECT_NE(line.find("(swept meshes 1 to 4.4)"), std::string::npos) << line;
   EXPECT_NE(text.find("cross-validated"), std::string::npos) << text;
   EXPECT_NE(text.find("normals:    ICC"), std::string::npos) << text;
-  EXPECT_NE(text.find("curvature:  ICC"), std::string::npos) << text;
+  EXPECT_NE(text.find("curvatures: ICC"), std::string::npos) << text;
   const std::string json = advice_json(a, "m.off", "");
   EXPECT_NE(json.find("{\"feature\": \"anisotropy\""), std::string::npos) << json;
 }
