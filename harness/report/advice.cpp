@@ -96,10 +96,11 @@ const AdviceCase* best_of(const std::vector<const AdviceCase*>& cell) {
   return best;
 }
 
+// "1.43"; a regret of 1000 or more (a best error at round-off, an exact method) as "5.1e+12".
 std::string regret_text(double r) {
   if (!std::isfinite(r)) return "n/a";
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f", r);
+  std::snprintf(buf, sizeof buf, r < 1000 ? "%.2f" : "%.2g", r);
   return buf;
 }
 
