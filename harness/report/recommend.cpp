@@ -197,7 +197,8 @@ report::Section recommendations_section(const std::vector<Recommendation>& recs)
       "label and mesh, the same at every noise level). A noise level no sweep ran says \"not "
       "swept\" (`curvbench run --all --full` runs them all). Every cell names its case label as "
       "in `<experiment>.csv`; the rows are in `recommendations.csv`. `curvbench recommend "
-      "MESH` prints the row that matches a mesh. The times are wall times of single cases, a "
+      "MESH` falls back on the row that matches a mesh when it has no advice cases (the "
+      "advice from mesh features: next section). The times are wall times of single cases, a "
       "few milliseconds each on these meshes, taken while other cases run: unlike the errors "
       "they vary from run to run, and so may the cheapest pick (`make bench` measures "
       "speed).");

@@ -1,8 +1,10 @@
 // The recommendations table read back (results/recommendations.csv, written by
 // write_recommendations_csv in harness/report/recommend.h) and the advice `curvbench recommend`,
-// `curvbench estimate --method auto` and Python's estimate(method="auto") give from it: the row
-// that matches a mesh's quality class and noise, the estimator and radius it names, and the
-// `curvbench estimate` command line that runs them.
+// `curvbench estimate --method auto` and Python's estimate(method="auto") give from it and the
+// advice cases beside it (advice_cases.csv, harness/report/advice.h): per quantity the estimator
+// and radius learned from the swept meshes nearest in the mesh's features, with what
+// cross-validation measured there (or, without advice cases, the row that matches the mesh's
+// quality class and noise), and the `curvbench estimate` command line that runs them.
 //
 // The default table is a file found from where the code runs, not from the working folder:
 // `make install` puts results/recommendations.csv into PREFIX/share/curvbench/, and a build
