@@ -6,7 +6,6 @@
 #include <filesystem>
 #include <map>
 #include <sstream>
-#include <tuple>
 
 #include "core/atomic_file.h"
 #include "core/build_info.h"
@@ -112,8 +111,8 @@ std::string share_text(double s) {
 }
 
 constexpr const char* kCaseColumns[] = {"experiment", "family", "level", "vertices", "h"};
-constexpr const char* kCaseTailColumns[] = {"size_over_h", "sigma_over_h", "quantity", "norm",
-                                            "label",       "error",        "seconds"};
+constexpr const char* kCaseTailColumns[] = {"size_over_h", "sigma_over_h", "quantity",
+                                            "norm",        "label",        "error"};
 
 }  // namespace
 
@@ -132,11 +131,7 @@ double normal_noise_sigma(const NoiseLevel& noise) {
 }
 
 std::vector<AdviceCase> advice_cases(const std::vector<ErrorRow>& rows,
-                                     const std::vector<TimingRow>& timings,
                                      const FeaturesOf& features_of) {
-  std::map<std::tuple<std::string, std::string, int, std::string>, double> seconds;
-  for (const TimingRow& t : timings)
-    seconds.try_emplace({t.experiment, t.family, t.level, t.method}, t.seconds);
   std::map<std::pair<std::string, int>, MeshFeatures> features;
   std::vector<AdviceCase> out;
   for (const ErrorRow& r : rows) {
@@ -158,8 +153,6 @@ std::vector<AdviceCase> advice_cases(const std::vector<ErrorRow>& rows,
     c.quantity = r.quantity;
     c.label = r.method;
     c.error = r.error;
-    const auto t = seconds.find({r.experiment, r.family, r.level, r.method});
-    if (t != seconds.end()) c.seconds = t->second;
     out.push_back(std::move(c));
   }
   return out;
@@ -180,7 +173,7 @@ void write_advice_cases_csv(const std::string& path, const std::vector<AdviceCas
       out << ',' << format_double(c.features.*(f.field));
     out << ',' << format_double(c.features.size_over_h) << ',' << format_g(c.sigma_over_h) << ','
         << c.quantity << ',' << kAdviceNorm << ',' << c.label << ',' << format_double(c.error)
-        << ',' << format_double(c.seconds) << "\n";
+        << "\n";
   }
   write_file_atomic(path, out.str());
 }
@@ -198,7 +191,7 @@ AdviceTable parse_advice_cases_csv(const std::string& text, const std::string& n
   const size_t ce = t.col("experiment"), cf = t.col("family"), cl = t.col("level"),
                cv = t.col("vertices"), ch = t.col("h"), csize = t.col("size_over_h"),
                cs = t.col("sigma_over_h"), cq = t.col("quantity"), cla = t.col("label"),
-               cerr = t.col("error"), csec = t.col("seconds");
+               cerr = t.col("error");
   std::vector<size_t> cfeat;
   for (const FeatureInfo& f : advice_features()) cfeat.push_back(t.col(f.name));
   const auto& quantities = advice_quantities();
@@ -219,7 +212,6 @@ AdviceTable parse_advice_cases_csv(const std::string& text, const std::string& n
                        "' is not one the advice chooses for (normal, H)");
     c.label = t.text(i, cla);
     c.error = t.number(i, cerr);
-    c.seconds = t.number(i, csec);
     table.cases.push_back(std::move(c));
   }
   if (table.cases.empty())

@@ -59,7 +59,6 @@ struct AdviceCase {
   std::string quantity;  ///< "normal", "H"
   std::string label;     ///< the case ("LHF-4 rings=2")
   double error = std::numeric_limits<double>::quiet_NaN();
-  double seconds = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct AdviceTable {
@@ -69,11 +68,10 @@ struct AdviceTable {
 };
 
 /// The cases from the radius sweeps' rows (normal Gaussian noise or none, the quantities of
-/// advice_quantities() in kAdviceNorm) and their timings; `features_of(family label, level)`
-/// gives a swept mesh's features. Order: the rows'.
+/// advice_quantities() in kAdviceNorm); `features_of(family label, level)` gives a swept mesh's
+/// features. Order: the rows'. No timings: the file is the same bytes at every run.
 using FeaturesOf = std::function<MeshFeatures(const std::string& family_label, int level)>;
 std::vector<AdviceCase> advice_cases(const std::vector<ErrorRow>& rows,
-                                     const std::vector<TimingRow>& timings,
                                      const FeaturesOf& features_of);
 
 /// Writes advice_cases.csv (provenance comment, header, one line per case) atomically.

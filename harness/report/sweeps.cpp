@@ -441,7 +441,7 @@ bool sweeps_section(const std::vector<Experiment>& experiments, const ReportOpti
       }
       return measure_mesh_features(generate_mesh(spec).mesh);
     };
-    const std::vector<AdviceCase> cases = advice_cases(radius_rows, timings, features_of);
+    const std::vector<AdviceCase> cases = advice_cases(radius_rows, features_of);
     const std::vector<CrossValidationRow> validation = cross_validate(cases);
     report::Section held_out = cross_validation_section(validation);
     out.heading(held_out.title, 0);
