@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "core/errors.h"
+#include "harness/model/experiment.h"
 #include "harness/report/advice.h"
 #include "harness/report/recommend_table.h"
 #include "mesh/io.h"
@@ -227,6 +228,24 @@ TEST(Advice, RecommendTextSaysHowSureAndWhatIsOutOfRange) {
   EXPECT_NE(text.find("curvatures: ICC"), std::string::npos) << text;
   const std::string json = advice_json(a, "m.off", "");
   EXPECT_NE(json.find("{\"feature\": \"anisotropy\""), std::string::npos) << json;
+}
+
+// The trimmed radius sweep `make experiments` runs is what the advice learns from and is
+// cross-validated on: it sweeps the families that stand for anisotropic, graded-density and
+// lantern-like meshes besides the three classes', each at the light noise levels too.
+TEST(Advice, TrimmedSweepCoversTheFamiliesAndLightNoise) {
+  const Experiment e =
+      parse_experiment(std::string(CURVBENCH_SOURCE_DIR) + "/experiments/sweep-radius.exp");
+  for (const char* family :
+       {"torus-unstructured", "torus-iso-projected", "bump-irregular", "torus-anisotropic",
+        "bump-anisotropic", "bump-density", "lantern", "lantern-squeezed", "ellipsoid"})
+    for (double sigma : {0.001, 0.003, 0.01, 0.1}) {
+      bool found = false;
+      for (const ExperimentMesh& m : e.meshes)
+        found = found || (m.family == family && m.has_noise_model &&
+                          std::fabs(m.noise_model.scale - sigma) < 1e-12);
+      EXPECT_TRUE(found) << family << " at sigma/h " << sigma;
+    }
 }
 
 }  // namespace
