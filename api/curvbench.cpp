@@ -45,13 +45,27 @@ MeshAdvice mesh_advice(const Advice& a) {
   r.method = a.choice.method;
   r.parameter = a.choice.parameter;
   r.radius = a.choice.radius;
-  r.label = a.row.best_label;
-  r.quantity = a.row.quantity;
-  r.norm = a.row.norm;
-  r.error = a.row.best_error;
-  r.experiment = a.row.experiment;
-  r.family = a.row.family;
-  r.level = a.row.level;
+  r.label = a.label;
+  r.quantity = a.quantity;
+  r.norm = a.norm;
+  r.error = a.error;
+  r.experiment = a.experiment;
+  r.family = a.family;
+  r.level = a.level;
+  if (!a.has_feature_advice) return r;
+  const QuantityAdvice& normals = a.quantities.front();
+  if (normals.pick.found) {
+    r.normal_method = normals.choice.method;
+    r.normal_parameter = normals.choice.parameter;
+    r.normal_radius = normals.choice.radius;
+    r.normal_label = normals.pick.label;
+  }
+  const QuantityAdvice& curvature = a.quantities.back();
+  r.error_low = curvature.lowest_error;
+  r.error_high = curvature.highest_error;
+  r.regret_median = curvature.validated.median;
+  r.regret_worst = curvature.validated.worst;
+  for (const FeatureOutOfRange& o : a.out_of_range) r.out_of_range.push_back(o.name);
   return r;
 }
 
@@ -124,7 +138,9 @@ EstimateResult estimate(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
   Mesh mesh = to_mesh(V, F);
   EstimateResult out;
   if (automatic) {
-    const Advice advice = advise(mesh, std::nan(""), default_recommendations());
+    const RecommendationTable table = default_recommendations();
+    const std::optional<AdviceTable> cases = advice_cases_beside(table.name);
+    const Advice advice = advise(mesh, std::nan(""), table, cases ? &*cases : nullptr);
     if (!advice.has_choice)
       throw InputError(advice.table + ": no sweep ran for " + advice.mesh_class.quality +
                        " meshes at sigma/h " + format_g(advice.noise_level) +
@@ -180,11 +196,12 @@ void read_mesh(const std::string& path, Eigen::MatrixXd& V, Eigen::MatrixXi& F,
 }
 
 MeshAdvice recommend(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
-                         const RecommendOptions& options) {
+                     const RecommendOptions& options) {
   const RecommendationTable table = options.results.empty()
                                         ? default_recommendations()
                                         : read_recommendations_csv(options.results);
-  return mesh_advice(advise(to_mesh(V, F), options.noise, table));
+  const std::optional<AdviceTable> cases = advice_cases_beside(table.name);
+  return mesh_advice(advise(to_mesh(V, F), options.noise, table, cases ? &*cases : nullptr));
 }
 
 TestMesh generate_mesh(const TestMeshOptions& options) {

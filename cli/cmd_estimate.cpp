@@ -37,8 +37,8 @@
 #include "core/text.h"
 #include "harness/model/estimate_columns.h"
 #include "harness/model/estimate_npy.h"
-#include "harness/report/recommend_table.h"
 #include "harness/model/results_table.h"
+#include "harness/report/recommend_table.h"
 #include "mesh/colormap.h"
 #include "mesh/io.h"
 #include "mesh/mesh_checks.h"
@@ -81,7 +81,9 @@ VertexColors color_of(const std::string& quantity, std::span<const VertexEstimat
 // (harness/report/recommend_table.h, as `curvbench recommend`), said on stderr.
 std::unique_ptr<Estimator> auto_estimator(const std::string& path, const Mesh& mesh,
                                           const EstimatorOptions& given) {
-  const Advice a = advise(mesh, std::nan(""), default_recommendations());
+  const RecommendationTable table = default_recommendations();
+  const std::optional<AdviceTable> cases = advice_cases_beside(table.name);
+  const Advice a = advise(mesh, std::nan(""), table, cases ? &*cases : nullptr);
   if (!a.has_choice)
     throw InputError(a.table + ": no sweep ran for " + a.mesh_class.quality +
                      " meshes at sigma/h " + format_g(a.noise_level) +
@@ -93,10 +95,11 @@ std::unique_ptr<Estimator> auto_estimator(const std::string& path, const Mesh& m
   std::fprintf(stderr,
                "curvbench estimate: --method auto chose %s (case '%s') for %s: %s mesh, sigma/h "
                "%.3g estimated (table level %s); the sweep measured a relative %s error in %s "
-               "of %s; table %s\n",
-               flags.c_str(), a.row.best_label.c_str(), path.c_str(), a.mesh_class.quality.c_str(),
-               a.sigma_over_h, format_g(a.noise_level).c_str(), a.row.norm.c_str(),
-               a.row.quantity.c_str(), scientific(a.row.best_error).c_str(), a.table.c_str());
+               "of %s on %s level %d; table %s\n",
+               flags.c_str(), a.label.c_str(), path.c_str(), a.mesh_class.quality.c_str(),
+               a.sigma_over_h, format_g(a.noise_level).c_str(), a.norm.c_str(), a.quantity.c_str(),
+               scientific(a.error).c_str(), a.family.c_str(), a.level,
+               (a.has_feature_advice ? a.advice_table : a.table).c_str());
   return est;
 }
 

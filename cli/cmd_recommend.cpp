@@ -1,8 +1,9 @@
 // `curvbench recommend MESH [--noise SIGMA_OVER_H] [--results DIR] [--format text|csv|json]`: the
-// advice of the recommendations table for a mesh (harness/report/recommend_table.h): its quality class
-// from its triangle angles (classify_mesh), its noise given or estimated
-// (estimate_sigma_over_h), the estimator and radius of the table's row for them, the error the
-// sweep measured, and the `curvbench estimate` command line that runs them.
+// advice for a mesh (harness/report/recommend_table.h): its quality class from its triangle
+// angles (classify_mesh), its noise given or estimated (estimate_noise), its features, and per
+// quantity the estimator and radius learned from the swept meshes nearest in them with the
+// cross-validated range (advice_cases.csv beside the table, harness/report/advice.h; without it
+// the class table's row), and the `curvbench estimate` command line that runs them.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -56,7 +57,8 @@ int run_recommend(const RecommendOptions& o) {
       o.results.empty() ? default_recommendations() : read_recommendations_csv(o.results);
   MeshReadReport report;
   const Mesh mesh = read_input_mesh(o.path, o.skip_invalid, report);
-  const Advice a = advise(mesh, o.noise, table);
+  const std::optional<AdviceTable> cases = advice_cases_beside(table.name);
+  const Advice a = advise(mesh, o.noise, table, cases ? &*cases : nullptr);
   const std::string command = a.has_choice
                                   ? estimate_command(program_name(), o.path, a.choice,
                                                      o.skip_invalid, advice_output_path(o.path))
@@ -75,9 +77,11 @@ Command add_recommend_command(CLI::App& app) {
   const std::string provenance = table.empty() ? "" : recommendations_provenance(table);
   auto* sub = app.add_subcommand(
       "recommend",
-      "Print the estimator and radius recommended for a mesh (the row of the recommendations "
-      "table for its quality class and noise level), why, the error the radius sweep measured, "
-      "and the `curvbench estimate` command line that runs them. Default table: " +
+      "Print the estimator and radius recommended for a mesh, for normals and for curvatures "
+      "(learned from the swept meshes nearest in its features, or the recommendations table's "
+      "row for its quality class and noise level), why, the error the radius sweeps measured "
+      "and the range cross-validation measured, features outside what the sweeps cover, and "
+      "the `curvbench estimate` command line that runs them. Default table: " +
           (table.empty() ? std::string("none found (give --results DIR)")
                          : table + (provenance.empty() ? "" : " (" + provenance + ")")));
   auto o = std::make_shared<RecommendOptions>();

@@ -3,7 +3,8 @@
 # the CMake package (find_package(curvbench CONFIG) -> curvbench::curvbench, shared, and
 # curvbench::curvbench_static), the curvbench command, the Python module and the recommendations
 # table they read (share/curvbench/recommendations.csv: harness/report/recommend_table.h looks there,
-# under the prefix of the program, not under CMAKE_INSTALL_DATADIR).
+# under the prefix of the program, not under CMAKE_INSTALL_DATADIR) with the advice cases beside it
+# (advice_cases.csv: the advice from mesh features, harness/report/advice.h).
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 set(CURVBENCH_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/curvbench)
@@ -33,4 +34,7 @@ if(TARGET curvbench_python)
 endif()
 if(EXISTS ${PROJECT_SOURCE_DIR}/results/recommendations.csv)
   install(FILES ${PROJECT_SOURCE_DIR}/results/recommendations.csv DESTINATION share/curvbench)
+endif()
+if(EXISTS ${PROJECT_SOURCE_DIR}/results/advice_cases.csv)
+  install(FILES ${PROJECT_SOURCE_DIR}/results/advice_cases.csv DESTINATION share/curvbench)
 endif()

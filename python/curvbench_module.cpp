@@ -190,6 +190,26 @@ py::dict advice_dict(const MeshAdvice& a) {
   d["level"] = a.swept ? py::object(py::int_(a.level)) : py::none();
   d["table"] = a.table;
   d["provenance"] = a.provenance;
+  // The advice from mesh features (docs/advice.md): the normals' choice, the curvature's error
+  // range and cross-validated regret, the features out of the sweeps' range.
+  const auto number = [](double x) {
+    return std::isfinite(x) ? py::object(py::float_(x)) : py::object(py::none());
+  };
+  py::dict normal_options;
+  if (!a.normal_parameter.empty()) {
+    std::string key = a.normal_parameter;
+    for (char& c : key)
+      if (c == '-') c = '_';
+    normal_options[key.c_str()] = a.normal_radius;
+  }
+  d["normal_method"] = a.normal_method.empty() ? py::object(py::none()) : py::str(a.normal_method);
+  d["normal_options"] = normal_options;
+  d["normal_label"] = a.normal_label.empty() ? py::object(py::none()) : py::str(a.normal_label);
+  d["error_low"] = number(a.error_low);
+  d["error_high"] = number(a.error_high);
+  d["regret_median"] = number(a.regret_median);
+  d["regret_worst"] = number(a.regret_worst);
+  d["out_of_range"] = a.out_of_range;
   return d;
 }
 
@@ -454,7 +474,8 @@ PYBIND11_MODULE(curvbench, m) {
       .def_readonly("d1", &PyExact::d1, "(n, 3) exact principal direction of k1.")
       .def_readonly("d2", &PyExact::d2, "(n, 3) exact principal direction of k2.");
 
-  m.def("estimate", &py_estimate, py::arg("V"), py::arg("F") = py::none(), py::arg("method") = "lhf",
+  m.def("estimate", &py_estimate, py::arg("V"), py::arg("F") = py::none(),
+        py::arg("method") = "lhf",
         (std::string(R"(Estimate normals, principal curvatures and directions at every vertex.
 
 V: (n, 3) vertex positions, float64 or float32 (int32/int64 accepted), any strides.

@@ -13,6 +13,7 @@
 #include "core/atomic_file.h"
 #include "core/build_info.h"
 #include "core/errors.h"
+#include "harness/report/advice.h"
 #include "harness/report/plot_styles.h"
 #include "harness/report/recommend_table.h"
 #include "harness/report/site_assets.h"
@@ -225,11 +226,17 @@ std::string summary_markdown(const ReportContent& content, const std::vector<Lea
 
   report::Section advice{"advice", "Which estimator for my mesh", {}};
   advice.text(
-      "`curvbench recommend MESH` classifies a mesh, estimates its noise and prints the "
-      "estimator, radius and the `curvbench estimate` command to run; `curvbench "
-      "estimate MESH --method auto` runs it. The table behind it: "
-      "[report/sweeps.md](report/sweeps.md) and the site's advice page.");
+      "`curvbench recommend MESH` measures a mesh's features and noise and prints, for normals "
+      "and for curvatures, the estimator and radius learned from the swept meshes nearest in "
+      "those features, the error range cross-validation measured there, whether the mesh lies "
+      "outside what the sweeps cover, and the `curvbench estimate` command to run; `curvbench "
+      "estimate MESH --method auto` runs it. The tables behind it: "
+      "[report/sweeps.md](report/sweeps.md) and the site's advice page; how far the advice "
+      "holds on meshes it never saw: below.");
   md << report::to_markdown(advice);
+  const std::string validation_csv = dir + "/advice_cross_validation.csv";
+  if (fs::exists(validation_csv))
+    md << report::to_markdown(cross_validation_section(read_cross_validation_csv(validation_csv)));
 
   report::Section details{"details", "Details", {}};
   std::string list = "- [Paper tables 2, 4 and 5](report/paper-tables.md)\n";
@@ -545,8 +552,9 @@ std::vector<report::Section> advice_sections(const std::string& dir) {
   s.text(
       "Per mesh class and noise level (sigma/h along the normal), the most accurate "
       "estimator and radius of the radius sweeps in the L2 error of H, and the cheapest within "
-      "2x of it, each with the command that runs it. `curvbench recommend MESH` picks the row "
-      "for a mesh; `curvbench estimate MESH --method auto` runs it.");
+      "2x of it, each with the command that runs it (the class table; `curvbench recommend "
+      "MESH` learns from every swept mesh by its features, cross-validated below, and falls "
+      "back on this row without `advice_cases.csv`).");
   report::Table tab;
   tab.id = "advice-table";
   tab.sortable = true;
@@ -572,7 +580,9 @@ std::vector<report::Section> advice_sections(const std::string& dir) {
              t.text(i, cc), report::Cell::number(t.number(i, cce), scientific(t.number(i, cce)))});
   }
   s.table(std::move(tab));
-  return {s};
+  const std::string validation_csv = dir + "/advice_cross_validation.csv";
+  if (!fs::exists(validation_csv)) return {s};
+  return {s, cross_validation_section(read_cross_validation_csv(validation_csv))};
 }
 
 void copy_file_checked(const std::string& from, const fs::path& to) {

@@ -11,6 +11,7 @@
 #include "core/build_info.h"
 #include "core/errors.h"
 #include "core/text.h"
+#include "harness/report/advice.h"
 #include "mesh/mesh_checks.h"
 #include "meshgen/generate.h"
 
@@ -50,12 +51,6 @@ std::string case_text(const BestRadius& b) {
 
 bool same_level(double a, double b) {
   return std::fabs(a - b) <= 1e-9 * std::fmax(1.0, b);
-}
-
-// sigma/h of normal Gaussian noise (no noise is 0), NaN for any other noise.
-double normal_sigma(const NoiseLevel& noise) {
-  if (noise.sigma_over_h == 0.0) return 0.0;
-  return noise.model == noise_level(1, {}).model ? noise.sigma_over_h : std::nan("");
 }
 
 }  // namespace
@@ -107,7 +102,7 @@ std::vector<Recommendation> recommendations(const std::vector<ErrorRow>& rows,
       for (const ErrorRow& r : rows) {
         if (r.quantity != kRecommendQuantity || r.norm != kRecommendNorm ||
             quality_of_family(r.family) != quality ||
-            !same_level(normal_sigma(r.noise_level), level))
+            !same_level(normal_noise_sigma(r.noise_level), level))
           continue;
         if (!cell.empty() &&
             (r.experiment != cell.front().experiment || r.level != cell.front().level))
@@ -202,7 +197,8 @@ report::Section recommendations_section(const std::vector<Recommendation>& recs)
       "label and mesh, the same at every noise level). A noise level no sweep ran says \"not "
       "swept\" (`curvbench run --all --full` runs them all). Every cell names its case label as "
       "in `<experiment>.csv`; the rows are in `recommendations.csv`. `curvbench recommend "
-      "MESH` prints the row that matches a mesh. The times are wall times of single cases, a "
+      "MESH` falls back on the row that matches a mesh when it has no advice cases (the "
+      "advice from mesh features: next section). The times are wall times of single cases, a "
       "few milliseconds each on these meshes, taken while other cases run: unlike the errors "
       "they vary from run to run, and so may the cheapest pick (`make bench` measures "
       "speed).");

@@ -11,7 +11,9 @@
 //     error, then to the first); a case without a timing is never the cheapest.
 // Times join the errors by (experiment, family, level, method label): the timings CSV keeps one
 // per case label and mesh level, the first noise level's (estimation time hardly depends on the
-// noise). A (quality, noise) pair no sweep has rows for is "not swept".
+// noise). A (quality, noise) pair no sweep has rows for is "not swept". `curvbench recommend`
+// reads this class table only when it finds no advice cases (the advice from mesh features and
+// per quantity, harness/report/advice.h).
 #pragma once
 
 #include <string>

@@ -236,7 +236,57 @@ EstimatorChoice estimator_choice(const std::string& label) {
   return c;
 }
 
-Advice advise(const Mesh& mesh, double noise, const RecommendationTable& table) {
+std::optional<AdviceTable> advice_cases_beside(const std::string& table_path) {
+  const std::filesystem::path dir = std::filesystem::path(table_path).parent_path();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(dir / "advice_cases.csv", ec)) return std::nullopt;
+  return read_advice_cases_csv(dir.empty() ? "." : dir.string());
+}
+
+bool Advice::choices_differ() const {
+  if (quantities.size() < 2 || !quantities[0].pick.found || !quantities[1].pick.found) return false;
+  return quantities[0].pick.label != quantities[1].pick.label;
+}
+
+namespace {
+
+// The pick for a quantity with what cross-validation measured on the meshes it read.
+QuantityAdvice quantity_advice(const AdviceTable& cases, const MeshFeatures& features,
+                               double sigma_over_h, const std::string& quantity,
+                               const std::vector<CrossValidationRow>& validation) {
+  QuantityAdvice q;
+  q.pick = pick_advice(cases.cases, features, sigma_over_h, quantity);
+  if (!q.pick.found) return q;
+  try {
+    q.choice = estimator_choice(q.pick.label);
+  } catch (const UsageError& e) {
+    throw InputError(cases.name + ": case '" + q.pick.label +
+                     "' is no estimator curvbench estimate runs (" + e.what() + ")");
+  }
+  std::vector<CrossValidationRow> read;
+  for (const AdviceNeighbour& n : q.pick.neighbours) {
+    for (const CrossValidationRow& r : validation)
+      if (r.family == n.family && r.level == n.level && r.quantity == quantity &&
+          same_level(r.sigma_over_h, n.sigma_over_h))
+        read.push_back(r);
+    if (std::isfinite(n.error)) {
+      q.lowest_error = std::isfinite(q.lowest_error) ? std::fmin(q.lowest_error, n.error) : n.error;
+      q.highest_error =
+          std::isfinite(q.highest_error) ? std::fmax(q.highest_error, n.error) : n.error;
+    }
+  }
+  q.validated = summarize_regret(read, quantity);
+  for (const CrossValidationRow& r : read)
+    if (std::isfinite(r.regret))
+      q.lowest_regret =
+          std::isfinite(q.lowest_regret) ? std::fmin(q.lowest_regret, r.regret) : r.regret;
+  return q;
+}
+
+}  // namespace
+
+Advice advise(const Mesh& mesh, double noise, const RecommendationTable& table,
+              const AdviceTable* cases) {
   if (!std::isnan(noise) && !(noise >= 0 && std::isfinite(noise)))
     throw UsageError("noise " + format_g(noise) + ": sigma/h must be finite and >= 0");
   Advice a;
@@ -261,12 +311,42 @@ Advice advise(const Mesh& mesh, double noise, const RecommendationTable& table) 
   a.vertices = mesh.num_vertices();
   a.h = mesh.mean_edge_length();
   a.sigma_over_h2 = a.sigma_over_h / a.h;
+  if (cases) {
+    a.has_feature_advice = true;
+    a.advice_table = cases->name;
+    a.features = measure_mesh_features(mesh);
+    a.out_of_range = features_out_of_range(cases->cases, a.features);
+    const std::vector<CrossValidationRow> validation = cross_validate(cases->cases);
+    for (const std::string& q : advice_quantities())
+      a.quantities.push_back(quantity_advice(*cases, a.features, a.sigma_over_h, q, validation));
+  }
   for (const RecommendationRow& r : table.rows)
     if (r.quality == a.mesh_class.quality && same_level(r.sigma_over_h, a.noise_level)) {
       a.row = r;
-      if (r.swept) {
+      if (a.has_feature_advice) {
+        const QuantityAdvice& curvature = a.quantities.back();
+        a.has_choice = curvature.pick.found;
+        if (a.has_choice) {
+          const AdviceNeighbour& nearest = curvature.pick.neighbours.front();
+          a.choice = curvature.choice;
+          a.label = curvature.pick.label;
+          a.quantity = curvature.pick.quantity;
+          a.norm = kAdviceNorm;
+          a.error = nearest.error;
+          a.experiment = nearest.experiment;
+          a.family = nearest.family;
+          a.level = nearest.level;
+        }
+      } else if (r.swept) {
         a.has_choice = true;
         a.choice = estimator_choice(r.best_label);
+        a.label = r.best_label;
+        a.quantity = r.quantity;
+        a.norm = r.norm;
+        a.error = r.best_error;
+        a.experiment = r.experiment;
+        a.family = r.family;
+        a.level = r.level;
       }
       return a;
     }
@@ -335,6 +415,116 @@ std::string estimate_command(const std::string& program, const std::string& mesh
   return s;
 }
 
+namespace {
+
+std::string number_text(const char* format, double x) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, x);
+  return buf;
+}
+
+// The lines of the advice from mesh features (advice_text).
+std::string feature_advice_text(const Advice& a) {
+  const MeshFeatures& f = a.features;
+  std::string s =
+      "features:   " + number_text("%.1f%%", 100 * f.small_angle_share) +
+      " of the angles below 20 deg, " + number_text("%.1f%%", 100 * f.obtuse_angle_share) +
+      " above 100 deg, " + number_text("%.0f%%", 100 * f.irregular_valence_share) +
+      " of the interior vertices of valence other than 6, anisotropy " +
+      number_text("%.2f", f.anisotropy) + ", density ratio " +
+      number_text("%.2f", f.density_ratio) + ", " + number_text("%.1f%%", 100 * f.boundary_share) +
+      " boundary vertices; size " + number_text("%.3g", f.size_over_h) + " h\n";
+  if (a.out_of_range.empty()) {
+    s += "coverage:   every feature within the range of the swept meshes\n";
+  } else {
+    s += "coverage:   OUTSIDE what the sweeps cover: ";
+    for (size_t i = 0; i < a.out_of_range.size(); ++i) {
+      const FeatureOutOfRange& o = a.out_of_range[i];
+      s += (i ? "; " : "") + std::string(o.name) + " " + number_text("%.3g", o.value) +
+           " (swept meshes " + number_text("%.3g", o.lowest) + " to " +
+           number_text("%.3g", o.highest) + ")";
+    }
+    s += ": the advice below extrapolates, its error range is not measured for such meshes\n";
+  }
+  for (const QuantityAdvice& q : a.quantities) {
+    const std::string head = q.pick.quantity == "normal" ? "normals:    " : "curvatures: ";
+    if (!q.pick.found) {
+      s += head + "none: no swept mesh has " + advice_quantity_words(q.pick.quantity) + "\n";
+      continue;
+    }
+    std::string nearest;
+    for (const AdviceNeighbour& n : q.pick.neighbours)
+      nearest +=
+          (nearest.empty() ? "" : ", ") + n.family + " at sigma/h " + format_g(n.sigma_over_h);
+    s += head + q.choice.text() + "; case `" + q.pick.label + "`, the least error (" + kAdviceNorm +
+         ", " + advice_quantity_words(q.pick.quantity) +
+         ") relative to the best on the swept meshes nearest in these features: " + nearest + "\n";
+    s += "            measured there: error " + scientific(q.lowest_error) + " to " +
+         scientific(q.highest_error);
+    if (q.validated.cases > 0)
+      s += "; cross-validated (the advice learned without each of these families, followed on "
+           "it): " +
+           number_text("%.2f", q.lowest_regret) + " to " + number_text("%.2f", q.validated.worst) +
+           " times the best error, median " + number_text("%.2f", q.validated.median);
+    s += "\n";
+  }
+  if (a.choices_differ())
+    s += "differ:     the normals' and the curvature's choices differ; the command below runs the "
+         "curvature's (for the normals: " +
+         a.quantities.front().choice.text() + ")\n";
+  s += "cases:      " + a.advice_table + "\n";
+  return s;
+}
+
+// The fields of the advice from mesh features (advice_json).
+std::string feature_advice_json(const Advice& a) {
+  std::string j = ", \"features\": {";
+  for (size_t i = 0; i < advice_features().size(); ++i) {
+    const FeatureInfo& f = advice_features()[i];
+    j += std::string(i ? ", " : "") + json_string(f.name) + ": " +
+         json_number(a.features.*(f.field));
+  }
+  j += ", \"size_over_h\": " + json_number(a.features.size_over_h) + "}, \"out_of_range\": [";
+  for (size_t i = 0; i < a.out_of_range.size(); ++i) {
+    const FeatureOutOfRange& o = a.out_of_range[i];
+    j += std::string(i ? ", " : "") + "{\"feature\": " + json_string(o.name) +
+         ", \"value\": " + json_number(o.value) + ", \"lowest\": " + json_number(o.lowest) +
+         ", \"highest\": " + json_number(o.highest) + "}";
+  }
+  j += "], \"advice\": {";
+  for (size_t i = 0; i < a.quantities.size(); ++i) {
+    const QuantityAdvice& q = a.quantities[i];
+    j += std::string(i ? ", " : "") + json_string(q.pick.quantity) + ": {";
+    if (!q.pick.found) {
+      j += "\"label\": null}";
+      continue;
+    }
+    j += "\"label\": " + json_string(q.pick.label) +
+         ", \"method\": " + json_string(q.choice.method) + ", \"options\": {";
+    if (!q.choice.parameter.empty())
+      j += json_string(q.choice.parameter) + ": " + json_number(q.choice.radius);
+    j += "}, \"lowest_error\": " + json_number(q.lowest_error) +
+         ", \"highest_error\": " + json_number(q.highest_error) +
+         ", \"lowest_regret\": " + json_number(q.lowest_regret) +
+         ", \"median_regret\": " + json_number(q.validated.median) +
+         ", \"worst_regret\": " + json_number(q.validated.worst) + ", \"neighbours\": [";
+    for (size_t k = 0; k < q.pick.neighbours.size(); ++k) {
+      const AdviceNeighbour& n = q.pick.neighbours[k];
+      j += std::string(k ? ", " : "") + "{\"family\": " + json_string(n.family) +
+           ", \"level\": " + std::to_string(n.level) +
+           ", \"sigma_over_h\": " + json_number(n.sigma_over_h) +
+           ", \"distance\": " + json_number(n.distance) + ", \"error\": " + json_number(n.error) +
+           ", \"best_label\": " + json_string(n.best_label) +
+           ", \"best_error\": " + json_number(n.best_error) + "}";
+    }
+    j += "]}";
+  }
+  return j + "}, \"choices_differ\": " + (a.choices_differ() ? "true" : "false") +
+         ", \"advice_table\": " + json_string(a.advice_table);
+}
+
+}  // namespace
+
 std::string advice_text(const Advice& a, const std::string& mesh_path, const std::string& command) {
   const RecommendationRow& r = a.row;
   char buf[64];
@@ -345,7 +535,12 @@ std::string advice_text(const Advice& a, const std::string& mesh_path, const std
   s += "noise:      sigma/h = " + std::string(buf) +
        (a.noise_estimated ? " (estimated from the residuals of a degree-4 fit at each vertex)"
                           : " (given)") +
-       ", nearest level of the table " + format_g(a.noise_level) + "\n";
+       (a.has_feature_advice
+            ? ", the class table's nearest level " + format_g(a.noise_level) +
+                  " (the advice below reads, on each swept mesh, the level nearest in the "
+                  "quantity's unit)"
+            : ", nearest level of the table " + format_g(a.noise_level)) +
+       "\n";
   std::snprintf(buf, sizeof buf, "%.3g", a.sigma_over_h2);
   s += "curvature:  sigma/h^2 = " + std::string(buf) +
        " (per unit length: the scale of the curvature error this noise causes, where sigma/h is "
@@ -362,7 +557,9 @@ std::string advice_text(const Advice& a, const std::string& mesh_path, const std
                   " next to them"
             : "") +
        "\n";
-  if (!a.has_choice) {
+  if (a.has_feature_advice) {
+    s += feature_advice_text(a);
+  } else if (!a.has_choice) {
     s += "estimator:  none: no sweep ran for " + a.mesh_class.quality + " meshes at sigma/h " +
          format_g(a.noise_level) +
          " (`curvbench run --all --full` runs them all; then --results results)\n";
@@ -399,9 +596,9 @@ std::string advice_json(const Advice& a, const std::string& mesh_path, const std
     j += ", \"method\": " + json_string(a.choice.method) + ", \"options\": {";
     if (!a.choice.parameter.empty())
       j += json_string(a.choice.parameter) + ": " + json_number(a.choice.radius);
-    j += "}, \"label\": " + json_string(r.best_label) +
-         ", \"quantity\": " + json_string(r.quantity) + ", \"norm\": " + json_string(r.norm) +
-         ", \"error\": " + json_number(r.best_error) + ", \"command\": " + json_string(command);
+    j += "}, \"label\": " + json_string(a.label) + ", \"quantity\": " + json_string(a.quantity) +
+         ", \"norm\": " + json_string(a.norm) + ", \"error\": " + json_number(a.error) +
+         ", \"command\": " + json_string(command);
   } else {
     j += ", \"method\": null, \"options\": {}, \"label\": null, \"quantity\": null, \"norm\": "
          "null, \"error\": null, \"command\": null";
@@ -420,7 +617,9 @@ std::string advice_json(const Advice& a, const std::string& mesh_path, const std
        ", \"row\": {";
   for (size_t i = 0; i < a.header.size() && i < r.fields.size(); ++i)
     j += std::string(i ? ", " : "") + json_string(a.header[i]) + ": " + json_string(r.fields[i]);
-  return j + "}}\n";
+  j += "}";
+  if (a.has_feature_advice) j += feature_advice_json(a);
+  return j + "}\n";
 }
 
 std::string advice_csv(const Advice& a) {

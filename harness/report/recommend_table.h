@@ -1,8 +1,10 @@
 // The recommendations table read back (results/recommendations.csv, written by
 // write_recommendations_csv in harness/report/recommend.h) and the advice `curvbench recommend`,
-// `curvbench estimate --method auto` and Python's estimate(method="auto") give from it: the row
-// that matches a mesh's quality class and noise, the estimator and radius it names, and the
-// `curvbench estimate` command line that runs them.
+// `curvbench estimate --method auto` and Python's estimate(method="auto") give from it and the
+// advice cases beside it (advice_cases.csv, harness/report/advice.h): per quantity the estimator
+// and radius learned from the swept meshes nearest in the mesh's features, with what
+// cross-validation measured there (or, without advice cases, the row that matches the mesh's
+// quality class and noise), and the `curvbench estimate` command line that runs them.
 //
 // The default table is a file found from where the code runs, not from the working folder:
 // `make install` puts results/recommendations.csv into PREFIX/share/curvbench/, and a build
@@ -13,11 +15,14 @@
 #pragma once
 
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "curvbench/estimator_options.h"
+#include "harness/model/mesh_features.h"
 #include "harness/model/noise_estimate.h"
+#include "harness/report/advice.h"
 #include "harness/report/recommend.h"
 #include "mesh/creases.h"
 #include "mesh/mesh.h"
@@ -94,6 +99,24 @@ struct EstimatorChoice {
 /// method does not take.
 EstimatorChoice estimator_choice(const std::string& label);
 
+/// The advice cases (advice_cases.csv) in the folder of the recommendations table `table_path`
+/// (written by the same `make experiments`); none when that folder has no such file (a table of
+/// an older curvbench). Throws InputError as parse_advice_cases_csv.
+std::optional<AdviceTable> advice_cases_beside(const std::string& table_path);
+
+/// The advice of the mesh features for one quantity (harness/report/advice.h).
+struct QuantityAdvice {
+  AdvicePick pick;
+  EstimatorChoice choice;  ///< the pick's case as an estimator (when pick.found)
+  /// The cross-validation's regrets (advised over best error, each learned without its family)
+  /// on the swept meshes the pick read, at the noise levels it read there.
+  RegretSummary validated;
+  double lowest_regret = std::numeric_limits<double>::quiet_NaN();
+  /// The pick's error on those meshes (lowest, highest).
+  double lowest_error = std::numeric_limits<double>::quiet_NaN();
+  double highest_error = std::numeric_limits<double>::quiet_NaN();
+};
+
 /// The advice for a mesh: its class, its noise (given, or estimated when `noise` is NaN), the
 /// table's row for them and, when that row was swept, the estimator it recommends.
 struct Advice {
@@ -102,8 +125,15 @@ struct Advice {
   bool noise_estimated = false;
   double noise_level = 0.0;  ///< nearest_noise_level(sigma_over_h)
   RecommendationRow row;
-  bool has_choice = false;          ///< false when the row is "not swept"
-  EstimatorChoice choice;           ///< the row's most accurate case
+  bool has_choice = false;  ///< false when the row is "not swept"
+  EstimatorChoice choice;   ///< the row's most accurate case
+  /// The choice's case, what it was ranked by and the error measured: the class row's best, or
+  /// with the advice from mesh features the curvature's pick and its error on the nearest swept
+  /// mesh (experiment, family, level: that mesh's).
+  std::string label, quantity, norm;
+  double error = std::numeric_limits<double>::quiet_NaN();
+  std::string experiment, family;
+  int level = 0;
   std::string table;                ///< the table's name
   std::string provenance;           ///< the table's provenance
   std::vector<std::string> header;  ///< the table's header (for the row's CSV and JSON)
@@ -121,10 +151,23 @@ struct Advice {
   /// a crease vertex in their fit.
   int noise_crease_vertices = 0;
   int noise_near_crease_vertices = 0;
+  /// The advice from mesh features, given advice cases: the mesh's features, a choice per
+  /// quantity (advice_quantities() order), and the features outside the swept meshes' range.
+  /// With it, `choice` is the mean curvature's choice (has_choice when it found one), not the
+  /// class row's.
+  bool has_feature_advice = false;
+  std::string advice_table;  ///< the advice cases' file
+  MeshFeatures features;
+  std::vector<QuantityAdvice> quantities;
+  std::vector<FeatureOutOfRange> out_of_range;
+  /// Whether the normals' and the curvature's choices differ.
+  bool choices_differ() const;
 };
 /// Throws InputError as classify_mesh and estimate_noise do, UsageError for a negative or
-/// non-finite `noise`. Creases are those of detect_creases at its default angle.
-Advice advise(const Mesh& mesh, double noise, const RecommendationTable& table);
+/// non-finite `noise`. Creases are those of detect_creases at its default angle. Without
+/// `cases`, the advice is the class row's alone.
+Advice advise(const Mesh& mesh, double noise, const RecommendationTable& table,
+              const AdviceTable* cases = nullptr);
 
 /// Whether `method` is "auto" (case-insensitive): the estimator and radius of the advice.
 bool is_auto_method(const std::string& method);

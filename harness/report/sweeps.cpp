@@ -11,8 +11,10 @@
 #include "core/build_info.h"
 #include "core/text.h"
 #include "harness/model/metrics.h"
+#include "harness/report/advice.h"
 #include "harness/report/plot_styles.h"
 #include "harness/report/recommend.h"
+#include "meshgen/generate.h"
 #include "methods/estimator.h"
 
 namespace curvbench {
@@ -370,6 +372,7 @@ bool sweeps_section(const std::vector<Experiment>& experiments, const ReportOpti
   std::vector<BestRadius> all_best;
   std::vector<ErrorRow> radius_rows;  // the recommendations' input
   std::vector<TimingRow> timings;
+  std::map<std::string, ExperimentMesh> swept_meshes;  // by the results' family label
   bool any_radius = false;
   // The radius sweeps first (the noise sweeps use their best radii), then the noise sweeps.
   std::vector<const Experiment*> sweeps;
@@ -404,6 +407,7 @@ bool sweeps_section(const std::vector<Experiment>& experiments, const ReportOpti
       const std::vector<BestRadius> best = best_radii(rows);
       all_best.insert(all_best.end(), best.begin(), best.end());
       radius_rows.insert(radius_rows.end(), rows.begin(), rows.end());
+      for (const ExperimentMesh& m : e.meshes) swept_meshes.try_emplace(m.label(), m);
       const std::string timing_csv = dir + "/timings/" + e.name + ".csv";
       if (fs::exists(timing_csv))
         for (const TimingRow& t : read_timing_csv(timing_csv)) timings.push_back(t);
@@ -424,6 +428,28 @@ bool sweeps_section(const std::vector<Experiment>& experiments, const ReportOpti
     out.heading(choosing.title, 0);
     for (report::Block& b : choosing.blocks) out.blocks.push_back(std::move(b));
     if (options.write_tables) write_recommendations_csv(dir + "/recommendations.csv", recs);
+    // The advice from mesh features and its leave-one-family-out cross-validation (advice.h),
+    // the features measured on the swept meshes without noise (a label no mesh line gives is
+    // read as a family name with its default options).
+    const auto features_of = [&](const std::string& label, int level) {
+      MeshSpec spec;
+      spec.family = label;
+      spec.level = level;
+      if (const auto it = swept_meshes.find(label); it != swept_meshes.end()) {
+        spec.family = it->second.family;
+        spec.shape = it->second.shape;
+      }
+      return measure_mesh_features(generate_mesh(spec).mesh);
+    };
+    const std::vector<AdviceCase> cases = advice_cases(radius_rows, features_of);
+    const std::vector<CrossValidationRow> validation = cross_validate(cases);
+    report::Section held_out = cross_validation_section(validation);
+    out.heading(held_out.title, 0);
+    for (report::Block& b : held_out.blocks) out.blocks.push_back(std::move(b));
+    if (options.write_tables) {
+      write_advice_cases_csv(dir + "/advice_cases.csv", cases);
+      write_cross_validation_csv(dir + "/advice_cross_validation.csv", validation);
+    }
   }
   return true;
 }

@@ -64,6 +64,17 @@ struct MeshAdvice {
   int level = 0;
   std::string table;       ///< the recommendations file read
   std::string provenance;  ///< its first comment line
+  // With the advice from mesh features (advice_cases.csv beside the table; docs/advice.md) the
+  // choice above is the mean curvature's, learned from the swept meshes nearest in the mesh's
+  // features (experiment, family, level: the nearest; error: the choice's error there), and:
+  std::string normal_method;     ///< the normals' choice ("" without one)
+  std::string normal_parameter;  ///< its neighbourhood option
+  double normal_radius = kNaN;
+  std::string normal_label;                    ///< its case
+  double error_low = kNaN, error_high = kNaN;  ///< the choice's error on the nearest meshes
+  /// Cross-validation on those meshes: the choice learned without each, over the best error.
+  double regret_median = kNaN, regret_worst = kNaN;
+  std::vector<std::string> out_of_range;  ///< features outside the swept meshes' range
 };
 
 /// Per-vertex estimates; row/entry i belongs to vertex i.
@@ -112,7 +123,7 @@ struct RecommendOptions {
 /// InputError for a mesh it cannot classify (under 50 vertices, non-manifold) or a missing,
 /// truncated or foreign table; UsageError for a negative or non-finite noise.
 MeshAdvice recommend(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
-                         const RecommendOptions& options = {});
+                     const RecommendOptions& options = {});
 
 // ---- test meshes with their exact answers, and the harness's error metrics ----------------
 
@@ -208,7 +219,6 @@ void set_estimator_option(EstimatorOptions& options, const std::string& name,
 /// open one; status sign_undetermined where no rule decides). The same as estimate(V, F) with
 /// an empty F. A method that needs faces is a UsageError.
 EstimateResult estimate(const Eigen::MatrixXd& V, const EstimateOptions& options);
-
 
 /// Names accepted as EstimateOptions::method (without degree).
 std::vector<std::string> methods();

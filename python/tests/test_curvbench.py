@@ -339,6 +339,16 @@ def test_auto_follows_the_recommendation_of_the_command_line(tmp_path):
     assert rec["sigma_over_h"] == pytest.approx(want["sigma_over_h"], rel=1e-12)
     assert rec["options"] == {k.replace("-", "_"): v for k, v in want["options"].items()}
     assert rec["quality"] == "irregular" and rec["swept"]
+    # The advice from mesh features (advice_cases.csv beside the table): the normals' choice,
+    # the curvatures' cross-validated range and the features out of range, as the JSON says.
+    advice = want["advice"]
+    assert rec["normal_label"] == advice["normal"]["label"]
+    assert rec["normal_method"] == advice["normal"]["method"]
+    assert rec["label"] == advice["H"]["label"]
+    assert rec["error_low"] == pytest.approx(advice["H"]["lowest_error"], rel=1e-12)
+    assert rec["regret_median"] == pytest.approx(advice["H"]["median_regret"], rel=1e-12)
+    assert rec["regret_worst"] == pytest.approx(advice["H"]["worst_regret"], rel=1e-12)
+    assert rec["out_of_range"] == [o["feature"] for o in want["out_of_range"]]
     est = curvbench.estimate(V, F, method="auto")
     assert est.recommendation == rec
     named = curvbench.estimate(V, F, method=rec["method"], **rec["options"])

@@ -11,6 +11,8 @@
 #include <tuple>
 
 #include "core/text.h"
+#include "harness/model/mesh_features.h"
+#include "harness/report/advice.h"
 #include "mesh/io.h"
 #include "tests/cli/cli_runner.h"
 #include "tests/mesh/crease_test_meshes.h"
@@ -150,8 +152,10 @@ TEST(CliRecommend, PrintedCommandRunsAsPrintedAndAutoRunsTheSame) {
   const std::string command = r.out.substr(at + 13, r.out.find('\n', at + 1) - at - 13);
   EXPECT_NE(command.find(" estimate 'my mesh.off' --method "), std::string::npos) << command;
   EXPECT_TRUE(command.ends_with(" --output 'my mesh.curvatures.csv'")) << command;
-  // The estimator line's case names the method the command runs.
-  const auto case_at = r.out.find("; case `");
+  // The estimator line's case (the curvatures' line's, with the advice from mesh features)
+  // names the method the command runs.
+  const auto curvatures = r.out.find("\ncurvatures: ");
+  const auto case_at = r.out.find("; case `", curvatures == std::string::npos ? 0 : curvatures);
   ASSERT_NE(case_at, std::string::npos) << r.out;
   const std::string case_label =
       r.out.substr(case_at + 8, r.out.find('`', case_at + 8) - case_at - 8);
@@ -249,6 +253,74 @@ TEST(CliRecommend, CreasesAndNoiseInBothUnits) {
   EXPECT_NE(r.output.find("\"sigma_over_h2\": " + json_number(0.01 / cube.mean_edge_length()) +
                           ", \"crease_angle\": 60, \"sharp_edges\": 192, \"crease_vertices\": "
                           "188, \"noise_crease_vertices\": 0, \"noise_near_crease_vertices\": 0,"),
+            std::string::npos)
+      << r.output;
+  fs::remove_all(dir);
+}
+
+// With advice cases beside the table (advice_cases.csv, harness/report/advice.h): normals and
+// curvatures advised separately, the cross-validated range, the command runs the curvatures'
+// choice, and a feature outside the swept meshes' range is named. The cases: two swept meshes,
+// one with the features of the well-shaped torus (level 2), one stretched 4 times; Meyer is
+// best for normals on both, LHF-2 with 3 rings for H.
+TEST(CliRecommend, PerQuantityAdviceFromFeatures) {
+  const auto dir = fresh_dir("recommend_features");
+  write_table(dir);
+  const std::string mesh = off_of(dir, "torus-unstructured");
+  const MeshFeatures torus = measure_mesh_features(read_mesh(mesh));
+  MeshFeatures stretched = torus;
+  stretched.anisotropy = 4.0;
+  std::vector<AdviceCase> cases;
+  for (const auto& [family, features] :
+       {std::pair<std::string, MeshFeatures>{"fa", torus}, {"fb", stretched}})
+    for (const std::string quantity : {"normal", "H"})
+      for (const std::string label : {"Meyer", "LHF-2 rings=3"}) {
+        AdviceCase c;
+        c.experiment = "sweep-test";
+        c.family = family;
+        c.level = 2;
+        c.features = features;
+        c.quantity = quantity;
+        c.label = label;
+        c.error = (quantity == "normal") == (label == "Meyer") ? 0.01 : 0.05;
+        cases.push_back(c);
+      }
+  write_advice_cases_csv((dir / "advice_cases.csv").string(), cases);
+  auto r = run_cli("recommend " + mesh + " --noise 0 --results " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("coverage:   every feature within the range of the swept meshes\n"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("normals:    Meyer at its own neighbourhood (no radius option); case "
+                          "`Meyer`"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("curvatures: LHF-2, rings 3; case `LHF-2 rings=3`"), std::string::npos)
+      << r.output;
+  // Held out, each mesh learns from the other, whose best is its own: regret 1.
+  EXPECT_NE(r.output.find("1.00 to 1.00 times the best error, median 1.00"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("differ:     the normals' and the curvature's choices differ"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find(" --method lhf-2 --rings 3 --output "), std::string::npos) << r.output;
+  r = run_cli("recommend " + mesh + " --noise 0 --results " + dir.string() + " --format json");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("\"label\": \"LHF-2 rings=3\", \"quantity\": \"H\""), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("\"out_of_range\": [], \"advice\": {\"normal\": {\"label\": "
+                          "\"Meyer\""),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("\"choices_differ\": true"), std::string::npos) << r.output;
+
+  // Swept meshes without irregular valences: the torus's 44% is out of their range.
+  for (AdviceCase& c : cases) c.features.irregular_valence_share = 0.0;
+  write_advice_cases_csv((dir / "advice_cases.csv").string(), cases);
+  r = run_cli("recommend " + mesh + " --noise 0 --results " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("coverage:   OUTSIDE what the sweeps cover: irregular_valence_share "
+                          "0.44"),
             std::string::npos)
       << r.output;
   fs::remove_all(dir);

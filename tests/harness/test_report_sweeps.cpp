@@ -164,7 +164,15 @@ TEST(ReportSweeps, SectionAndCsvFromTheResults) {
     if (const auto* tab = std::get_if<report::Table>(&b)) tables.push_back(tab);
     if (const auto* p = std::get_if<report::Plot>(&b)) plots.push_back(p);
   }
-  ASSERT_EQ(tables.size(), 2u);  // the sweep's, the recommendations'
+  // The sweep's, the recommendations', the cross-validation's summary and its table.
+  ASSERT_EQ(tables.size(), 4u);
+  EXPECT_EQ(tables[2]->id, "advice-regret-summary");
+  // One family only: held out, nothing is left to learn from; no regret is measured.
+  EXPECT_TRUE(tables[2]->rows.empty());
+  ASSERT_EQ(tables[3]->rows.size(), 1u);
+  EXPECT_EQ(tables[3]->rows[0][2].text, "none");
+  EXPECT_EQ(read_csv_table((dir / "advice_cases.csv").string()).rows.size(), 6u);  // normal, H
+  EXPECT_EQ(read_csv_table((dir / "advice_cross_validation.csv").string()).rows.size(), 2u);
   const report::Table& sweep = *tables[0];
   ASSERT_EQ(sweep.rows.size(), 2u);
   EXPECT_EQ(sweep.rows[0][0].text, "ICC");
