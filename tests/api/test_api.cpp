@@ -57,6 +57,41 @@ TEST(Api, QuadricIsExactAtTheCentreWithUpwardNormals) {
   EXPECT_STREQ(status_name(Status::degree_reduced), "degree_reduced");
 }
 
+// A point set (no faces): the same grid's points, the default k-NN neighbourhood. At the apex
+// the neighbourhood is symmetric, so the PCA normal is the z axis, turned upward on an open set,
+// and the quadratic fit is exact; estimate(V, options) is estimate(V, empty F, options); a method
+// that needs faces is a UsageError naming it.
+TEST(Api, PointSetEstimateIsExactAtTheApexOfAQuadric) {
+  Eigen::MatrixXd V;
+  Eigen::MatrixXi F;
+  quadric_grid(0.8, -0.3, 5, V, F);
+  EstimateOptions o;
+  o.method = "lhf-2";
+  const EstimateResult r = estimate(V, o);
+  const int c = 5 * 11 + 5;
+  ASSERT_EQ(r.H.size(), V.rows());
+  EXPECT_EQ(r.method, "LHF-2");
+  EXPECT_NEAR(r.normal(c, 2), 1.0, 1e-12);
+  EXPECT_NEAR(r.k1(c), 0.8, 1e-10);
+  EXPECT_NEAR(r.k2(c), -0.3, 1e-10);
+  EXPECT_NEAR(r.H(c), 0.25, 1e-10);
+  EXPECT_EQ(r.status[c], Status::ok);
+  // Every normal of the open grid points up (the orientation rule of docs/point_sets.md).
+  EXPECT_GT(r.normal.col(2).minCoeff(), 0.0);
+  const EstimateResult same = estimate(V, Eigen::MatrixXi(0, 3), o);
+  EXPECT_TRUE(same.H.cwiseEqual(r.H).all());
+  EXPECT_TRUE(same.normal.cwiseEqual(r.normal).all());
+  o.method = "meyer";
+  try {
+    estimate(V, o);
+    ADD_FAILURE() << "meyer on a point set";
+  } catch (const UsageError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("Meyer"), std::string::npos) << what;
+    EXPECT_NE(what.find("a point set has no faces"), std::string::npos) << what;
+  }
+}
+
 TEST(Api, ThreadCountDoesNotChangeTheBits) {
   Eigen::MatrixXd V;
   Eigen::MatrixXi F;
