@@ -64,6 +64,11 @@ inline constexpr std::array<Table5Row, 4> kTable5 = {{
 /// is "LHF-<d>"; the report's ratios and scaling table use it.
 inline constexpr std::string_view kTable5Reference = "LHF";
 
+/// What §5.4 says of the jet's time, which Table 5 does not list.
+inline constexpr std::string_view kTable5JetNote =
+    "The paper gives Jet-2/LHF-2 only as \"more than 16x\" (about 28k triangles/s for "
+    "Jet_fitting_3).";
+
 /// The time ratios §5.4's text draws from Table 5 (numerator, denominator), in its order.
 struct Table5Ratio {
   std::string_view a, b;

@@ -33,7 +33,7 @@ const FieldSection kFieldSections[] = {
      "Every built-in estimator on the same meshes with the same metrics (experiments "
      "`field-estimators*.exp`)."},
     {ReportSection::hard, "Meshes that break estimators",
-     "Every built-in estimator, VTK's and ICC on meshes known to break estimators "
+     "Every built-in estimator and the outside ones on meshes known to break estimators "
      "(experiment `hard-meshes.exp`; docs/mesh_families.md): the Schwarz lantern of a cylinder "
      "whose normals and area converge (`lantern`) and one whose positions converge but whose "
      "face normals and area do not (`lantern-squeezed`), triangles stretched A = 4 and 16 times "

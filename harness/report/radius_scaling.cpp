@@ -93,7 +93,7 @@ report::Section radius_scaling_section(const std::vector<Experiment>& experiment
          "rate log(e_first/e_last)/log(h_first/h_last) of a method over the levels it ran; the "
          "first rows are the rates the error bound predicts for a degree-2 fit, for curvatures "
          "with a general stencil and with the truncation's odd terms cancelling (symmetric "
-         "stencils), for normals the one bound. The fixed 1-ring methods (Meyer) keep their "
+         "stencils), for normals the one bound. The methods of a fixed 1-ring keep their "
          "1-ring at every alpha.");
 
   std::vector<std::string> families;

@@ -195,9 +195,7 @@ void ratio_table(report::Section& s, const std::vector<BenchRow>& rows, const Lo
     tab.add(std::move(row));
   }
   s.heading("Time ratios, ours (paper)")
-      .text(
-          "The paper gives Jet-2/LHF-2 only as \"more than 16x\" (about 28k triangles/s for "
-          "Jet_fitting_3).")
+      .text(std::string(paper::kTable5JetNote))
       .table(std::move(tab));
 }
 
@@ -212,15 +210,15 @@ void solver_table(report::Section& s, const std::vector<BenchRow>& rows, const L
       if (r.method.find("QR") != std::string::npos) qr = r.method;
     }
   if (methods.empty()) return;
-  s.heading("Safeguarded QR vs SVD on identical LHF-2 systems")
-      .text(
-          "Measured by `bench/bench_solvers`: the weighted LHF-2 systems of every vertex "
-          "(1.5-ring grown to at least 9 neighbours, eq. 15 weights with the normal safeguard) "
-          "are built once and stored; seconds = median wall time of fitting all of them "
-          "(Vandermonde fill, row weighting, column scaling, solve, Taylor coefficients; only "
-          "the solver differs), without neighbourhoods or frames. SVD: truncated at the absolute "
-          "threshold 1e-8 after 2-norm column scaling (the `set_solver` defaults); the paper: "
-          "\"roughly a factor of five\".");
+  s.heading("Safeguarded QR vs SVD on identical " + reference(2) + " systems")
+      .text("Measured by `bench/bench_solvers`: the weighted " + reference(2) +
+            " systems of every vertex "
+            "(1.5-ring grown to at least 9 neighbours, eq. 15 weights with the normal safeguard) "
+            "are built once and stored; seconds = median wall time of fitting all of them "
+            "(Vandermonde fill, row weighting, column scaling, solve, Taylor coefficients; only "
+            "the solver differs), without neighbourhoods or frames. SVD: truncated at the absolute "
+            "threshold 1e-8 after 2-norm column scaling (the `set_solver` defaults); the paper: "
+            "\"roughly a factor of five\".");
   report::Table tab;
   tab.id = "table5-solvers";
   tab.columns = {"mesh"};
@@ -282,9 +280,9 @@ void scaling_table(report::Section& s, const std::vector<BenchRow>& table5,
       hi = std::max(hi, ns);
     }
   }
-  s.heading(
-       "Scaling and threads: LHF-2 cost per vertex from 1.4 thousand to 1.44 million vertices, "
-       "1 and 2 threads")
+  s.heading("Scaling and threads: " + reference(2) +
+            " cost per vertex from 1.4 thousand to 1.44 million vertices, "
+            "1 and 2 threads")
       .table(std::move(tab));
   if (lo > 0.0)
     s.text("Per-vertex time, 1 thread: max/min = " + fmt("%.2f", hi / lo) +
@@ -296,15 +294,15 @@ void end_to_end_table(report::Section& s, const std::string& path) {
   if (!fs::exists(path)) return;
   const CsvTable t = read_csv_table(path);
   s.heading("End to end: `curvbench estimate` on 1.44 million vertices")
-      .text(
-          "LHF-2 on the torus-structured level-6 mesh (1441792 vertices, 2883584 triangles), "
-          "binary PLY in, CSV out (`--timing`, seconds of wall time per stage; estimation and "
-          "writing alternate block by block, a CSV block formatted and written by two background "
-          "threads while the next is estimated; each stage is the sum of its own parts; fit = "
-          "normals, neighbourhoods and fits; write = the time the estimation waited for the "
-          "output). Peak resident set size from `/usr/bin/time -v`. Targets "
-          "(docs/performance.md): read <= 0.3 s, end to end <= 1.5 s on one thread, peak RSS <= "
-          "350 MB.");
+      .text(reference(2) +
+            " on the torus-structured level-6 mesh (1441792 vertices, 2883584 triangles), "
+            "binary PLY in, CSV out (`--timing`, seconds of wall time per stage; estimation and "
+            "writing alternate block by block, a CSV block formatted and written by two background "
+            "threads while the next is estimated; each stage is the sum of its own parts; fit = "
+            "normals, neighbourhoods and fits; write = the time the estimation waited for the "
+            "output). Peak resident set size from `/usr/bin/time -v`. Targets "
+            "(docs/performance.md): read <= 0.3 s, end to end <= 1.5 s on one thread, peak RSS <= "
+            "350 MB.");
   report::Table tab;
   tab.id = "table5-end-to-end";
   tab.columns = {"threads", "read", "orientation", "fit", "write", "wall (m:ss)", "peak RSS (MB)"};
