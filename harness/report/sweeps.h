@@ -4,7 +4,7 @@
 // Radius sweeps (one mesh level, methods expanded over a list of radii, `method lhf-2
 // rings=1,1.5,...`, labelled "LHF-2 rings=1.5"; fixed 1-ring methods without a suffix):
 //   - one plot per (family, noise, quantity) of the L2 error against the radius in units of h
-//     (rings for the fits and the quadric, the ball factor C for the normal cycle and ICC), one
+//     (the option its registry line's neighbourhood size names: rings or the ball factor C), one
 //     curve per method, the fixed methods as horizontal lines, each curve's best radius circled:
 //     plots/<experiment>_<family>_<noise>_<quantity>.{png,svg};
 //   - a table per (family, noise) of each method's best radius and its error, per quantity
