@@ -63,8 +63,12 @@ bench: build
 
 experiments-deep: build
 	@$(BUILD)/curvbench run --all --experiments-dir experiments/deep --output results/deep \
-	  --table4-max 16 \
+	  --table4-max 16 --no-plots \
 	  --no-readings $(RUN_ARGS)
+	@# Only the CSVs are the deep run's results (the claims read them); its own report and site
+	@# would copy results/'s.
+	@rm -rf results/deep/site results/deep/report results/deep/plots results/deep/errors_by_cause \
+	  results/deep/REPORT.md results/deep/CLAIMS.md
 	@$(BUILD)/curvbench run --claims-only --output results
 
 # The results site (results/site/index.html) re-rendered from the committed CSVs in seconds,
