@@ -254,6 +254,10 @@ MethodGroup method_group(const std::string& label);
 /// Every registered method, in registry order.
 std::vector<MethodInfo> method_table();
 
+/// The name a method's labels start with ("LHF", "LSCM-fast", "SurfVar"): its estimator's
+/// display_name().
+std::string display_name(const MethodInfo& method);
+
 using EstimatorFactory = std::unique_ptr<Estimator> (*)(EstimatorOptions);
 
 /// Adds a method to the registry, after the built-in ones (docs/extending.md): from then on

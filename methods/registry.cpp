@@ -220,6 +220,12 @@ void register_estimator(const MethodInfo& info, EstimatorFactory factory) {
   registry().push_back({info, factory});
 }
 
+std::string display_name(const MethodInfo& method) {
+  EstimatorOptions o;
+  if (method.is_fit()) o.degree = method.min_degree;
+  return make_estimator(method.name, o)->display_name();
+}
+
 const char* radius_option(NeighbourhoodSize size) {
   switch (size) {
     case NeighbourhoodSize::half_rings:

@@ -86,10 +86,8 @@ std::vector<Styled> styled_methods() {
     cache.clear();
     size_t fits = 0, operators = 0;
     for (const MethodInfo& m : table) {
-      EstimatorOptions o;
-      if (m.is_fit()) o.degree = m.min_degree;
       Styled s;
-      s.display = make_estimator(m.name, o)->display_name();
+      s.display = display_name(m);
       s.fit = m.is_fit();
       size_t& k = s.fit ? fits : operators;
       const size_t n = s.fit ? std::size(kFitLooks) : std::size(kOperatorLooks);

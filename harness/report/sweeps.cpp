@@ -29,9 +29,7 @@ std::string methods_sized_by(const std::string& option) {
   std::string out;
   for (const MethodInfo& m : method_table()) {
     if (radius_option(m.radius) != option) continue;
-    EstimatorOptions o;
-    if (m.is_fit()) o.degree = m.min_degree;
-    out += (out.empty() ? "" : ", ") + make_estimator(m.name, o)->display_name();
+    out += (out.empty() ? "" : ", ") + display_name(m);
   }
   return out.empty() ? "none" : out;
 }
