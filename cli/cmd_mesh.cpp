@@ -89,12 +89,16 @@ int write_generated_mesh(const MeshOptions& o) {
   std::printf("faces:                 %d\n", m.num_faces());
   std::printf("boundary vertices:     %d\n", m.num_boundary_vertices());
   std::printf("euler characteristic:  %d\n", m.euler_characteristic());
-  std::printf("mean edge length:      %.6g\n", m.mean_edge_length());
-  std::printf("angles (deg):          min %.3f, max %.3f\n", q.min_angle_deg, q.max_angle_deg);
-  std::printf("valence:               interior %d..%d", q.min_valence, q.max_valence);
-  if (m.has_boundary())
-    std::printf(", boundary %d..%d", q.min_boundary_valence, q.max_boundary_valence);
-  std::printf("\n");
+  if (m.num_faces() == 0) {  // a point-cloud family: no edges, angles or valences
+    std::printf("nominal spacing h:     %.6g (sqrt(area / points))\n", gm.spacing);
+  } else {
+    std::printf("mean edge length:      %.6g\n", m.mean_edge_length());
+    std::printf("angles (deg):          min %.3f, max %.3f\n", q.min_angle_deg, q.max_angle_deg);
+    std::printf("valence:               interior %d..%d", q.min_valence, q.max_valence);
+    if (m.has_boundary())
+      std::printf(", boundary %d..%d", q.min_boundary_valence, q.max_boundary_valence);
+    std::printf("\n");
+  }
   if (ext == "ply")
     std::printf(
         "vertex properties:     ex ey ez (exact point), nx ny nz (exact normal), "

@@ -36,6 +36,15 @@ constexpr int min_neighbours(int degree) {
   return (3 * num_coefficients(degree) + 1) / 2;
 }
 
+/// The number of vertices (centre excluded) of the r-ring on a regular valence-6 triangulation:
+/// 3k(k+1) for r = k, plus the 6k vertices across the k-ring's boundary edges for r = k + 1/2
+/// (6, 12, 18, 30, 36 for r = 1, 1.5, 2, 2.5, 3). The point sets' default k is at least this
+/// for the method's default ring (docs/point_sets.md).
+constexpr int regular_ring_size(double ring) {
+  const int k = static_cast<int>(ring);
+  return 3 * k * (k + 1) + (ring > k ? 6 * k : 0);
+}
+
 /// The starting neighbourhood of a ring-based method (paper §4.1, docs/algorithms.md §1.2):
 /// ring r0; when adaptive, grown by half rings while fewer than min_neighbours neighbours are
 /// found, up to max_ring (the methods use min_neighbours(d) and 2 r0). Non-adaptive specs have

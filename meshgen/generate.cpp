@@ -6,6 +6,7 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/errors.h"
@@ -14,6 +15,7 @@
 #include "meshgen/bump_irregular.h"
 #include "meshgen/bump_unstructured.h"
 #include "meshgen/noise.h"
+#include "meshgen/point_families.h"
 #include "meshgen/torus_isosurface.h"
 #include "meshgen/torus_structured.h"
 #include "meshgen/torus_unstructured.h"
@@ -142,7 +144,31 @@ struct FamilyEntry {
 std::vector<FamilyEntry>& family_entries() {
 #define CURVBENCH_FAMILY_ENTRY(name, max_level, generator, caption, role, noise, ...) \
   FamilyEntry{{name, max_level, caption, role, noise, {__VA_ARGS__}}, &generator},
-  static std::vector<FamilyEntry> entries = {CURVBENCH_MESH_FAMILIES(CURVBENCH_FAMILY_ENTRY)};
+  static std::vector<FamilyEntry> entries = [] {
+    std::vector<FamilyEntry> table = {CURVBENCH_MESH_FAMILIES(CURVBENCH_FAMILY_ENTRY)};
+    // The point-cloud families, points-<surface>-<sampling> (point_families.h): every surface
+    // in every sampling.
+    const std::pair<const char*, const char*> surfaces[] = {
+        {"torus", "torus R = 1, r = 0.3"},
+        {"sphere", "unit sphere"},
+        {"ellipsoid", "ellipsoid with semi-axes 1, 0.8, 0.6"},
+        {"bump", "Gaussian bump on [0,1]^2"}};
+    const std::pair<const char*, const char*> samplings[] = {
+        {"uniform", "uniform random points (by area)"},
+        {"blue", "blue-noise points (Poisson disk, distance 0.7 h)"},
+        {"anisotropic", "anisotropic points (4x denser along x)"},
+        {"stripes", "scan-like stripes (lines 2h apart, points about h/2 apart along them)"}};
+    for (const auto& [surface, surface_caption] : surfaces)
+      for (const auto& [sampling, sampling_caption] : samplings) {
+        MeshFamilyInfo info{
+            std::string("points-") + surface + "-" + sampling, kMaxPointLevel,
+            std::string(sampling_caption) + " on the " + surface_caption + ", no connectivity",
+            "not in the paper (point sets: 1000 * 4^(L-1) points at level L)", "none"};
+        info.point_set = true;
+        table.push_back({std::move(info), &generate_point_family});
+      }
+    return table;
+  }();
 #undef CURVBENCH_FAMILY_ENTRY
   return entries;
 }

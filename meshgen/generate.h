@@ -86,6 +86,9 @@ struct MeshFamilyInfo {
   std::string paper_role;   ///< what it stands for in the paper (or "not in the paper")
   std::string noise_label;  ///< the results' noise column without controlled noise
   std::vector<std::string> options = {};  ///< the mesh options it takes ("aspect")
+  /// A point-cloud family (meshgen/point_families.h): points without faces, sized by their
+  /// nominal spacing; the face-based parts of the harness (noise estimate, creases) skip it.
+  bool point_set = false;
 };
 
 /// Every family, in table order.

@@ -20,6 +20,14 @@ struct GeneratedMesh {
   std::string family;       ///< e.g. "torus-iso"
   int level = 0;            ///< 1 = coarsest
   std::string description;  ///< one line: parameters, seed, noise
+  /// A point set's nominal spacing sqrt(area / n) (meshgen/point_families.h); 0 for a mesh.
+  double spacing = 0.0;
 };
+
+/// The size h of a generated mesh, the one that levels halve, rates are taken against and noise
+/// is scaled by: the nominal spacing of a point set, else the mean edge length.
+inline double mesh_size(const GeneratedMesh& gm) {
+  return gm.spacing > 0.0 ? gm.spacing : gm.mesh.mean_edge_length();
+}
 
 }  // namespace curvbench

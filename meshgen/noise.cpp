@@ -139,7 +139,7 @@ GeneratedMesh add_noise(const GeneratedMesh& input, int k, std::uint64_t seed,
   if (!input.surface || input.exact_points.rows() != input.mesh.num_vertices())
     throw UsageError("add_noise: mesh without surface or exact points");
 
-  const double h = input.mesh.mean_edge_length();
+  const double h = mesh_size(input);
   Rng rng(derive_seed(
       seed, 1000 * static_cast<std::uint64_t>(input.level) + static_cast<std::uint64_t>(k)));
   VertexMatrix V = input.mesh.vertices();
@@ -213,6 +213,7 @@ GeneratedMesh add_noise(const GeneratedMesh& input, int k, std::uint64_t seed,
   out.family = input.family;
   out.level = input.level;
   out.description = input.description + buf;
+  out.spacing = input.spacing;  // a point set keeps its nominal spacing
   return out;
 }
 

@@ -2,12 +2,12 @@
 //   x_i <- x_i + alpha_i h^k n(x*_i),   alpha_i = scale * xi_i,
 //   xi_i ~ N(0, 1) (NoiseDistribution::gaussian, the default), U[0, 1) (uniform: one-signed) or
 //   U[-sqrt 3, sqrt 3) (uniform_centred: zero mean, unit variance, like N(0, 1)),
-// with h the mean edge length of the input mesh, k the noise order (2 or 3 in the paper; 1 for an
-// amplitude sigma = scale * h), n the exact unit normal at the vertex's exact point x*_i
-// (GeneratedMesh::exact_points), and xi_i drawn by Box-Muller (meshgen/random.h) from
-// Rng(derive_seed(seed, 1000*level + k)), one value per vertex in index order. Every vertex is
-// moved, boundary included.
-// Other directions (NoiseModel::direction), with (t1, t2, n) an orthonormal frame at x*_i:
+// with h = mesh_size(input) (the mean edge length, a point set's nominal spacing), k the noise
+// order (2 or 3 in the paper; 1 for an amplitude sigma = scale * h), n the exact unit normal at the
+// vertex's exact point x*_i (GeneratedMesh::exact_points), and xi_i drawn by Box-Muller
+// (meshgen/random.h) from Rng(derive_seed(seed, 1000*level + k)), one value per vertex in index
+// order. Every vertex is moved, boundary included. Other directions (NoiseModel::direction), with
+// (t1, t2, n) an orthonormal frame at x*_i:
 //   isotropic   x_i += a h^k (xi_n n + xi_1 t1 + xi_2 t2): three draws per vertex (n, t1, t2),
 //               so the normal component has the law of the normal model;
 //   tangential  y = project(x*_i + a h^k (xi_1 t1 + xi_2 t2)) (Surface::project), then

@@ -2,21 +2,21 @@
 #include <omp.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cctype>
+#include <cmath>
 #include <cstdint>
 #include <exception>
 #include <stdexcept>
 #include <string>
 
-#include "core/huge_pages.h"
-#include "mesh/rings.h"
 #include "core/errors.h"
+#include "core/huge_pages.h"
 #include "core/text.h"
-#include "methods/estimator.h"
-#include "methods/option_schema.h"
 #include "mesh/neighbourhood_table.h"
+#include "mesh/rings.h"
+#include "methods/estimator.h"
 #include "methods/operators/vertex_normals.h"
+#include "methods/option_schema.h"
 #include "methods/vertex_result.h"
 #include "points/point_normals.h"
 #include "points/point_search.h"
@@ -60,8 +60,7 @@ Estimator::Estimator(EstimatorOptions options) : options_(options) {
 }
 
 double Estimator::half_rings(double rings, const std::string& method) {
-  const bool half_ring =
-      rings >= 1.0 && std::abs(2.0 * rings - std::round(2.0 * rings)) < 1e-12;
+  const bool half_ring = rings >= 1.0 && std::abs(2.0 * rings - std::round(2.0 * rings)) < 1e-12;
   if (!(rings == 0.0 || half_ring))
     throw UsageError(method + ": ring " + format_g(rings) +
                      " is not supported (valid: 0 = default, or 1, 1.5, 2, 2.5, ...)");
@@ -104,7 +103,8 @@ NeighbourhoodSpec Estimator::neighbourhood_spec() const {
 }
 
 int Estimator::default_knn() const {
-  return (options_.noisy ? 3 : 2) * num_coefficients(std::max(options_.degree, 1));
+  return std::max((options_.noisy ? 3 : 2) * num_coefficients(std::max(options_.degree, 1)),
+                  regular_ring_size(default_ring()));
 }
 
 NeighbourhoodSpec Estimator::neighbourhood_spec(const Mesh& mesh) const {
@@ -219,8 +219,8 @@ MeshEstimation::MeshEstimation(const Mesh& mesh, const Estimator& estimator,
                           ? neighbourhoods->get(spec, false, threads)
                           : std::make_shared<const NeighbourhoodTable>(mesh, spec, false, threads);
   } else if (neighbourhoods != nullptr && use != NeighbourhoodUse::none) {
-    neighbourhoods_ = neighbourhoods->get(spec, use == NeighbourhoodUse::neighbours_and_faces,
-                                          threads);
+    neighbourhoods_ =
+        neighbourhoods->get(spec, use == NeighbourhoodUse::neighbours_and_faces, threads);
   }
   data_ = estimator.prepare(mesh, normals_, threads);
   if (threads > n) threads = n > 0 ? n : 1;

@@ -78,7 +78,7 @@ struct MeshContext {
   /// Area-weighted vertex normals (docs/algorithms.md §2); on a point set (no faces), the PCA
   /// normals oriented over the k-NN graph (points/point_normals.h).
   const VertexMatrix& approx_normals;
-  const MeshData* data = nullptr;      ///< what Estimator::prepare() returned (may be null)
+  const MeshData* data = nullptr;  ///< what Estimator::prepare() returned (may be null)
   /// The estimator's starting neighbourhoods, gathered once (Estimator::neighbourhood_spec(),
   /// with faces if neighbourhood_use() says so), or null: collect_neighbourhood() then collects.
   const NeighbourhoodTable* neighbourhoods = nullptr;
@@ -146,7 +146,8 @@ class Estimator {
   NeighbourhoodSpec neighbourhood_spec(const Mesh& mesh) const;
   /// K of the default k-NN of a point set: 2 (d+1)(d+2)/2, about the vertices of the default
   /// ring (d+1)/2 on a regular valence-6 mesh (12 for d = 2, 30 for d = 4); 3 (d+1)(d+2)/2 when
-  /// noisy (half a ring more).
+  /// noisy (half a ring more); at least regular_ring_size(default_ring()) (18 for APSS and the
+  /// surface variation, whose default is the 2-ring).
   int default_knn() const;
   /// What the method reads of it; default none. A method that calls collect_neighbourhood says
   /// so, or it is never handed a table.

@@ -491,4 +491,20 @@ void check_options_apply(const EstimatorOptions& options, const OptionTarget& ta
   }
 }
 
+std::string point_rule_text(const NeighbourhoodSpec& spec) {
+  using Points = NeighbourhoodSpec::Points;
+  using Kind = PointNeighbourhood::Kind;
+  switch (spec.points) {
+    case Points::none:
+      return "";
+    case Points::knn:
+      return ValueText<PointNeighbourhood>::text({Kind::knn, spec.size});
+    case Points::radius:
+      return ValueText<PointNeighbourhood>::text({Kind::radius, spec.size});
+    case Points::radius_spacing:
+      return ValueText<PointNeighbourhood>::text({Kind::radius_spacing, spec.size});
+  }
+  return "";
+}
+
 }  // namespace curvbench

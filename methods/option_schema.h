@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "curvbench/estimator_options.h"
+#include "mesh/rings.h"
 
 namespace curvbench {
 
@@ -51,6 +52,10 @@ std::string option_table_markdown(OptionTableStyle style);
 
 /// The option called `name` (its name or Python name); throws UsageError naming the valid ones.
 const OptionInfo& option_info(std::string_view name);
+
+/// The neighbourhood option's text of a point neighbourhood ("knn=12", "radius=0.1",
+/// "radius=2.5s"), as the results' rings column names it; "" for a ring neighbourhood.
+std::string point_rule_text(const NeighbourhoodSpec& spec);
 
 /// A value as Python or C++ hands it over.
 using OptionValue = std::variant<bool, long long, double, std::string>;

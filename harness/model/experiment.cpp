@@ -276,6 +276,7 @@ Experiment parse_experiment_text(const std::string& text, const std::string& sou
       } else if (key == "panel") {
         need(5);
         e.panels.push_back({w[1], w[2], parse_quantity(w[3]), parse_norm(w[4])});
+        check_norm_applies(e.panels.back().quantity, e.panels.back().norm);
       } else {
         throw InputError(where + ": unknown key '" + key + "'");
       }
@@ -406,6 +407,8 @@ const char* to_string(ReportSection section) {
       return "hard";
     case ReportSection::sweeps:
       return "sweeps";
+    case ReportSection::points:
+      return "points";
     case ReportSection::extra:
       return "extra";
   }
@@ -414,9 +417,10 @@ const char* to_string(ReportSection section) {
 
 ReportSection parse_report_section(const std::string& keyword) {
   for (ReportSection s : {ReportSection::paper, ReportSection::field, ReportSection::hard,
-                          ReportSection::sweeps, ReportSection::extra})
+                          ReportSection::sweeps, ReportSection::points, ReportSection::extra})
     if (keyword == to_string(s)) return s;
-  throw UsageError("report '" + keyword + "' is not one of paper, field, hard, sweeps, extra");
+  throw UsageError("report '" + keyword +
+                   "' is not one of paper, field, hard, sweeps, points, extra");
 }
 
 Experiment parse_experiment(const std::string& path) {

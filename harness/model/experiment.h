@@ -133,9 +133,10 @@ enum class ReportSection {
   hard,    ///< meshes that break estimators: its field study, the leaderboard's "hard meshes"
            ///< class (and no other), the cost page
   sweeps,  ///< a study at a fixed mesh (`sweep`): the sweeps section and the cost page only
+  points,  ///< the point-cloud study: its section (report/point_clouds.h) and the studies page
   extra,   ///< ablations, diagnostics, the radius scaling: its own section only
 };
-/// "paper", "field", "hard", "sweeps", "extra".
+/// "paper", "field", "hard", "sweeps", "points", "extra".
 const char* to_string(ReportSection section);
 /// The inverse of to_string; throws UsageError naming the keywords.
 ReportSection parse_report_section(const std::string& keyword);

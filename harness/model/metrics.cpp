@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "core/errors.h"
 #include "mesh/mesh_checks.h"
@@ -111,7 +112,17 @@ const char* to_string(Quantity q) {
 }
 
 const char* to_string(Norm n) {
-  return n == Norm::L2 ? "L2" : "Linf";
+  switch (n) {
+    case Norm::L2:
+      return "L2";
+    case Norm::Linf:
+      return "Linf";
+    case Norm::angle_rms:
+      return "angle-rms";
+    case Norm::rectified:
+      return "rectified";
+  }
+  return "?";
 }
 
 Quantity parse_quantity(const std::string& s) {
@@ -122,9 +133,16 @@ Quantity parse_quantity(const std::string& s) {
 }
 
 Norm parse_norm(const std::string& s) {
-  if (s == "L2") return Norm::L2;
-  if (s == "Linf") return Norm::Linf;
-  throw UsageError("unknown norm '" + s + "' (expected L2 or Linf)");
+  for (Norm n : {Norm::L2, Norm::Linf, Norm::angle_rms, Norm::rectified})
+    if (s == to_string(n)) return n;
+  throw UsageError("unknown norm '" + s + "' (expected L2, Linf, angle-rms or rectified)");
+}
+
+void check_norm_applies(Quantity q, Norm n) {
+  if (n == Norm::angle_rms && q != Quantity::normal)
+    throw UsageError(std::string("norm angle-rms measures normals, not ") + to_string(q));
+  if (n == Norm::rectified && (q == Quantity::normal || q == Quantity::d1))
+    throw UsageError(std::string("norm rectified measures H, K, k1 and k2, not ") + to_string(q));
 }
 
 const char* to_string(VertexSet s) {
@@ -188,8 +206,43 @@ std::vector<int> select_vertices(const Mesh& mesh, VertexSet set) {
   return out;
 }
 
+namespace {
+
+// The point-cloud literature's norms (metrics.h): PCPNet's RMS angle and rectified error.
+ErrorValue point_cloud_error(Quantity q, Norm norm, std::span<const VertexEstimate> estimates,
+                             std::span<const SurfacePoint> exact, std::span<const int> vertices) {
+  check_norm_applies(q, norm);
+  ErrorValue r;
+  double sum = 0.0;
+  for (int v : vertices) {
+    const VertexEstimate& e = estimates[v];
+    if (!usable(e, q)) {
+      ++r.excluded;
+      continue;
+    }
+    const SurfacePoint& p = exact[v];
+    if (norm == Norm::angle_rms) {
+      const double c = std::min(1.0, std::abs(e.normal.normalized().dot(p.normal)));
+      const double degrees = std::acos(c) * 180.0 / std::numbers::pi;
+      sum += degrees * degrees;
+    } else {
+      const double k = scalar_of(q, p);
+      sum += std::abs(scalar_of(q, e) - k) / std::max(std::abs(k), 1.0);
+    }
+    ++r.vertices;
+  }
+  r.value = r.vertices == 0           ? kNaN
+            : norm == Norm::angle_rms ? std::sqrt(sum / r.vertices)
+                                      : sum / r.vertices;
+  return r;
+}
+
+}  // namespace
+
 ErrorValue compute_error(Quantity q, Norm norm, std::span<const VertexEstimate> estimates,
                          std::span<const SurfacePoint> exact, std::span<const int> vertices) {
+  if (norm == Norm::angle_rms || norm == Norm::rectified)
+    return point_cloud_error(q, norm, estimates, exact, vertices);
   ErrorValue r;
   double num = 0.0, den = 0.0;  // L2: sums of squares; Linf: maxima
   if (q == Quantity::d1) {

@@ -7,7 +7,13 @@
 //                an absolute error in units of the surface's curvature (NaN if s = 0 too)
 //   d1           L2 = sqrt(mean_i e_i^2), e_i = min(|d~1 - d1|, |d~1 + d1|), over non-umbilic
 //                vertices (|k1 - k2| > 1e-8 max|k|), Linf = max_i e_i
-//   rate         log(e_1 / e_N) / log(h_1 / h_N) with the measured mean edge lengths
+//   rate         log(e_1 / e_N) / log(h_1 / h_N) with the measured mean edge lengths (a point
+//                set's nominal spacing sqrt(area / n))
+// Two norms of the point-cloud literature (PCPNet, Guerrero et al. 2018), for the point-cloud
+// study:
+//   normals      angle-rms = sqrt(mean_i theta_i^2) in degrees, theta_i = acos |n~_i . n_i| (the
+//                unoriented angle: a flipped normal counts as right, as PCPNet scores it)
+//   H, K, k1, k2 rectified = mean_i |k~_i - k_i| / max(|k_i|, 1)
 //
 // Vertices whose estimate is `excluded`, or whose value of the quantity scored is NaN (failed, or
 // not computed by the method), are left out of every sum and counted.
@@ -23,14 +29,17 @@
 namespace curvbench {
 
 enum class Quantity { normal, H, K, k1, k2, d1 };
-enum class Norm { L2, Linf };
+enum class Norm { L2, Linf, angle_rms, rectified };
 
 const char* to_string(Quantity q);
 const char* to_string(Norm n);
 /// Parses "normal", "H", "K", "k1", "k2", "d1" (case-sensitive); throws UsageError otherwise.
 Quantity parse_quantity(const std::string& s);
-/// Parses "L2" / "Linf"; throws UsageError otherwise.
+/// Parses "L2", "Linf", "angle-rms", "rectified"; throws UsageError otherwise.
 Norm parse_norm(const std::string& s);
+/// Throws UsageError unless the norm measures the quantity: angle-rms only normals, rectified
+/// only H, K, k1, k2 (L2 and Linf every quantity).
+void check_norm_applies(Quantity q, Norm n);
 
 /// Which vertices an error is taken over.
 enum class VertexSet {

@@ -26,9 +26,13 @@ std::string shortest(double x) {
 std::vector<NoiseCheckRow> noise_check(const NoiseCheckSpec& spec) {
   std::vector<std::string> families = spec.families;
   if (families.empty())
-    for (const MeshFamilyInfo& f : mesh_family_table()) families.push_back(f.name);
+    for (const MeshFamilyInfo& f : mesh_family_table())
+      if (!f.point_set) families.push_back(f.name);  // the estimate reads a mesh's faces
   std::vector<NoiseCheckRow> rows;
-  for (const std::string& family : families)
+  for (const std::string& family : families) {
+    if (mesh_family(family).point_set)
+      throw UsageError("noise-check: " + family +
+                       " is a point-cloud family; the noise estimate reads a mesh's faces");
     for (int level : spec.levels) {
       if (level > max_mesh_level(family)) continue;
       MeshSpec ms;
@@ -63,6 +67,7 @@ std::vector<NoiseCheckRow> noise_check(const NoiseCheckSpec& spec) {
         rows.push_back(r);
       }
     }
+  }
   return rows;
 }
 

@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "harness/model/experiment.h"
-#include "harness/report/report.h"
 #include "harness/report/model.h"
+#include "harness/report/report.h"
 
 namespace curvbench {
 

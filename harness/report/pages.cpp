@@ -223,6 +223,8 @@ std::string summary_markdown(const ReportContent& content, const std::vector<Lea
             "[report/paper-tables.md](report/paper-tables.md).")
         .table(std::move(st));
   md << report::to_markdown(speed);
+  if (!content.point_cloud_summary.blocks.empty())
+    md << report::to_markdown(content.point_cloud_summary);
 
   report::Section advice{"advice", "Which estimator for my mesh", {}};
   advice.text(
@@ -247,6 +249,7 @@ std::string summary_markdown(const ReportContent& content, const std::vector<Lea
       "(report/field-studies.md)\n"
       "- [Neighbourhoods that shrink more slowly than h](report/radius-scaling.md)\n"
       "- [Sweeps at a fixed mesh, and choosing an estimator](report/sweeps.md)\n"
+      "- [Point clouds](report/point-clouds.md)\n"
       "- [Real meshes](REAL_MESHES.md)\n";
   details.text(list);
   md << report::to_markdown(details);
@@ -271,7 +274,8 @@ std::string write_markdown_report(const ReportContent& content, const std::vecto
   const std::map<std::string, std::string> study_titles = {
       {"field-studies", "The estimators in common use"},
       {"radius-scaling", "Neighbourhoods that shrink more slowly than h"},
-      {"sweeps", "Sweeps at a fixed mesh"}};
+      {"sweeps", "Sweeps at a fixed mesh"},
+      {"point-clouds", "Point clouds"}};
   for (const report::Section& s : content.studies) {
     const auto t = study_titles.find(s.id);
     page(s.id, t == study_titles.end() ? s.id : t->second, {s});
@@ -295,7 +299,7 @@ const SitePage kPages[] = {
     {"paper.html", "The paper", "The paper: tables and claims"},
     {"real-meshes.html", "Real meshes", "Real meshes"},
     {"advice.html", "Which estimator for my mesh", "Which estimator for my mesh"},
-    {"studies.html", "Studies", "The field studies, radius scaling and sweeps"},
+    {"studies.html", "Studies", "The field studies, radius scaling, sweeps and point clouds"},
 };
 
 // Markdown links of the report rewritten for the site: report/<x>.md and <x>.md of an
@@ -316,7 +320,8 @@ std::string site_link(const std::string& target) {
   if (t.size() > 3 && t.compare(t.size() - 3, 3, ".md") == 0) {
     const std::string stem = fs::path(t).stem().string();
     if (stem == "paper-tables") return "paper.html";
-    if (stem == "field-studies" || stem == "radius-scaling" || stem == "sweeps")
+    if (stem == "field-studies" || stem == "radius-scaling" || stem == "sweeps" ||
+        stem == "point-clouds")
       return "studies.html#" + stem;
     return "exp-" + stem + ".html" + anchor;
   }

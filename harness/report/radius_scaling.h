@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "harness/model/experiment.h"
-#include "harness/report/report.h"
-#include "harness/report/model.h"
 #include "harness/model/results_table.h"
+#include "harness/report/model.h"
+#include "harness/report/report.h"
 
 namespace curvbench {
 

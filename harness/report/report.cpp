@@ -22,6 +22,7 @@
 #include "harness/report/causes.h"
 #include "harness/report/field.h"
 #include "harness/report/plot_styles.h"
+#include "harness/report/point_clouds.h"
 #include "harness/report/radius_scaling.h"
 #include "harness/report/sweeps.h"
 #include "harness/report/table5.h"
@@ -461,6 +462,7 @@ bool experiment_section(const Experiment& e, const ReportOptions& options, int& 
                          : panel.caption.substr(0, cut + 1) + " [" + m.label() + ", " + set +
                                "]\\n" + panel.caption.substr(cut + 2);
         plot.series = error_series(sel_rows);
+        if (is_point_set_family(m.family)) plot.x_label = "nominal spacing h = sqrt(area / n)";
         if (options.plots) {
           if (options.stop && options.stop()) return false;
           if (!render_plot_files(plot, dir, base)) ++missing_plots;
@@ -504,6 +506,8 @@ std::optional<ReportContent> build_report(const std::vector<Experiment>& experim
   report::Section sweeps{"sweeps", "", {}};
   if (!sweeps_section(experiments, options, missing_plots, sweeps)) return std::nullopt;
   out.studies.push_back(std::move(sweeps));
+  out.studies.push_back(point_cloud_section(experiments, dir));
+  out.point_cloud_summary = point_cloud_summary(experiments, dir);
   if (missing_plots > 0)
     std::fprintf(stderr, "report: %d plots not rendered (is gnuplot installed?)\n", missing_plots);
   return out;

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "harness/model/experiment.h"
-#include "harness/report/model.h"
 #include "harness/model/results_table.h"
+#include "harness/report/model.h"
 #include "meshgen/torus_isosurface.h"
 
 namespace curvbench {
@@ -43,7 +43,9 @@ report::Section table4_section(const std::vector<Table4Row>& rows);
 struct ReportContent {
   std::vector<report::Section> paper;        ///< Tables 2 and 4, the well-shaped tori, Table 5
   std::vector<report::Section> experiments;  ///< one per experiment but the sweeps; id = name
-  std::vector<report::Section> studies;      ///< field studies, radius scaling, sweeps + advice
+  std::vector<report::Section> studies;      ///< field studies, radius scaling, sweeps + advice,
+                                             ///< point clouds
+  report::Section point_cloud_summary;       ///< REPORT.md's point-cloud tables (point_clouds.h)
 };
 
 /// Builds the content (and, with options.plots, the PNG/SVG plots) from the CSVs in

@@ -14,6 +14,7 @@
 #include "harness/run/external_estimator.h"
 #include "meshgen/generate.h"
 #include "methods/estimator.h"
+#include "methods/option_schema.h"
 
 namespace curvbench {
 
@@ -172,7 +173,7 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads,
     // The noisy-data half ring for the degrees the experiment gives it (the degree is the
     // estimator's, from its spec).
     opt.noisy = opt.noisy || e.noisy_for_degree(estimator_degree(c.method->spec, opt));
-    if (e.radius_c > 0.0) scale_radius(e, c.method->spec, mesh.mean_edge_length(), opt);
+    if (e.radius_c > 0.0) scale_radius(e, c.method->spec, mesh_size(sm.generated), opt);
     const auto estimator = make_estimator(c.method->spec, opt);
     // The case's time includes gathering the neighbourhoods when this is the first case of the
     // mesh with its neighbourhood spec (later ones read the cache's table).
@@ -185,8 +186,11 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads,
     degree = estimator->options().degree;
     // Under radius-scaling the rings change with the level: the column names the rule, so that
     // the levels form one series.
-    rings = e.radius_c > 0.0 ? format_g(e.radius_c) + "h^" + format_g(e.radius_alpha)
-                             : format_g(opt.rings > 0 ? opt.rings : estimator->default_ring());
+    // A point neighbourhood (a point set, or the option `neighbourhood`) is named by its rule.
+    const NeighbourhoodSpec start = estimator->neighbourhood_spec(mesh);
+    rings = start.is_points()  ? point_rule_text(start)
+            : e.radius_c > 0.0 ? format_g(e.radius_c) + "h^" + format_g(e.radius_alpha)
+                               : format_g(opt.rings > 0 ? opt.rings : estimator->default_ring());
   }
 
   int reduced = 0, failed = 0;
@@ -210,7 +214,7 @@ std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads,
   like.family = c.mesh->label();
   like.level = c.level;
   like.vertices = mesh.num_vertices();
-  like.h = mesh.mean_edge_length();
+  like.h = mesh_size(sm.generated);
   like.method = method_label;
   like.degree = degree;
   like.rings = rings;

@@ -81,14 +81,17 @@ TEST(Experiment, ErrorsNameFileAndLine) {
   };
   expect_error(base + "colour red\n", "bad.exp:4: unknown key 'colour'");
   expect_error(base + "panel q c curvature L2\n", "bad.exp:4: unknown quantity");
+  expect_error(base + "panel q c H angle-rms\n", "bad.exp:4: norm angle-rms measures normals");
+  expect_error(base + "panel q c normal rectified\n", "bad.exp:4: norm rectified measures H");
   expect_error(base + "noise order=5\n",
                "bad.exp:4: noise order 5 out of range (valid: 0 = none, 1..4)");
   expect_error(base + "mesh bump-48 levels=1,x\n", "bad.exp:4: 'x' is not an integer");
   expect_error(base + "title \"open\n", "bad.exp:4: unterminated quote");
   expect_error(base + "method lhf-2 label=\"a,b\"\n", "bad.exp:4: a label must be");
   expect_error(base + "method lhf-2 centre=maybe\n", "bad.exp:4: centre: expected yes or no");
-  expect_error(base + "report figures\n",
-               "bad.exp:4: report 'figures' is not one of paper, field, hard, sweeps, extra");
+  expect_error(
+      base + "report figures\n",
+      "bad.exp:4: report 'figures' is not one of paper, field, hard, sweeps, points, extra");
   expect_error(base + "sweep radius\n", "bad.exp: a 'sweep' line and 'report sweeps' go together");
   expect_error(base + "report sweeps\n", "bad.exp: a 'sweep' line and 'report sweeps' go together");
   // One name per experiment: the file's; a name line is refused, the name must suit a CSV.

@@ -214,5 +214,45 @@ TEST(Metrics, QuantitiesAreJudgedOneByOne) {
     EXPECT_TRUE(computes(ComputedQuantities{}, q)) << to_string(q);
 }
 
+// The point-cloud literature's norms. PCPNet's RMS angle: normals turned by 3 and 4 degrees about
+// x, a third one exactly reversed (unoriented: no error), the rest exact, over 4 points:
+// sqrt((9 + 16) / 4) = 2.5 degrees. The rectified error: H = 0.5, 1, 1.5, 2 (make(4)) estimated
+// 0.6, 1, 1.5, 2.4: (0.1 / 1 + 0.4 / 2) / 4 = 0.075.
+TEST(Metrics, AngleRmsAndRectifiedErrors) {
+  Fixture f = make(4);
+  const auto turned = [](double degrees) {
+    const double a = degrees * M_PI / 180.0;
+    return Vec3(0, std::sin(a), std::cos(a));
+  };
+  f.est[0].normal = turned(3.0);
+  f.est[1].normal = turned(4.0);
+  f.est[2].normal = -f.exact[2].normal;
+  EXPECT_NEAR(compute_error(Quantity::normal, Norm::angle_rms, f.est, f.exact, f.all).value, 2.5,
+              1e-12);
+  f.est[0].H = 0.6;
+  f.est[3].H = 2.4;
+  EXPECT_NEAR(compute_error(Quantity::H, Norm::rectified, f.est, f.exact, f.all).value, 0.075,
+              1e-15);
+  // A point without an estimate is counted as excluded, not as an error.
+  f.est[1].H = NAN;
+  const ErrorValue e = compute_error(Quantity::H, Norm::rectified, f.est, f.exact, f.all);
+  EXPECT_EQ(e.excluded, 1);
+  EXPECT_NEAR(e.value, 0.3 / 3, 1e-15);
+}
+
+TEST(Metrics, PointCloudNormsParseAndApplyToTheirQuantities) {
+  for (Norm n : {Norm::L2, Norm::Linf, Norm::angle_rms, Norm::rectified})
+    EXPECT_EQ(parse_norm(to_string(n)), n);
+  EXPECT_THROW(parse_norm("angle"), UsageError);
+  EXPECT_NO_THROW(check_norm_applies(Quantity::normal, Norm::angle_rms));
+  EXPECT_THROW(check_norm_applies(Quantity::H, Norm::angle_rms), UsageError);
+  for (Quantity q : {Quantity::H, Quantity::K, Quantity::k1, Quantity::k2})
+    EXPECT_NO_THROW(check_norm_applies(q, Norm::rectified));
+  EXPECT_THROW(check_norm_applies(Quantity::normal, Norm::rectified), UsageError);
+  EXPECT_THROW(check_norm_applies(Quantity::d1, Norm::rectified), UsageError);
+  Fixture f = make(2);
+  EXPECT_THROW(compute_error(Quantity::d1, Norm::angle_rms, f.est, f.exact, f.all), UsageError);
+}
+
 }  // namespace
 }  // namespace curvbench

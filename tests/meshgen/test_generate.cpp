@@ -29,21 +29,24 @@ std::string usage_error(const MeshSpec& spec) {
 }
 
 TEST(Generate, Families) {
-  const std::vector<std::string> expected = {"torus-structured",
-                                             "torus-jittered",
-                                             "torus-iso",
-                                             "torus-iso-projected",
-                                             "bump-48",
-                                             "bump-irregular",
-                                             "bump-unstructured",
-                                             "torus-unstructured",
-                                             "torus-unstructured-minval5",
-                                             "torus-anisotropic",
-                                             "bump-anisotropic",
-                                             "bump-density",
-                                             "lantern",
-                                             "lantern-squeezed",
-                                             "ellipsoid"};
+  std::vector<std::string> expected = {"torus-structured",
+                                       "torus-jittered",
+                                       "torus-iso",
+                                       "torus-iso-projected",
+                                       "bump-48",
+                                       "bump-irregular",
+                                       "bump-unstructured",
+                                       "torus-unstructured",
+                                       "torus-unstructured-minval5",
+                                       "torus-anisotropic",
+                                       "bump-anisotropic",
+                                       "bump-density",
+                                       "lantern",
+                                       "lantern-squeezed",
+                                       "ellipsoid"};
+  for (const char* surface : {"torus", "sphere", "ellipsoid", "bump"})
+    for (const char* sampling : {"uniform", "blue", "anisotropic", "stripes"})
+      expected.push_back(std::string("points-") + surface + "-" + sampling);
   EXPECT_EQ(mesh_families(), expected);
   EXPECT_EQ(max_mesh_level("torus-structured"), 6);  // 5-6: beyond the paper, for scaling
   EXPECT_EQ(max_mesh_level("torus-jittered"), 6);
@@ -65,7 +68,7 @@ TEST(Generate, Families) {
     EXPECT_EQ(gm.level, 1);
     ASSERT_TRUE(gm.surface);
     EXPECT_EQ(gm.exact_points.rows(), gm.mesh.num_vertices());
-    EXPECT_GT(gm.mesh.num_faces(), 0);
+    EXPECT_EQ(gm.mesh.num_faces() > 0, !mesh_family(family).point_set) << family;
     EXPECT_TRUE(gm.mesh.is_consistently_oriented());
     EXPECT_FALSE(gm.description.empty());
   }

@@ -214,5 +214,29 @@ TEST(PointSetBadInput, NonFiniteCoordinatesAreRefused) {
   EXPECT_THROW(point_set(V), InputError);
 }
 
+// The default k of a point set: 2 n(d) for the fits (12, 20, 30 for degrees 2-4; 3 n(d) when
+// noisy), and at least the default ring's size on a regular mesh: 18 points for APSS and the
+// surface variation (the 2-ring), which 2 n(1) = 6 would starve.
+TEST(PointSets, DefaultKMatchesTheDefaultRing) {
+  const Mesh mesh = point_set(sample_torus_points(50, 1.0, 0.4, 1));
+  const auto k_of = [&](const char* method, bool noisy = false) {
+    EstimatorOptions o;
+    o.noisy = noisy;
+    const NeighbourhoodSpec s = make_estimator(method, o)->neighbourhood_spec(mesh);
+    EXPECT_EQ(s.points, NeighbourhoodSpec::Points::knn) << method;
+    return static_cast<int>(s.size);
+  };
+  EXPECT_EQ(k_of("lhf-2"), 12);
+  EXPECT_EQ(k_of("jet-3"), 20);
+  EXPECT_EQ(k_of("lhf-4"), 30);
+  EXPECT_EQ(k_of("lhf-2", true), 18);
+  EXPECT_EQ(k_of("apss"), 18);
+  EXPECT_EQ(k_of("surface-variation"), 18);
+  EXPECT_EQ(regular_ring_size(1.0), 6);
+  EXPECT_EQ(regular_ring_size(1.5), 12);
+  EXPECT_EQ(regular_ring_size(2.5), 30);
+  EXPECT_EQ(regular_ring_size(3.0), 36);
+}
+
 }  // namespace
 }  // namespace curvbench
