@@ -249,7 +249,7 @@ std::string summary_markdown(const ReportContent& content, const std::vector<Lea
       "(report/field-studies.md)\n"
       "- [Neighbourhoods that shrink more slowly than h](report/radius-scaling.md)\n"
       "- [Sweeps at a fixed mesh, and choosing an estimator](report/sweeps.md)\n"
-      "- [Point clouds](report/point-clouds.md)\n"
+      "- [Point clouds: estimators without connectivity](report/point-cloud-study.md)\n"
       "- [Real meshes](REAL_MESHES.md)\n";
   details.text(list);
   md << report::to_markdown(details);
@@ -275,7 +275,7 @@ std::string write_markdown_report(const ReportContent& content, const std::vecto
       {"field-studies", "The estimators in common use"},
       {"radius-scaling", "Neighbourhoods that shrink more slowly than h"},
       {"sweeps", "Sweeps at a fixed mesh"},
-      {"point-clouds", "Point clouds"}};
+      {"point-cloud-study", "Point clouds"}};
   for (const report::Section& s : content.studies) {
     const auto t = study_titles.find(s.id);
     page(s.id, t == study_titles.end() ? s.id : t->second, {s});
@@ -321,7 +321,7 @@ std::string site_link(const std::string& target) {
     const std::string stem = fs::path(t).stem().string();
     if (stem == "paper-tables") return "paper.html";
     if (stem == "field-studies" || stem == "radius-scaling" || stem == "sweeps" ||
-        stem == "point-clouds")
+        stem == "point-cloud-study")
       return "studies.html#" + stem;
     return "exp-" + stem + ".html" + anchor;
   }

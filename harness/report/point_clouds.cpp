@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -97,16 +98,17 @@ report::Table rate_table(const StudyRows& s, const Measure& m) {
   return t;
 }
 
-// Each surface as a mesh and as points, per estimator: normals L2 and H L2, finest error and
-// rate, from the first experiment of the study that has both.
-report::Table side_by_side(const std::vector<StudyRows>& study) {
+// The first `pairs` surfaces of kSideBySide as meshes and as points, per estimator: normals L2
+// and H L2, finest error and rate, from the first experiment of the study that has both.
+report::Table side_by_side(const std::vector<StudyRows>& study, size_t pairs) {
   report::Table t;
   t.caption =
       "**The same surfaces as meshes (the estimators' rings) and as uniform points (k nearest "
       "points)**: the finest level's error (average rate)";
   t.columns = {"surface", "estimator", "normals, mesh",  "normals, points",
                "H, mesh", "H, points", "H points / mesh"};
-  for (const MeshAndPoints& pair : kSideBySide) {
+  for (size_t p = 0; p < pairs && p < std::size(kSideBySide); ++p) {
+    const MeshAndPoints& pair = kSideBySide[p];
     for (const StudyRows& s : study) {
       const auto find = [&](const std::string& method, const char* family,
                             Quantity q) -> const RateRow* {
@@ -170,14 +172,14 @@ bool is_point_set_family(const std::string& family) {
 
 report::Section point_cloud_section(const std::vector<Experiment>& experiments,
                                     const std::string& results_dir) {
-  report::Section s{"point-clouds", "Point clouds", {}};
+  report::Section s{"point-cloud-study", "Point clouds", {}};
   const std::vector<StudyRows> study = study_rows(experiments, results_dir);
   if (study.empty()) {
     s.text("No point-cloud experiment (`report points`) has results in this folder.");
     return s;
   }
   s.text(kIntro);
-  report::Table side = side_by_side(study);
+  report::Table side = side_by_side(study, std::size(kSideBySide));
   if (!side.rows.empty()) {
     s.heading("Meshes and point sets side by side");
     s.table(std::move(side));
@@ -196,13 +198,14 @@ report::Section point_cloud_section(const std::vector<Experiment>& experiments,
 
 report::Section point_cloud_summary(const std::vector<Experiment>& experiments,
                                     const std::string& results_dir) {
-  report::Section s{"point-clouds", "Point clouds", {}};
+  report::Section s{"point-cloud-study", "Point clouds", {}};
   const std::vector<StudyRows> study = study_rows(experiments, results_dir);
   if (study.empty()) return s;
   s.text(
       "Estimators without connectivity on sampled analytic surfaces, against the spacing h; "
-      "errors, rates and the noisy samples: [report/point-clouds.md](report/point-clouds.md).");
-  report::Table side = side_by_side(study);
+      "errors, rates and the noisy samples: "
+      "[report/point-cloud-study.md](report/point-cloud-study.md).");
+  report::Table side = side_by_side(study, 1);  // the torus; the others in the study's page
   if (!side.rows.empty()) s.table(std::move(side));
   report::Table rates = rate_table(study.front(), kMeasures[0]);
   if (!rates.rows.empty()) s.table(std::move(rates));

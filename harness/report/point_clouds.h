@@ -30,13 +30,15 @@ inline constexpr MeshAndPoints kSideBySide[] = {
 /// Whether `family` is a point-cloud family of the family table (false for an unknown name).
 bool is_point_set_family(const std::string& family);
 
-/// The studies' section "point-clouds"; a line saying so when no experiment of the study has
-/// results in `results_dir`.
+/// The studies' section "point-cloud-study" (report/point-cloud-study.md; the experiments' own
+/// pages are report/point-clouds.md and report/point-clouds-noise.md); a line saying so when no
+/// experiment of the study has results in `results_dir`.
 report::Section point_cloud_section(const std::vector<Experiment>& experiments,
                                     const std::string& results_dir);
 
-/// REPORT.md's short form: the H L2 rate table of the first noise-free experiment of the study
-/// and the side-by-side table, with a link to report/point-clouds.md; empty without results.
+/// REPORT.md's short form: the torus's rows of the side-by-side table and the H L2 rate table of
+/// the study's first experiment, with a link to report/point-cloud-study.md; empty without
+/// results.
 report::Section point_cloud_summary(const std::vector<Experiment>& experiments,
                                     const std::string& results_dir);
 

@@ -1,7 +1,7 @@
-// build_report (harness/report/report.h): an experiment's section from its CSV, rendered to markdown:
-// the panel caption, the family's caption from the family table, one row per method with its
-// errors per level and the rate between the first and last level; one table per vertex set;
-// a missing CSV is said; a stop request gives nothing.
+// build_report (harness/report/report.h): an experiment's section from its CSV, rendered to
+// markdown: the panel caption, the family's caption from the family table, one row per method with
+// its errors per level and the rate between the first and last level; one table per vertex set; a
+// missing CSV is said; a stop request gives nothing.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,8 +11,9 @@
 #include <vector>
 
 #include "harness/model/experiment.h"
-#include "harness/report/report.h"
 #include "harness/model/results_table.h"
+#include "harness/report/point_clouds.h"
+#include "harness/report/report.h"
 #include "meshgen/generate.h"
 #include "tests/cli/cli_runner.h"
 #include "tests/harness/synthetic_rows.h"
@@ -138,6 +139,46 @@ TEST(BuildReport, MissingCsvIsSaidAndStopGivesNothing) {
   o.plots = true;
   o.stop = [] { return true; };
   EXPECT_FALSE(build_report({experiment()}, o).has_value());
+}
+
+// The point-cloud study's section: per estimator and point-set series the finest error with its
+// rate, the least error of a column marked; the torus as a mesh and as points side by side with
+// the ratio of their finest H errors. LHF-2: mesh 1e-2 at rate 2 (finest 6.25e-4), points 2e-2 at
+// rate 1.5 (finest 2e-2 / 8 = 2.5e-3): ratio 4.00. Jet-2 on the blue-noise points only, 2e-2 at
+// rate 2 (finest 1.25e-3, the column's least).
+TEST(PointCloudStudy, RateTableAndSideBySide) {
+  const auto dir = testing::fresh_dir("point_cloud_study");
+  std::vector<ErrorRow> rows;
+  const auto add = [&](const char* family, const char* method, double e0, double rate) {
+    for (ErrorRow r : testing::synthetic_series("pc-test", family, method, e0, rate)) {
+      r.surface = "torus";
+      rows.push_back(r);
+    }
+  };
+  add("torus-unstructured", "LHF-2", 1e-2, 2.0);
+  add("points-torus-uniform", "LHF-2", 2e-2, 1.5);
+  add("points-torus-blue", "LHF-2", 1e-2, 1.0);
+  add("points-torus-blue", "Jet-2", 2e-2, 2.0);
+  write_error_csv((dir / "pc-test.csv").string(), rows);
+  const Experiment e = parse_experiment_text(
+      "title \"Point test\"\nsection beyond\nreport points\n"
+      "mesh points-torus-uniform levels=1,2,3\nmesh points-torus-blue levels=1,2,3\n"
+      "mesh torus-unstructured levels=1,2,3\nmethod lhf-2\nmethod jet-2\n"
+      "panel p \"P.\" H L2\n",
+      "pc-test.exp");
+  const std::string md = report::to_markdown(point_cloud_section({e}, dir.string()));
+  EXPECT_NE(md.find("| estimator | torus-uniform | torus-blue |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| LHF-2 | **2.50e-03 (1.50)** | 2.50e-03 (1.00) |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| Jet-2 | - | **1.25e-03 (2.00)** |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| `torus-unstructured` / `points-torus-uniform` | LHF-2 | - | - | "
+                    "6.25e-04 (2.00) | 2.50e-03 (1.50) | 4.00 |"),
+            std::string::npos)
+      << md;
+  // Without results, one line says so.
+  const auto empty = testing::fresh_dir("point_cloud_study_empty");
+  EXPECT_NE(report::to_markdown(point_cloud_section({e}, empty.string())).find("No point-cloud"),
+            std::string::npos);
+  EXPECT_TRUE(point_cloud_summary({e}, empty.string()).blocks.empty());
 }
 
 }  // namespace
