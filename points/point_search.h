@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -30,6 +31,9 @@ class PointSearch {
 
   int num_points() const { return static_cast<int>(points_->rows()); }
   const VertexMatrix& points() const { return *points_; }
+  /// Every point once, in the order of the tree's leaves: consecutive points lie close together
+  /// (the row gathers below query in this order, for the caches).
+  std::span<const std::uint32_t> leaf_order() const;
 
   /// The k points nearest to q (fewer if the set has fewer), sorted by distance then index.
   void knn(const Vec3& q, int k, std::vector<PointHit>& out) const;
@@ -61,7 +65,7 @@ struct PointRows {
 };
 
 /// The k-nearest-neighbour rows of every point (knn_of), gathered with `threads` threads in
-/// fixed blocks: the same rows for any number of threads.
+/// fixed blocks of the leaf order: the same rows for any number of threads.
 PointRows knn_rows(const PointSearch& search, int k, int threads);
 /// The radius-r ball rows of every point (ball_of).
 PointRows ball_rows(const PointSearch& search, double r, int threads);
