@@ -202,12 +202,18 @@ std::vector<unsigned char> orient_normals(const VertexMatrix& points, const Poin
 }
 
 PointNormals oriented_pca_normals(const PointSearch& search, int threads) {
+  return oriented_pca_normals(search.points(), knn_rows(search, kNormalNeighbours, threads),
+                              threads);
+}
+
+PointNormals oriented_pca_normals(const VertexMatrix& points, const PointRows& nearest,
+                                  int threads) {
+  const PointRows rows = first_of_rows(nearest, kNormalNeighbours);
   PointNormals out;
-  const PointRows rows = knn_rows(search, kNormalNeighbours, threads);
   std::vector<unsigned char> degenerate;
-  out.normals = pca_normals(search.points(), rows, threads, degenerate);
+  out.normals = pca_normals(points, rows, threads, degenerate);
   out.undetermined =
-      orient_normals(search.points(), rows, out.normals, std::move(degenerate), &out.components);
+      orient_normals(points, rows, out.normals, std::move(degenerate), &out.components);
   return out;
 }
 

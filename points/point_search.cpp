@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <functional>
 #include <limits>
 #include <nanoflann.hpp>
 
@@ -149,29 +150,49 @@ void PointSearch::knn(const Vec3& q, int k, std::vector<PointHit>& out) const {
 void PointSearch::ball(const Vec3& q, double r, std::vector<PointHit>& out) const {
   out.clear();
   if (!(r >= 0.0)) return;
+  ball_squared(q, r * r, out);
+}
+
+void PointSearch::ball_squared(const Vec3& q, double r2, std::vector<PointHit>& out) const {
+  out.clear();
   std::vector<std::pair<std::uint32_t, double>> found;
   nanoflann::SearchParams params;
   params.sorted = false;
-  // nanoflann's radius test is d2 < radius: the next double above r*r keeps points at distance r.
-  tree_->tree.radiusSearch(q.data(), std::nextafter(r * r, HUGE_VAL), found, params);
+  // nanoflann's radius test is d2 < radius: the next double above r2 keeps points at r2.
+  tree_->tree.radiusSearch(q.data(), std::nextafter(r2, HUGE_VAL), found, params);
   out.reserve(found.size());
   for (const auto& [i, d2] : found) out.push_back({static_cast<int>(i), d2});
   sort_hits(out);
 }
 
 void PointSearch::knn_of(int i, int k, std::vector<PointHit>& out) const {
+  out.clear();
+  if (k <= 0) return;
   const Vec3 p = points_->row(i).transpose();
-  // Ask for k + 1 (the point itself) and more while points at distance 0 (duplicates) fill the
-  // list, so that k others remain when the set has them.
-  int ask = k + 1;
+  const auto is_other = [](const PointHit& h) { return h.distance2 > 0.0; };
+  // Ask for k + 2 (the point itself, k others and the one after them) and more while points at
+  // distance 0 (duplicates) fill the list, so that k others and the next remain when the set has
+  // them.
+  int ask = k + 2;
   for (;;) {
     knn(p, ask, out);
-    const auto first =
-        std::find_if(out.begin(), out.end(), [](const PointHit& h) { return h.distance2 > 0.0; });
+    const auto first = std::find_if(out.begin(), out.end(), is_other);
     const int others = static_cast<int>(out.end() - first);
-    if (others >= k || ask >= num_points()) {
+    if (others > k) {
+      const double kth = first[k - 1].distance2;
+      if (first[k].distance2 == kth) {
+        // The next is as far as the k-th: the search kept some of the points at that distance,
+        // the ball of it holds them all, by index.
+        ball_squared(p, kth, out);
+        out.erase(std::remove_if(out.begin(), out.end(), std::not_fn(is_other)), out.end());
+      } else {
+        out.erase(out.begin(), first);
+      }
+      out.resize(static_cast<size_t>(k));
+      return;
+    }
+    if (ask >= num_points()) {
       out.erase(out.begin(), first);
-      if (static_cast<int>(out.size()) > k) out.resize(static_cast<size_t>(k));
       return;
     }
     ask = std::min(num_points(), 2 * ask);
@@ -203,6 +224,20 @@ double mean_spacing(const PointSearch& search, int threads) {
 PointRows knn_rows(const PointSearch& search, int k, int threads) {
   return gather_rows(search, threads,
                      [&](int i, std::vector<PointHit>& hits) { search.knn_of(i, k, hits); });
+}
+
+PointRows first_of_rows(const PointRows& rows, int k) {
+  PointRows first;
+  first.offsets = rows.offsets;
+  for (size_t i = 1; i < first.offsets.size(); ++i)
+    first.offsets[i] =
+        first.offsets[i - 1] + std::min<std::int64_t>(k, rows.offsets[i] - rows.offsets[i - 1]);
+  first.neighbours.resize(static_cast<size_t>(first.offsets.back()));
+  for (size_t i = 1; i < first.offsets.size(); ++i)
+    std::copy_n(rows.neighbours.begin() + rows.offsets[i - 1],
+                first.offsets[i] - first.offsets[i - 1],
+                first.neighbours.begin() + first.offsets[i - 1]);
+  return first;
 }
 
 PointRows ball_rows(const PointSearch& search, double r, int threads) {
