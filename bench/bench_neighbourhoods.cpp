@@ -21,9 +21,10 @@
 //           stages: setup (MeshEstimation's constructor: normals, and for k-NN the tree and the
 //           table of rows), estimate (MeshEstimation::run: for the rings, gathering them and the
 //           fits; for k-NN, the fits on the table's rows), total (the minimum of their sums); for
-//           points-knn also the setup's parts, normals (oriented_pca_normals, its own tree and
-//           16-NN rows: normals-tree, normals-rows, normals-pca, normals-orient, the last on one
-//           thread whatever the count) and table (the NeighbourhoodTable of knn=12, its own tree).
+//           points-knn also the setup's parts: normals-tree, normals-rows (16-NN),
+//           normals-pca, normals-orient (one thread whatever the count); the table's rows are
+//           the first 12 of those 16. The row `table` is the NeighbourhoodTable of knn=12 built
+//           alone (its own tree and search), as a NeighbourhoodCache builds it.
 //
 // CSV columns: part,input,points,stage,neighbourhood,threads,seconds,ns_per_point,
 // neighbours_per_point,ns_per_neighbour (the last two empty where they do not apply). Written
@@ -184,8 +185,8 @@ void lhf_part(const std::string& family, int level, int repeat, std::vector<Row>
       report(rows, {part, input, n, "estimate", way.neighbourhood, threads, s.estimate, 0});
       report(rows, {part, input, n, "total", way.neighbourhood, threads, s.total, 0});
     }
-    // The point set's setup in its parts: the normals (points/point_normals.h: a tree, the
-    // 16-NN rows, PCA, the orientation over the MST) and the table of knn=12 (with its own tree).
+    // The point set's setup in its parts (points/point_normals.h: a tree, the 16-NN rows, PCA,
+    // the orientation over the MST), and the table of knn=12 built alone.
     std::unique_ptr<PointSearch> search;
     const double tree_s = best_of(
         repeat, [&] { search = std::make_unique<PointSearch>(points.vertices()); },
