@@ -1,7 +1,8 @@
 # Thin front end to CMake. `make experiments` and `make test` are the two commands a new user
 # needs; both install missing Debian packages first (as root) through tools/deps.sh.
 # `make bench` runs the Google Benchmark suites and writes results/table5_timing.csv,
-# table5_scaling.csv and end_to_end.csv (the report renders Table 5 from them).
+# table5_scaling.csv and end_to_end.csv (the report renders Table 5 from them), and limits.csv
+# and neighbourhoods.csv.
 # `make test-sanitize` builds the whole test suite with AddressSanitizer and
 # UndefinedBehaviorSanitizer in build-sanitize/ and runs it (CI runs it after `make test`).
 # `make install PREFIX=/opt/curvbench` installs the library (shared and static), the public header

@@ -24,18 +24,17 @@
 
 #include <algorithm>
 #include <charconv>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <functional>
-#include <limits>
 #include <memory>
 #include <numeric>
 #include <string>
 #include <vector>
 
+#include "bench/timing.h"
 #include "core/atomic_file.h"
 #include "core/text.h"
 #include "harness/model/estimate_columns.h"
@@ -51,24 +50,8 @@ namespace {
 
 using namespace curvbench;
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
-
-double seconds_of(const std::function<void()>& f) {
-  const auto t = Clock::now();
-  f();
-  return std::chrono::duration<double>(Clock::now() - t).count();
-}
-
-/// The minimum over `repeat` runs of f (a `prepare` before each, not timed).
-double best_of(
-    int repeat, const std::function<void()>& f, const std::function<void()>& prepare = [] {}) {
-  double best = std::numeric_limits<double>::infinity();
-  for (int r = 0; r < repeat; ++r) {
-    prepare();
-    best = std::min(best, seconds_of(f));
-  }
-  return best;
-}
+using bench::best_of;
+using bench::seconds_of;
 
 volatile double g_sink = 0;  // keeps the measured loops
 
@@ -362,8 +345,8 @@ int run(int argc, char** argv) {
         }
       },
       [&] { text.reserve(8192 * 600); });
-  // The doubles alone, through harness/model/shortest_double.h and through libstdc++'s std::to_chars
-  // (the CSV's formatter before it, the same bytes), for the ratio in the notes.
+  // The doubles alone, through harness/model/shortest_double.h and through libstdc++'s
+  // std::to_chars (the CSV's formatter before it, the same bytes), for the ratio in the notes.
   std::vector<char> chars(std::size_t{8192} * 13 * 64);
   const auto doubles_seconds = [&](auto&& put) {
     return best_of(repeat, [&] {

@@ -7,11 +7,11 @@
 #include <cmath>
 #include <cstring>
 #include <exception>
+#include <stdexcept>
 #include <string>
 
 #include "core/errors.h"
 #include "core/text.h"
-#include "points/point_search.h"
 
 namespace curvbench {
 
@@ -40,7 +40,9 @@ NeighbourhoodTable::NeighbourhoodTable(const Mesh& mesh, const NeighbourhoodSpec
                                        bool with_faces, int threads)
     : spec_(spec), has_faces_(with_faces) {
   if (spec.is_points()) {
-    build_points(mesh, threads);
+    if (with_faces)
+      throw UsageError("neighbourhood table: a k-NN or ball neighbourhood has no faces");
+    build_points(PointSearch(mesh.vertices()), threads, nullptr);
     return;
   }
   check_ring(spec.ring, "ring");
@@ -113,26 +115,33 @@ NeighbourhoodTable::NeighbourhoodTable(const Mesh& mesh, const NeighbourhoodSpec
   }
 }
 
-void NeighbourhoodTable::build_points(const Mesh& mesh, int threads) {
+NeighbourhoodTable::NeighbourhoodTable(const PointSearch& search, const NeighbourhoodSpec& spec,
+                                       int threads, const PointRows* nearest)
+    : spec_(spec), has_faces_(false) {
+  if (!spec.is_points())
+    throw std::invalid_argument("NeighbourhoodTable: a tree serves a point neighbourhood only");
+  build_points(search, threads, nearest);
+}
+
+void NeighbourhoodTable::build_points(const PointSearch& search, int threads,
+                                      const PointRows* nearest) {
   using Points = NeighbourhoodSpec::Points;
-  if (has_faces_)
-    throw UsageError("neighbourhood table: a k-NN or ball neighbourhood has no faces");
   if (spec_.points == Points::knn &&
       !(spec_.size >= 1.0 && spec_.size == std::floor(spec_.size) && spec_.size < 1e9))
     throw UsageError("neighbourhood table: knn=" + format_g(spec_.size) +
                      " is not a whole number of neighbours >= 1");
   if (spec_.points != Points::knn && !(spec_.size > 0.0 && std::isfinite(spec_.size)))
     throw UsageError("neighbourhood table: radius " + format_g(spec_.size) + " is not positive");
-  const PointSearch search(mesh.vertices());
   PointRows rows;
   if (spec_.points == Points::knn) {
-    rows = knn_rows(search, static_cast<int>(spec_.size), threads);
+    const int k = static_cast<int>(spec_.size);
+    rows = nearest != nullptr ? first_of_rows(*nearest, k) : knn_rows(search, k, threads);
   } else {
     radius_ = spec_.size;
     if (spec_.points == Points::radius_spacing) radius_ *= mean_spacing(search, threads);
     rows = ball_rows(search, radius_, threads);
   }
-  const size_t n = static_cast<size_t>(mesh.num_vertices());
+  const size_t n = static_cast<size_t>(search.num_points());
   half_steps_.assign(n, 0);
   nb_offsets_ = std::move(rows.offsets);
   face_offsets_.assign(n + 1, 0);

@@ -27,6 +27,7 @@
 
 #include "mesh/mesh.h"
 #include "mesh/rings.h"
+#include "points/point_search.h"
 
 namespace curvbench {
 
@@ -42,6 +43,12 @@ class NeighbourhoodTable {
   /// rows sorted by distance then index, coincident points left out: points/point_search.h),
   /// with ring 0; it has no faces (UsageError if with_faces).
   NeighbourhoodTable(const Mesh& mesh, const NeighbourhoodSpec& spec, bool with_faces, int threads);
+  /// The same point neighbourhood (spec.is_points(), else std::invalid_argument) with a tree
+  /// already built over the mesh's vertices; for knn=K, `nearest` may give knn_rows of the same
+  /// points with K or more neighbours, whose first K are the rows (points/point_search.h: the same
+  /// rows as a search of K).
+  NeighbourhoodTable(const PointSearch& search, const NeighbourhoodSpec& spec, int threads,
+                     const PointRows* nearest = nullptr);
 
   const NeighbourhoodSpec& spec() const { return spec_; }
   bool has_faces() const { return has_faces_; }
@@ -79,7 +86,7 @@ class NeighbourhoodTable {
   std::size_t bytes() const;
 
  private:
-  void build_points(const Mesh& mesh, int threads);
+  void build_points(const PointSearch& search, int threads, const PointRows* nearest);
 
   NeighbourhoodSpec spec_;
   double radius_ = 0.0;

@@ -207,17 +207,30 @@ MeshEstimation::MeshEstimation(const Mesh& mesh, const Estimator& estimator,
   const NeighbourhoodSpec spec = estimator.neighbourhood_spec(mesh);
   if (spec.is_points() || mesh.num_faces() == 0) {
     check_point_method(estimator, mesh);
+    // One tree serves the normals and the table; of k-NN rows, one search of the larger k
+    // serves both (each takes the first k of every row: the same rows as its own search).
+    const PointSearch search(mesh.vertices());
+    const int table_k = spec.points == NeighbourhoodSpec::Points::knn && spec.size >= 1.0 &&
+                                spec.size < 1e9 && spec.size == std::floor(spec.size)
+                            ? static_cast<int>(spec.size)
+                            : 0;  // (the table refuses another size)
+    PointRows nearest;
+    int nearest_k = 0;
     if (mesh.num_faces() == 0 && n > 0) {
       // The normals of a point set (points/point_normals.h): the fits' frames and signs.
-      const PointSearch search(mesh.vertices());
-      PointNormals pn = oriented_pca_normals(search, threads);
+      nearest_k =
+          neighbourhoods == nullptr ? std::max(kNormalNeighbours, table_k) : kNormalNeighbours;
+      nearest = knn_rows(search, nearest_k, threads);
+      PointNormals pn = oriented_pca_normals(mesh.vertices(), nearest, threads);
       normals_ = std::move(pn.normals);
       sign_undetermined_ = std::move(pn.undetermined);
     }
     // A point neighbourhood is always read from its table (it cannot be collected per vertex).
-    neighbourhoods_ = neighbourhoods != nullptr
-                          ? neighbourhoods->get(spec, false, threads)
-                          : std::make_shared<const NeighbourhoodTable>(mesh, spec, false, threads);
+    if (neighbourhoods != nullptr)
+      neighbourhoods_ = neighbourhoods->get(spec, false, threads);
+    else
+      neighbourhoods_ = std::make_shared<const NeighbourhoodTable>(
+          search, spec, threads, table_k > 0 && nearest_k >= table_k ? &nearest : nullptr);
   } else if (neighbourhoods != nullptr && use != NeighbourhoodUse::none) {
     neighbourhoods_ =
         neighbourhoods->get(spec, use == NeighbourhoodUse::neighbours_and_faces, threads);

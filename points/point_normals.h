@@ -48,5 +48,9 @@ std::vector<unsigned char> orient_normals(const VertexMatrix& points, const Poin
 /// Steps 1-3 with the k-nearest-neighbour rows (k = kNormalNeighbours).
 inline constexpr int kNormalNeighbours = 16;
 PointNormals oriented_pca_normals(const PointSearch& search, int threads);
+/// The same from knn_rows of kNormalNeighbours or more neighbours (their first
+/// kNormalNeighbours: the same normals).
+PointNormals oriented_pca_normals(const VertexMatrix& points, const PointRows& nearest,
+                                  int threads);
 
 }  // namespace curvbench

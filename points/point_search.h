@@ -1,12 +1,14 @@
 // Neighbour search in a point set without connectivity: a k-d tree (nanoflann) over the rows of
 // a VertexMatrix, k nearest neighbours and radius balls, and the point set's mean spacing.
 //
-// Results are deterministic: the tree is built by one thread from the points alone, and every
-// list is sorted by distance, then by index.
+// Results are deterministic: the tree is built by one thread from the points alone, every list
+// is sorted by distance, then by index, and a k-nearest list breaks ties at its last distance by
+// index.
 #pragma once
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -30,6 +32,9 @@ class PointSearch {
 
   int num_points() const { return static_cast<int>(points_->rows()); }
   const VertexMatrix& points() const { return *points_; }
+  /// Every point once, in the order of the tree's leaves: consecutive points lie close together
+  /// (the row gathers below query in this order, for the caches).
+  std::span<const std::uint32_t> leaf_order() const;
 
   /// The k points nearest to q (fewer if the set has fewer), sorted by distance then index.
   void knn(const Vec3& q, int k, std::vector<PointHit>& out) const;
@@ -37,12 +42,16 @@ class PointSearch {
   void ball(const Vec3& q, double r, std::vector<PointHit>& out) const;
 
   /// The k nearest points to point i other than i and other than any point at its very position
-  /// (a duplicate is never its copy's neighbour), sorted by distance then index.
+  /// (a duplicate is never its copy's neighbour), sorted by distance then index; of the points
+  /// tied at the k-th distance, those of lowest index. So the first k of knn_of(i, k') for any
+  /// k' >= k are knn_of(i, k).
   void knn_of(int i, int k, std::vector<PointHit>& out) const;
   /// The points within distance r of point i, i and its duplicates excluded.
   void ball_of(int i, double r, std::vector<PointHit>& out) const;
 
  private:
+  /// Every point within squared distance r2 of q (inclusive), sorted by distance then index.
+  void ball_squared(const Vec3& q, double r2, std::vector<PointHit>& out) const;
   struct Tree;
   const VertexMatrix* points_;
   std::unique_ptr<Tree> tree_;
@@ -61,8 +70,10 @@ struct PointRows {
 };
 
 /// The k-nearest-neighbour rows of every point (knn_of), gathered with `threads` threads in
-/// fixed blocks: the same rows for any number of threads.
+/// fixed blocks of the leaf order: the same rows for any number of threads.
 PointRows knn_rows(const PointSearch& search, int k, int threads);
+/// The first k of each row: of k' >= k nearest rows (knn_rows), the k nearest rows.
+PointRows first_of_rows(const PointRows& rows, int k);
 /// The radius-r ball rows of every point (ball_of).
 PointRows ball_rows(const PointSearch& search, double r, int threads);
 

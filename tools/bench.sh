@@ -8,6 +8,8 @@
 # (CSV only: `curvbench report` renders Table 5 from them, harness/report/table5.h)
 #   results/limits.csv          per stage of `curvbench estimate` at 1.44M vertices: measured time
 #                               and the bound the hardware sets (bench/bench_limits.cpp)
+#   results/neighbourhoods.csv  k-NN and ball search at 1M points, and LHF-2 with rings against
+#                               LHF-2 with k-NN on the same vertices (bench/bench_neighbourhoods.cpp)
 # and, after `make experiments`, rewrites REPORT.md and CLAIMS.md from its case store so that the
 # timing claims are judged on this run.
 # Raw Google Benchmark JSON goes to BUILD/bench/*.json. The conversion is done by the bench
@@ -53,7 +55,8 @@ shopt -s nullglob
 for b in "$BUILD"/bench_*; do
   name=$(basename "$b")
   [[ -x "$b" && -f "$b" ]] || continue
-  [[ "$name" == bench_solvers || "$name" == bench_estimators || "$name" == bench_limits ]] && continue
+  [[ "$name" == bench_solvers || "$name" == bench_estimators || "$name" == bench_limits ||
+     "$name" == bench_neighbourhoods ]] && continue
   echo "== $b"
   "$b" "${ARGS[@]}" --benchmark_out="$OUT/$name.json" --benchmark_out_format=json
 done
@@ -74,6 +77,14 @@ if [[ -x "$BUILD/bench_limits" ]]; then
   echo "== $BUILD/bench_limits (stages at 1.44M vertices against the hardware's bounds)"
   "$BUILD/bench_limits" --mesh "$mesh" --method lhf-2 --threads 1 --scratch "$OUT" \
     --output "$RESULTS/limits.csv"
+fi
+
+# Neighbourhoods without connectivity: the k-d tree's build and k-NN and ball rows at 1M points,
+# and LHF-2 with its rings against knn=12 on the same vertices, as a mesh and as a point set
+# (docs/performance.md "Neighbourhoods of point sets"; minimum of 3 runs each).
+if [[ -x "$BUILD/bench_neighbourhoods" ]]; then
+  echo "== $BUILD/bench_neighbourhoods (k-NN at 1M points; LHF-2 rings vs k-NN)"
+  "$BUILD/bench_neighbourhoods" --repeat 3 --output "$RESULTS/neighbourhoods.csv"
 fi
 
 if [[ -x /usr/bin/time ]]; then
@@ -112,4 +123,4 @@ if [[ -d "$RESULTS/.cache" && -x "$BUILD/curvbench" ]]; then
 fi
 
 /usr/bin/python3 "$(dirname "$0")/readme_headline.py" README.md "$RESULTS"
-echo "bench: wrote results/table5_timing.csv, table5_scaling.csv, end_to_end.csv and limits.csv in $(($(date +%s) - start)) s"
+echo "bench: wrote results/table5_timing.csv, table5_scaling.csv, end_to_end.csv, limits.csv and neighbourhoods.csv in $(($(date +%s) - start)) s"

@@ -8,6 +8,8 @@
 
 #include "core/errors.h"
 #include "mesh/mesh.h"
+#include "mesh/neighbourhood_table.h"
+#include "meshgen/generate.h"
 #include "meshgen/point_samples.h"
 #include "methods/estimator.h"
 #include "methods/option_schema.h"
@@ -167,6 +169,22 @@ TEST(PointSets, RulesAgreeAndThreadsChangeNothing) {
   int ok = 0;
   for (const auto& e : d) ok += e.status == VertexStatus::ok;
   EXPECT_GT(ok, 2900);
+}
+
+TEST(PointSets, ACacheChangesNothingWhereNeighboursTie) {
+  // The vertices of a structured torus as points: equal distances everywhere. Without a cache
+  // the table's 12-NN rows are the first 12 of the normals' 16-NN rows; with one, a search of 12.
+  const Mesh grid = generate_mesh({"torus-structured", 2, 0, 1, false}).mesh;
+  const Mesh mesh = point_set(grid.vertices());
+  const auto est = make_estimator("lhf-2", {});
+  const auto a = estimate_mesh(mesh, *est);
+  NeighbourhoodCache cache(mesh);
+  const auto b = estimate_mesh(mesh, *est, &cache);
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(std::memcmp(&a[i].H, &b[i].H, sizeof(double)), 0) << i;
+    ASSERT_EQ(a[i].points, b[i].points) << i;
+  }
 }
 
 // ---- bad input -------------------------------------------------------------------------------

@@ -69,6 +69,27 @@ TEST(PointSearch, MeanSpacingOfAGridIsItsStepAndRowsDoNotDependOnThreads) {
   EXPECT_EQ(a.neighbours, b.neighbours);
 }
 
+TEST(PointSearch, TiesAtTheLastDistanceGoToTheLowestIndexSoShorterRowsArePrefixes) {
+  // Around the centre (2, 2) of a 5x5 grid the four diagonals tie at distance sqrt 2: six
+  // nearest are the four at distance 1 and the diagonals of lowest index, (1,1)=6 and (3,1)=8.
+  const VertexMatrix V = grid(4, 1.0);
+  const PointSearch search(V);
+  std::vector<PointHit> hits;
+  search.knn_of(12, 6, hits);
+  ASSERT_EQ(hits.size(), 6u);
+  EXPECT_EQ(hits[4].index, 6);
+  EXPECT_EQ(hits[5].index, 8);
+  // On a grid every row ends in a tie; the first k of longer rows are the k-rows all the same.
+  const VertexMatrix W = grid(30, 0.1);
+  const PointSearch big(W);
+  for (const int k : {1, 5, 6, 7, 12}) {
+    const PointRows direct = knn_rows(big, k, 2);
+    const PointRows first = first_of_rows(knn_rows(big, 16, 1), k);
+    EXPECT_EQ(direct.offsets, first.offsets) << k;
+    EXPECT_EQ(direct.neighbours, first.neighbours) << k;
+  }
+}
+
 TEST(PointNormals, ClosedSetsPointOutwardEachComponentOnItsOwn) {
   // Two spheres far apart: two components, each outward.
   const VertexMatrix a = sphere(800, 1.0, Vec3(0, 0, 0)), b = sphere(500, 0.5, Vec3(10, 0, 0));
