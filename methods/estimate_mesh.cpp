@@ -2,21 +2,21 @@
 #include <omp.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cctype>
+#include <cmath>
 #include <cstdint>
 #include <exception>
 #include <stdexcept>
 #include <string>
 
-#include "core/huge_pages.h"
-#include "mesh/rings.h"
 #include "core/errors.h"
+#include "core/huge_pages.h"
 #include "core/text.h"
-#include "methods/estimator.h"
-#include "methods/option_schema.h"
 #include "mesh/neighbourhood_table.h"
+#include "mesh/rings.h"
+#include "methods/estimator.h"
 #include "methods/operators/vertex_normals.h"
+#include "methods/option_schema.h"
 #include "methods/vertex_result.h"
 #include "points/point_normals.h"
 #include "points/point_search.h"
@@ -60,8 +60,7 @@ Estimator::Estimator(EstimatorOptions options) : options_(options) {
 }
 
 double Estimator::half_rings(double rings, const std::string& method) {
-  const bool half_ring =
-      rings >= 1.0 && std::abs(2.0 * rings - std::round(2.0 * rings)) < 1e-12;
+  const bool half_ring = rings >= 1.0 && std::abs(2.0 * rings - std::round(2.0 * rings)) < 1e-12;
   if (!(rings == 0.0 || half_ring))
     throw UsageError(method + ": ring " + format_g(rings) +
                      " is not supported (valid: 0 = default, or 1, 1.5, 2, 2.5, ...)");
@@ -190,6 +189,19 @@ void check_point_method(const Estimator& estimator, const Mesh& mesh) {
                    point_set_methods() + " only");
 }
 
+// The starting normals of a point set by the option point-normals (points/point_normals.h).
+PointNormals point_set_normals(const Mesh& mesh, const Estimator& estimator, int threads) {
+  const PointSearch search(mesh.vertices());
+  const PointNormalSource source = estimator.options().point_normals;
+  if (source == PointNormalSource::jet) return oriented_jet_normals(search, threads);
+  if (source == PointNormalSource::pca) return oriented_pca_normals(search, threads);
+  if (!mesh.has_given_normals())
+    throw InputError(mesh.source() +
+                     ": point-normals=file, but the points come without normals (a .pwn file, an "
+                     ".xyz file of 6 numbers per line, PLY with nx ny nz, or NOFF has them)");
+  return given_point_normals(search, mesh.given_normals(), threads);
+}
+
 }  // namespace
 
 MeshEstimation::MeshEstimation(const Mesh& mesh, const Estimator& estimator,
@@ -205,12 +217,16 @@ MeshEstimation::MeshEstimation(const Mesh& mesh, const Estimator& estimator,
   int threads = thread_count(estimator);
   const NeighbourhoodUse use = estimator.neighbourhood_use();
   const NeighbourhoodSpec spec = estimator.neighbourhood_spec(mesh);
+  if (mesh.num_faces() > 0 && estimator.options().point_normals != PointNormalSource::pca)
+    throw UsageError(
+        "point-normals=" + option_text(estimator.options(), option_info("point-normals")) +
+        " applies to point sets: " + mesh.source() +
+        " has faces, whose area-weighted vertex normals start the fits");
   if (spec.is_points() || mesh.num_faces() == 0) {
     check_point_method(estimator, mesh);
     if (mesh.num_faces() == 0 && n > 0) {
       // The normals of a point set (points/point_normals.h): the fits' frames and signs.
-      const PointSearch search(mesh.vertices());
-      PointNormals pn = oriented_pca_normals(search, threads);
+      PointNormals pn = point_set_normals(mesh, estimator, threads);
       normals_ = std::move(pn.normals);
       sign_undetermined_ = std::move(pn.undetermined);
     }
@@ -219,8 +235,8 @@ MeshEstimation::MeshEstimation(const Mesh& mesh, const Estimator& estimator,
                           ? neighbourhoods->get(spec, false, threads)
                           : std::make_shared<const NeighbourhoodTable>(mesh, spec, false, threads);
   } else if (neighbourhoods != nullptr && use != NeighbourhoodUse::none) {
-    neighbourhoods_ = neighbourhoods->get(spec, use == NeighbourhoodUse::neighbours_and_faces,
-                                          threads);
+    neighbourhoods_ =
+        neighbourhoods->get(spec, use == NeighbourhoodUse::neighbours_and_faces, threads);
   }
   data_ = estimator.prepare(mesh, normals_, threads);
   if (threads > n) threads = n > 0 ? n : 1;
