@@ -87,8 +87,9 @@ sweeps: build
 
 # Every method on the sample meshes of Debian's libcgal-demo (fetched at run time with apt-get
 # download into $(BUILD)/realmeshes/) -> results/REAL_MESHES.md. CORPUS=all: every method at its
-# default on every mesh file of the package (timeout CORPUS_TIMEOUT, default 300 s, per run) -> the
-# corpus section of results/REAL_MESHES.md (tools/realmeshes_corpus.py).
+# default on every mesh file of the package, and the point-set methods on its point sets (timeout
+# CORPUS_TIMEOUT, default 300 s, per run) -> the corpus section of results/REAL_MESHES.md
+# (tools/realmeshes_corpus.py).
 realmeshes: build
 	@CORPUS='$(CORPUS)' bash tools/realmeshes.sh $(BUILD)
 

@@ -1,8 +1,11 @@
-// `curvbench methods [--labels LO-HI] [--options [--markdown flags|spellings]]`: the registered
+// `curvbench methods [--labels LO-HI | --point-sets] [--options [--markdown flags|spellings]]`:
+// the registered
 // estimators (name, degrees, the option that sizes the neighbourhood, one line each) and the
 // estimator options, both from their tables (methods/registry.cpp,
 // include/curvbench/estimator_options.h). --labels prints one label a line, each fit at each of its
-// degrees in LO..HI and each degree-free operator once, for scripts (tools/realmeshes.sh).
+// degrees in LO..HI and each degree-free operator once, and --point-sets the names of the methods
+// that work on a point set, one a line, for scripts (tools/realmeshes.sh).
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -18,6 +21,7 @@ namespace {
 
 struct MethodsOptions {
   std::string labels;  // "LO-HI"
+  bool point_sets = false;
   bool options = false;
   std::string markdown;  // "", "flags" or "spellings": the options as docs/cli.md's or
                          // docs/methods.md's table
@@ -31,6 +35,16 @@ int run_methods(const MethodsOptions& o) {
         lo < 1 || hi < lo)
       throw UsageError("--labels " + o.labels + ": expected LO-HI, e.g. 2-4");
     for (const std::string& label : method_labels(lo, hi)) std::printf("%s\n", label.c_str());
+    return 0;
+  }
+  if (o.point_sets) {
+    const std::string names = point_set_methods();  // "lhf, lop, ..."
+    std::size_t start = 0;
+    while (start < names.size()) {
+      const std::size_t end = std::min(names.find(", ", start), names.size());
+      std::printf("%s\n", names.substr(start, end - start).c_str());
+      start = end + 2;
+    }
     return 0;
   }
   if (!o.markdown.empty()) {
@@ -68,6 +82,8 @@ Command add_methods_command(CLI::App& app) {
   sub->add_option("--labels", o->labels,
                   "Print one label a line: every fit at each of its degrees in LO-HI (e.g. 2-4), "
                   "every degree-free operator once");
+  sub->add_flag("--point-sets", o->point_sets,
+                "Print the names of the methods that work on a point set (no faces), one a line");
   sub->add_flag("--options", o->options,
                 "Print the estimator options (name, which methods take them, default, help)");
   sub->add_option("--markdown", o->markdown,

@@ -4,7 +4,9 @@
 // extension (case-insensitive), one reader per format (mesh/read_off.cpp, read_obj.cpp,
 // read_ply.cpp, read_xyz.cpp), each a single validating pass that builds the polygon soup. A file
 // without faces (a point file, OFF with 0 faces, PLY without a face element) gives a Mesh
-// without faces: a point set (docs/point_sets.md). Polygons with more than three vertices are fan-triangulated;
+// without faces: a point set (docs/point_sets.md). The normals a file gives with its vertices
+// (.pwn, a 6-column .xyz/.pts, PLY float/double nx ny nz, NOFF) are kept, as read, as
+// Mesh::given_normals(). Polygons with more than three vertices are fan-triangulated;
 // polygons with fewer than three vertices or a repeated vertex index are dropped and counted.
 // Writing: OFF (full double precision) and PLY (binary little-endian) with optional per-vertex
 // properties (normal, curvatures, directions, ...) for MeshLab / ParaView.
@@ -56,8 +58,8 @@ std::string read_file(const std::string& path);
 /// an index out of range or negative, a NaN/Inf coordinate (unless options.skip_invalid), a mesh
 /// without vertices, or one whose every polygon was dropped. A file without polygons is a point
 /// set (a Mesh with 0 faces); a point file whose lines differ in their number of columns (2-D and
-/// 3-D lines mixed) is refused naming the line. Header counts or polygon sizes the file cannot hold are
-/// refused before anything is allocated by them. Polygons with fewer than 3 vertices or with a
+/// 3-D lines mixed) is refused naming the line. Header counts or polygon sizes the file cannot hold
+/// are refused before anything is allocated by them. Polygons with fewer than 3 vertices or with a
 /// repeated vertex index are dropped and counted in the report.
 Mesh read_mesh(const std::string& path, MeshReadReport* report = nullptr,
                const MeshReadOptions& options = {});

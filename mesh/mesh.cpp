@@ -22,7 +22,7 @@ struct HalfEdge {
 }  // namespace
 
 Mesh::Mesh(VertexMatrix vertices, FaceMatrix faces, const std::string& source)
-    : V_(std::move(vertices)), F_(std::move(faces)) {
+    : V_(std::move(vertices)), F_(std::move(faces)), source_(source) {
   const int n = num_vertices();
   const int m = num_faces();
 
@@ -171,6 +171,13 @@ int Mesh::reorient_faces(const std::vector<unsigned char>& flip) {
         if (F_(g, j) == a && F_(g, (j + 1) % 3) == b) ++num_inconsistent_edges_;
     }
   return changed;
+}
+
+void Mesh::set_given_normals(VertexMatrix normals) {
+  if (normals.rows() != 0 && normals.rows() != V_.rows())
+    throw InputError(source_ + ": " + std::to_string(normals.rows()) + " normals for " +
+                     std::to_string(V_.rows()) + " points");
+  given_normals_ = std::move(normals);
 }
 
 double Mesh::signed_volume() const {

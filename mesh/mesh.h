@@ -25,6 +25,18 @@ class Mesh {
   /// or if a coordinate is NaN or Inf. `source` names the origin (a file) in error messages.
   Mesh(VertexMatrix vertices, FaceMatrix faces, const std::string& source = "mesh");
 
+  /// What the constructor's `source` named (a file's path, "mesh"): for error messages.
+  const std::string& source() const { return source_; }
+
+  /// Normals given with the points (a file's nx ny nz: .pwn, a 6-column .xyz, PLY, NOFF), as
+  /// given: n x 3, not normalised, any row may be zero or non-finite; empty when none were given
+  /// (docs/point_sets.md, option point-normals=file).
+  const VertexMatrix& given_normals() const { return given_normals_; }
+  bool has_given_normals() const { return given_normals_.rows() > 0; }
+  /// Sets given_normals(); throws InputError naming source() unless `normals` has one row per
+  /// vertex (or none: clears them).
+  void set_given_normals(VertexMatrix normals);
+
   int num_vertices() const { return static_cast<int>(V_.rows()); }
   int num_faces() const { return static_cast<int>(F_.rows()); }
   int num_edges() const { return num_edges_; }
@@ -88,6 +100,8 @@ class Mesh {
 
   VertexMatrix V_;
   FaceMatrix F_;
+  std::string source_;
+  VertexMatrix given_normals_;
   std::vector<int> vf_offsets_{0};  // n+1
   std::vector<int> vf_faces_;       // sum of valences
   std::vector<int> ff_;             // 3m: neighbour face, kBoundary or kNonManifold

@@ -4,11 +4,12 @@
 // Accepted: the keyword [C][N][4]OFF (colors, normals, homogeneous coordinates; counts on the
 // keyword line or the next line), '#' comments anywhere, blank lines, CRLF. Vertex colors
 // (1, 3 or 4 components after the coordinates and normals) and face colors (1, 3 or 4 values after
-// the indices, in any variant, as Geomview writes them) are checked and ignored; normals are
-// checked and ignored; homogeneous points are divided by w (w = 0 refused). Refused, with the line
-// number: ST/nOFF/SKEL/binary OFF, counts the file cannot hold, a truncated body, data after the
-// declared elements, a non-numeric token, a non-integer face size or index, a negative or
-// out-of-range index, a non-finite coordinate (recorded instead with skip_invalid).
+// the indices, in any variant, as Geomview writes them) are checked and ignored; NOFF's normals
+// are checked and kept (the soup's normals: their first three numbers); homogeneous points are
+// divided by w (w = 0 refused). Refused, with the line number: ST/nOFF/SKEL/binary OFF, counts the
+// file cannot hold, a truncated body, data after the declared elements, a non-numeric token, a
+// non-integer face size or index, a negative or out-of-range index, a non-finite coordinate
+// (recorded instead with skip_invalid).
 //
 // The soup equals what CGAL 5.5's read_OFF gives on the same accepted file (tests/mesh/
 // test_io_oracle.cpp), but CGAL also accepts much malformed input silently: it stops a vertex line
@@ -124,7 +125,7 @@ Soup read_off(const std::string& path, std::string_view text, bool skip_invalid)
                      std::to_string(num_vertices) + " vertices");
     const std::size_t line = lines.number();
     const auto what = [v] { return "vertex " + std::to_string(v); };
-    double x[4] = {0, 0, 0, 1};
+    double x[4] = {0, 0, 0, 1}, normal[3] = {0, 0, 0};
     for (std::size_t i = 0; i < tok.size(); ++i) {
       double value;
       const Number r = parse_double(tok[i], &value);
@@ -136,6 +137,7 @@ Soup read_off(const std::string& path, std::string_view text, bool skip_invalid)
                       quote(tok[i]) + (i < 3 ? kSkipHint : ""));
       }
       if (i < coords) x[i] = value;
+      if (normals > 0 && i >= coords && i < coords + 3) normal[i - coords] = value;
       if (layout.homogeneous && i == 3 && value == 0.0)
         fail_line(path, line, what() + " has homogeneous weight w = 0");
     }
@@ -150,6 +152,7 @@ Soup read_off(const std::string& path, std::string_view text, bool skip_invalid)
                     " components (expected 1, 3 or 4)");
     // Geomview's homogeneous point (x, y, z, w) is (x/w, y/w, z/w).
     for (int c = 0; c < 3; ++c) soup.xyz.push_back(x[c] / x[3]);
+    if (normals > 0) soup.normals.append(normal, 3);
   }
 
   for (unsigned long long f = 0; f < num_faces; ++f) {

@@ -3,7 +3,8 @@
 // native byte order, nothing else) are copied in bulk.
 //
 // Read: the 'vertex' element's float or double x, y, z and the 'face' element's int or uint list
-// 'vertex_indices' (or 'vertex_index'; a file without a face element is a point set); every
+// 'vertex_indices' (or 'vertex_index'; a file without a face element is a point set), and the
+// vertex element's nx, ny, nz when all three are float or double (the soup's normals); every
 // other element and property is checked against the
 // header and skipped. Refused: a header CGAL's reader would misread (unknown types, integer x/y/z,
 // missing properties, halfedge source/target of another type than uint), counts
@@ -268,10 +269,13 @@ struct PlyLayout {
   const PlyElement* vertex = nullptr;
   const PlyElement* face = nullptr;
   const PlyProperty* xyz[3] = {nullptr, nullptr, nullptr};
+  /// The vertex element's float or double nx, ny, nz (all three, else none): normals kept.
+  const PlyProperty* normal[3] = {nullptr, nullptr, nullptr};
+  bool has_normals() const { return normal[0] != nullptr; }
   const PlyProperty* indices = nullptr;  ///< the face element's index list
   /// Faces declared (0 without a face element: a point set).
   unsigned long long face_count() const { return face != nullptr ? face->count : 0; }
-  std::string declared;                  ///< "N 'vertex', M 'face'" for messages
+  std::string declared;  ///< "N 'vertex', M 'face'" for messages
 };
 
 /// Checks the header for what CGAL's reader needs and refuses counts a data section of a
@@ -292,6 +296,14 @@ PlyLayout check_ply_layout(const std::string& path, const PlyHeader& h,
       fail(path, std::string("PLY vertex property '") + name +
                      "' must be float or double (CGAL's reader cannot read other types)");
   }
+  // The normals, when nx, ny and nz are all float or double values.
+  bool normals = true;
+  for (int c = 0; c < 3; ++c) {
+    const PlyProperty* p = vertex->find(c == 0 ? "nx" : (c == 1 ? "ny" : "nz"));
+    normals = normals && p != nullptr && p->size == nullptr && !p->type->integer;
+    l.normal[c] = p;
+  }
+  if (!normals) l.normal[0] = l.normal[1] = l.normal[2] = nullptr;
   // ... a face element with an int or uint list named vertex_indices or vertex_index ...
   const PlyElement*& face = l.face;
   face = find_element(h, "face", "faces");
@@ -346,6 +358,7 @@ Soup make_soup(const PlyHeader& h, const PlyLayout& l, unsigned long long file_s
   Soup soup;
   soup.skip_invalid = skip_invalid;
   soup.xyz.reserve(3 * l.vertex->count);
+  if (l.has_normals()) soup.normals.reserve(3 * l.vertex->count);
   soup.indices.reserve(std::min<unsigned long long>(3 * l.face_count(), body / (ascii ? 2 : 4)));
   return soup;
 }
@@ -364,7 +377,7 @@ void read_ascii_body(const std::string& path, std::string_view text, const PlyHe
     const bool is_vertex = &e == vertex, is_face = &e == face;
     for (unsigned long long j = 0; j < e.count; ++j) {
       const auto what = [&] { return e.name + " " + std::to_string(j); };
-      double point[3] = {0, 0, 0};
+      double point[3] = {0, 0, 0}, normal[3] = {0, 0, 0};
       // Reads one value of type `type` into *integer (integer types) or *real.
       auto value = [&](const PlyProperty& p, const PlyTypeInfo& type, const char* role,
                        long long* integer, double* real) {
@@ -408,8 +421,10 @@ void read_ascii_body(const std::string& path, std::string_view text, const PlyHe
         if (p.size == nullptr) {
           value(p, *p.type, "value", &integer, &real);
           if (is_vertex)
-            for (int c = 0; c < 3; ++c)
+            for (int c = 0; c < 3; ++c) {
               if (&p == xyz[c]) point[c] = real;
+              if (&p == l.normal[c]) normal[c] = real;
+            }
           continue;
         }
         long long len;
@@ -424,6 +439,7 @@ void read_ascii_body(const std::string& path, std::string_view text, const PlyHe
         }
       }
       if (is_vertex) soup.xyz.append(point, 3);
+      if (is_vertex && l.has_normals()) soup.normals.append(normal, 3);
       if (is_face) soup.end_polygon();
     }
   }
@@ -535,13 +551,19 @@ void read_binary_body(const std::string& path, const PlyHeader& h, const PlyLayo
         in.skip(item * e.count);  // (the face element has its index list: never here)
         continue;
       }
-      std::size_t offset[3];
-      for (int c = 0; c < 3; ++c) {
-        offset[c] = 0;
+      // Byte offsets in the record of x, y, z and of nx, ny, nz.
+      const auto offset_of = [&](const PlyProperty* property) {
+        std::size_t offset = 0;
         for (const PlyProperty& p : e.properties) {
-          if (&p == l.xyz[c]) break;
-          offset[c] += p.type->size;
+          if (&p == property) break;
+          offset += p.type->size;
         }
+        return offset;
+      };
+      std::size_t offset[3], normal_offset[3];
+      for (int c = 0; c < 3; ++c) {
+        offset[c] = offset_of(l.xyz[c]);
+        normal_offset[c] = l.has_normals() ? offset_of(l.normal[c]) : 0;
       }
       const bool doubles = !swap && l.xyz[0]->type->type == PlyType::kDouble &&
                            l.xyz[1]->type->type == PlyType::kDouble &&
@@ -568,6 +590,13 @@ void read_binary_body(const std::string& path, const PlyHeader& h, const PlyLayo
               stage[3 * i + c] = read_binary_real(at + i * item + offset[c], *l.xyz[c]->type, big);
         }
         soup.xyz.append(stage, 3 * items);
+        if (l.has_normals()) {
+          for (std::size_t i = 0; i < items; ++i)
+            for (int c = 0; c < 3; ++c)
+              stage[3 * i + c] =
+                  read_binary_real(at + i * item + normal_offset[c], *l.normal[c]->type, big);
+          soup.normals.append(stage, 3 * items);
+        }
         in.skip(items * item);
         j += items;
       }
@@ -618,13 +647,16 @@ void read_binary_body(const std::string& path, const PlyHeader& h, const PlyLayo
           fail(path, "truncated PLY data: the file ends in " + e.name + " " + std::to_string(j) +
                          " of " + std::to_string(e.count));
       };
-      double point[3] = {0, 0, 0};
+      double point[3] = {0, 0, 0}, normal[3] = {0, 0, 0};
       for (const PlyProperty& p : e.properties) {
         if (p.size == nullptr) {
           need_bytes(p.type->size);
           if (is_vertex)
-            for (int c = 0; c < 3; ++c)
+            for (int c = 0; c < 3; ++c) {
               if (&p == l.xyz[c]) point[c] = read_binary_real(in.need(p.type->size), *p.type, big);
+              if (&p == l.normal[c])
+                normal[c] = read_binary_real(in.need(p.type->size), *p.type, big);
+            }
           in.skip(p.type->size);
           continue;
         }
@@ -654,6 +686,7 @@ void read_binary_body(const std::string& path, const PlyHeader& h, const PlyLayo
         in.skip(static_cast<unsigned long long>(len) * p.type->size);
       }
       if (is_vertex) soup.xyz.append(point, 3);
+      if (is_vertex && l.has_normals()) soup.normals.append(normal, 3);
       if (is_face) soup.end_polygon();
     }
   }

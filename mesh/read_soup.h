@@ -84,7 +84,9 @@ class FlatRows {
 
 /// Vertices (x, y, z as read) and polygons (vertex indices, each checked < num_vertices()).
 struct Soup {
-  FlatRows<double> xyz;            ///< 3 per vertex
+  FlatRows<double> xyz;  ///< 3 per vertex
+  /// The normals the file gives (nx ny nz, 3 per vertex, as read), or empty: it gives none.
+  FlatRows<double> normals;
   FlatRows<std::int32_t> indices;  ///< all polygons' indices, in file order
   /// Polygon f is indices[starts[f], starts[f + 1]); empty while every polygon is a triangle
   /// (polygon f is then indices[3 f, 3 f + 3)), which saves a word per face on the usual file.
@@ -133,7 +135,7 @@ struct Soup {
 Soup read_off(const std::string& path, std::string_view text, bool skip_invalid);
 Soup read_obj(const std::string& path, std::string_view text, bool skip_invalid);
 Soup read_ply(const std::string& path, std::string_view text, bool skip_invalid);
-/// .xyz, .pts, .pwn point sets (read_xyz.cpp): vertices only.
+/// .xyz, .pts, .pwn point sets (read_xyz.cpp): points, and their normals where given.
 Soup read_xyz(const std::string& path, std::string_view text, bool skip_invalid);
 
 /// Builds the Mesh from a reader's soup (soup_to_mesh.cpp): drops polygons with fewer than 3

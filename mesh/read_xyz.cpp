@@ -1,5 +1,5 @@
 // Point-set text files: .xyz, .pts and .pwn (CGAL's points_3 data), one point per line:
-// "x y z" or "x y z nx ny nz" (the normals are read past and not kept). Blank lines and '#'
+// "x y z" or "x y z nx ny nz" (the normals kept as the soup's normals). Blank lines and '#'
 // comments are skipped; a .pts file may start with a line holding the point count alone. Every
 // point line must have the column count of the first: a line with another count (a 2-D line in a
 // 3-D file) is refused with its line number. The soup has no polygons: the Mesh is a point set.
@@ -37,7 +37,7 @@ Soup read_xyz(const std::string& path, std::string_view text, bool skip_invalid)
                     std::to_string(columns) + " (mixed 2-D/3-D or normal columns?)");
     }
     if (v >= kMaxCount) fail(path, "too many points");
-    double x[3] = {0, 0, 0};
+    double x[6] = {0, 0, 0, 0, 0, 0};
     for (std::size_t i = 0; i < tok.size(); ++i) {
       double value;
       const Number r = parse_double(tok[i], &value);
@@ -51,9 +51,10 @@ Soup read_xyz(const std::string& path, std::string_view text, bool skip_invalid)
                       (i < 3 ? " has a non-finite coordinate " : " has a non-finite normal ") +
                       quote(tok[i]) + (i < 3 ? kSkipHint : ""));
       }
-      if (i < 3) x[i] = value;
+      x[i] = value;
     }
-    for (int c = 0; c < 3; ++c) soup.xyz.push_back(x[c]);
+    soup.xyz.append(x, 3);
+    if (columns == 6) soup.normals.append(x + 3, 3);
     ++v;
   }
   if (v == 0) fail(path, "empty point set: no points");

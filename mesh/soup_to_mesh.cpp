@@ -27,7 +27,8 @@ bool has_repeated_index(const std::int32_t* p, std::size_t k, std::vector<std::i
 
 /// Builds the Mesh from a reader's soup: drops polygons with fewer than 3 vertices or a repeated
 /// index; refuses non-finite coordinates or, with skip_invalid, drops those vertices and the
-/// polygons using them and renumbers; fan-triangulates (v0, vi, vi+1) the rest.
+/// polygons using them and renumbers; fan-triangulates (v0, vi, vi+1) the rest; hands the
+/// file's normals (of the kept vertices) to the Mesh (Mesh::given_normals()).
 /// Takes the soup by value and frees it before the Mesh builds its adjacency (peak memory). The
 /// usual file (triangles, every vertex finite) becomes the Mesh without a copy.
 Mesh soup_to_mesh(const std::string& path, const std::string& format, Soup soup,
@@ -134,6 +135,20 @@ Mesh soup_to_mesh(const std::string& path, const std::string& format, Soup soup,
     }
   }
   soup.xyz.release();
+  // The file's normals, of the kept vertices.
+  VertexMatrix N;
+  if (!soup.normals.empty()) {
+    if (skipped.empty()) {
+      N = soup.normals.take();
+    } else {
+      N.resize(kept_vertices, 3);
+      for (std::size_t v = 0; v < n; ++v)
+        if (!skip[v])
+          for (int c = 0; c < 3; ++c)
+            N(new_index(static_cast<std::int32_t>(v)), c) = soup.normals[3 * v + c];
+    }
+    soup.normals.release();
+  }
   // Fan triangulation (v0, vi, vi+1) of each kept polygon.
   FaceMatrix F;
   if (soup.all_triangles() && static_cast<std::size_t>(kept) == num_polygons && index.empty()) {
@@ -157,6 +172,7 @@ Mesh soup_to_mesh(const std::string& path, const std::string& format, Soup soup,
   std::vector<std::size_t>().swap(soup.starts);
 
   Mesh mesh(std::move(V), std::move(F), path);
+  mesh.set_given_normals(std::move(N));
   if (report != nullptr) {
     *report = MeshReadReport{};
     report->format = format;

@@ -190,6 +190,21 @@ void check_point_method(const Estimator& estimator, const Mesh& mesh) {
                    point_set_methods() + " only");
 }
 
+// The starting normals of a point set by the option point-normals (points/point_normals.h).
+PointNormals point_set_normals(const Mesh& mesh, const PointRows& nearest,
+                               const Estimator& estimator, int threads) {
+  const PointNormalSource source = estimator.options().point_normals;
+  if (source == PointNormalSource::jet)
+    return oriented_jet_normals(mesh.vertices(), nearest, threads);
+  if (source == PointNormalSource::pca)
+    return oriented_pca_normals(mesh.vertices(), nearest, threads);
+  if (!mesh.has_given_normals())
+    throw InputError(mesh.source() +
+                     ": point-normals=file, but the points come without normals (a .pwn file, an "
+                     ".xyz file of 6 numbers per line, PLY with nx ny nz, or NOFF has them)");
+  return given_point_normals(mesh.vertices(), nearest, mesh.given_normals(), threads);
+}
+
 }  // namespace
 
 MeshEstimation::MeshEstimation(const Mesh& mesh, const Estimator& estimator,
@@ -205,6 +220,11 @@ MeshEstimation::MeshEstimation(const Mesh& mesh, const Estimator& estimator,
   int threads = thread_count(estimator);
   const NeighbourhoodUse use = estimator.neighbourhood_use();
   const NeighbourhoodSpec spec = estimator.neighbourhood_spec(mesh);
+  if (mesh.num_faces() > 0 && estimator.options().point_normals != PointNormalSource::pca)
+    throw UsageError(
+        "point-normals=" + option_text(estimator.options(), option_info("point-normals")) +
+        " applies to point sets: " + mesh.source() +
+        " has faces, whose area-weighted vertex normals start the fits");
   if (spec.is_points() || mesh.num_faces() == 0) {
     check_point_method(estimator, mesh);
     // One tree serves the normals and the table; of k-NN rows, one search of the larger k
@@ -221,7 +241,7 @@ MeshEstimation::MeshEstimation(const Mesh& mesh, const Estimator& estimator,
       nearest_k =
           neighbourhoods == nullptr ? std::max(kNormalNeighbours, table_k) : kNormalNeighbours;
       nearest = knn_rows(search, nearest_k, threads);
-      PointNormals pn = oriented_pca_normals(mesh.vertices(), nearest, threads);
+      PointNormals pn = point_set_normals(mesh, nearest, estimator, threads);
       normals_ = std::move(pn.normals);
       sign_undetermined_ = std::move(pn.undetermined);
     }

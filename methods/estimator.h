@@ -75,8 +75,9 @@ class MeshData {
 /// Mesh data shared read-only by all threads during one estimation run.
 struct MeshContext {
   const Mesh& mesh;
-  /// Area-weighted vertex normals (docs/algorithms.md §2); on a point set (no faces), the PCA
-  /// normals oriented over the k-NN graph (points/point_normals.h).
+  /// Area-weighted vertex normals (docs/algorithms.md §2); on a point set (no faces), the normals
+  /// of option point-normals: PCA or jet oriented over the k-NN graph, or the file's
+  /// (points/point_normals.h).
   const VertexMatrix& approx_normals;
   const MeshData* data = nullptr;  ///< what Estimator::prepare() returned (may be null)
   /// The estimator's starting neighbourhoods, gathered once (Estimator::neighbourhood_spec(),
@@ -289,9 +290,11 @@ bool scores_interior_only(const std::string& method);
 /// the per-mesh work once (area-weighted normals, Estimator::prepare(), one workspace per
 /// thread); run() estimates a range of vertices in parallel (OpenMP). Results are bit-identical
 /// for any number of threads and any split into ranges. The mesh and estimator must outlive it.
-/// On a point set (a mesh without faces) the normals are the oriented PCA normals and the
+/// On a point set (a mesh without faces) the normals are those of option point-normals (oriented
+/// PCA or jet normals, or the file's; throws InputError for `file` without given normals) and the
 /// neighbourhoods k-NN or balls (docs/point_sets.md); a vertex whose normal's sign is undecided
-/// gets status sign_undetermined. A method that needs faces (neighbourhood_use() other than
+/// gets status sign_undetermined. On a mesh with faces, point-normals other than pca throws
+/// UsageError. A method that needs faces (neighbourhood_use() other than
 /// neighbours) throws UsageError on a point set, and so does one given the `neighbourhood` option.
 /// With a NeighbourhoodCache of the same mesh, a method that reads starting neighbourhoods
 /// (Estimator::neighbourhood_use()) takes them from the cache's table of its spec (built now if

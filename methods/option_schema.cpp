@@ -130,6 +130,10 @@ struct EnumNames<VertexNormals> {
   static constexpr std::span<const char* const> names{kVertexNormalsNames};
 };
 template <>
+struct EnumNames<PointNormalSource> {
+  static constexpr std::span<const char* const> names{kPointNormalSourceNames};
+};
+template <>
 struct EnumNames<Kernel> {
   static constexpr std::span<const char* const> names{kKernelNames};
 };

@@ -1,9 +1,15 @@
-// PCA normals and their orientation over the neighbour graph; see point_normals.h.
+// PCA and jet normals, their orientation over the neighbour graph, and given normals; see
+// point_normals.h.
 #include "points/point_normals.h"
+
+#include <CGAL/Eigen_svd.h>
+#include <CGAL/Monge_via_jet_fitting.h>
+#include <CGAL/Simple_cartesian.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -201,6 +207,66 @@ std::vector<unsigned char> orient_normals(const VertexMatrix& points, const Poin
   return degenerate;
 }
 
+VertexMatrix jet_normals(const VertexMatrix& points, const PointRows& rows, int threads,
+                         std::vector<unsigned char>& degenerate) {
+  using Kernel = CGAL::Simple_cartesian<double>;
+  using Fitting = CGAL::Monge_via_jet_fitting<Kernel, Kernel, CGAL::Eigen_svd>;
+  constexpr int kDegree = 2;  // CGAL::jet_estimate_normals' default degree_fitting
+  constexpr int kMinPoints = (kDegree + 1) * (kDegree + 2) / 2;
+  VertexMatrix normals = pca_normals(points, rows, threads, degenerate);
+  const int n = static_cast<int>(points.rows());
+  if (threads <= 0) threads = 1;
+#pragma omp parallel for num_threads(threads) schedule(static)
+  for (int i = 0; i < n; ++i) {
+    const auto b = rows.offsets[static_cast<size_t>(i)];
+    const auto e = rows.offsets[static_cast<size_t>(i) + 1];
+    if (degenerate[static_cast<size_t>(i)]) continue;
+    if (e - b + 1 < kMinPoints) {
+      degenerate[static_cast<size_t>(i)] = 1;
+      continue;
+    }
+    std::vector<Kernel::Point_3> fit_points;
+    fit_points.reserve(static_cast<size_t>(e - b + 1));
+    const auto point = [&](int v) {
+      return Kernel::Point_3(points(v, 0), points(v, 1), points(v, 2));
+    };
+    fit_points.push_back(point(i));
+    for (auto j = b; j < e; ++j)
+      fit_points.push_back(point(rows.neighbours[static_cast<size_t>(j)]));
+    Vec3 normal = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+    try {
+      Fitting fitting;
+      const Fitting::Monge_form form =
+          fitting(fit_points.begin(), fit_points.end(), kDegree, /*monge degree*/ 1);
+      const Kernel::Vector_3 m = form.normal_direction();
+      normal = Vec3(m.x(), m.y(), m.z());
+    } catch (...) {  // a CGAL precondition (checked builds): the point keeps its PCA normal
+    }
+    if (normal.allFinite() && normal.norm() > 0.0)
+      normals.row(i) = normal.normalized().transpose();
+    else
+      degenerate[static_cast<size_t>(i)] = 1;
+  }
+  return normals;
+}
+
+namespace {
+
+// Steps 1-3 on the first kNormalNeighbours of each row of `nearest`.
+PointNormals oriented_normals(const VertexMatrix& points, const PointRows& nearest, bool jet,
+                              int threads) {
+  const PointRows rows = first_of_rows(nearest, kNormalNeighbours);
+  PointNormals out;
+  std::vector<unsigned char> degenerate;
+  out.normals = jet ? jet_normals(points, rows, threads, degenerate)
+                    : pca_normals(points, rows, threads, degenerate);
+  out.undetermined =
+      orient_normals(points, rows, out.normals, std::move(degenerate), &out.components);
+  return out;
+}
+
+}  // namespace
+
 PointNormals oriented_pca_normals(const PointSearch& search, int threads) {
   return oriented_pca_normals(search.points(), knn_rows(search, kNormalNeighbours, threads),
                               threads);
@@ -208,12 +274,43 @@ PointNormals oriented_pca_normals(const PointSearch& search, int threads) {
 
 PointNormals oriented_pca_normals(const VertexMatrix& points, const PointRows& nearest,
                                   int threads) {
-  const PointRows rows = first_of_rows(nearest, kNormalNeighbours);
+  return oriented_normals(points, nearest, false, threads);
+}
+
+PointNormals oriented_jet_normals(const PointSearch& search, int threads) {
+  return oriented_jet_normals(search.points(), knn_rows(search, kNormalNeighbours, threads),
+                              threads);
+}
+
+PointNormals oriented_jet_normals(const VertexMatrix& points, const PointRows& nearest,
+                                  int threads) {
+  return oriented_normals(points, nearest, true, threads);
+}
+
+PointNormals given_point_normals(const VertexMatrix& points, const PointRows& nearest,
+                                 const VertexMatrix& given, int threads) {
+  const int n = static_cast<int>(points.rows());
   PointNormals out;
-  std::vector<unsigned char> degenerate;
-  out.normals = pca_normals(points, rows, threads, degenerate);
-  out.undetermined =
-      orient_normals(points, rows, out.normals, std::move(degenerate), &out.components);
+  out.normals.resize(n, 3);
+  out.undetermined.assign(static_cast<size_t>(n), 0);
+  bool any_bad = false;
+  for (int i = 0; i < n; ++i) {
+    const Vec3 g = given.row(i).transpose();
+    const double length = g.norm();
+    if (std::isfinite(length) && length > 0.0) {
+      out.normals.row(i) = (g / length).transpose();
+    } else {
+      out.undetermined[static_cast<size_t>(i)] = 1;
+      any_bad = true;
+    }
+  }
+  if (any_bad) {  // a stand-in frame for the fits: the unoriented PCA normal
+    std::vector<unsigned char> degenerate;
+    const VertexMatrix pca =
+        pca_normals(points, first_of_rows(nearest, kNormalNeighbours), threads, degenerate);
+    for (int i = 0; i < n; ++i)
+      if (out.undetermined[static_cast<size_t>(i)]) out.normals.row(i) = pca.row(i);
+  }
   return out;
 }
 

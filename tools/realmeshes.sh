@@ -7,13 +7,16 @@
 # missing) into $WORK (default build/realmeshes/, ignored); nothing is committed.
 # CORPUS=all (`make realmeshes CORPUS=all`): instead, every method at its default (the names of
 # `curvbench methods`; fits at their default degree) with 2 threads on every file of data.tar.gz
-# that curvbench reads (.off .obj .ply), each run under `timeout $CORPUS_TIMEOUT` (default 300 s),
+# that curvbench reads (.off .obj .ply .xyz .pts .pwn), each run under `timeout $CORPUS_TIMEOUT`
+# (default 300 s); a point set (a .xyz/.pts/.pwn file, or one `curvbench info` reports 0 faces
+# of) with the point-set methods instead (`curvbench methods --point-sets`, each at its defaults),
 # and tools/realmeshes_corpus.py writes the summary (files, refusals, crashes, time-outs, failed
-# vertices by method and cause) as the section between `<!-- corpus: begin -->` and
-# `<!-- corpus: end -->` of $CORPUS_REPORT (default results/REAL_MESHES.md; the rest of the file is
-# left alone, and the default run keeps that section). Other variables: CORPUS_METHODS (default:
-# the first column of `curvbench methods`; set it for a binary without that subcommand),
-# CORPUS_RUNS (logs and exit codes; default $WORK/corpus).
+# vertices by method and cause, the point sets' table) as the section between
+# `<!-- corpus: begin -->` and `<!-- corpus: end -->` of $CORPUS_REPORT (default
+# results/REAL_MESHES.md; the rest of the file is left alone, and the default run keeps that
+# section). Other variables: CORPUS_METHODS (default: the first column of `curvbench methods`;
+# set it for a binary without that subcommand), CORPUS_POINT_METHODS (default: `curvbench methods
+# --point-sets`), CORPUS_RUNS (logs and exit codes; default $WORK/corpus).
 # Usage: [CORPUS=all] tools/realmeshes.sh BUILD_DIR
 set -euo pipefail
 BUILD=${1:-build}
@@ -55,6 +58,8 @@ if [ "$CORPUS" = all ]; then
   # The method names: the lines of `curvbench methods` whose second column is a degree range or -.
   CMETHODS=${CORPUS_METHODS:-$("$CB" methods | awk '$2 ~ /^([0-9]+\.\.[0-9]+|-)$/ { print $1 }' | tr '\n' ' ')}
   [ -n "${CMETHODS// /}" ] || { echo "realmeshes: no methods (set CORPUS_METHODS)" >&2; exit 2; }
+  PMETHODS=${CORPUS_POINT_METHODS:-$("$CB" methods --point-sets | tr '\n' ' ')}
+  [ -n "${PMETHODS// /}" ] || { echo "realmeshes: no point-set methods (set CORPUS_POINT_METHODS)" >&2; exit 2; }
   CBABS="$(cd "$(dirname "$CB")" && pwd)/$(basename "$CB")"
   DATAALL="$(cd "$WORK/data" && pwd)"
   mkdir -p "$RUNS"
@@ -62,16 +67,18 @@ if [ "$CORPUS" = all ]; then
   rm -rf -- "$RUNS/runs"
   # run OUT CMD...: CMD in data/ (so messages name files as data/-relative paths) under the time
   # limit; stdout to OUT.txt, stderr to OUT.log, "exit-code seconds" to OUT.rc (124: timed out;
-  # 128+n: signal n).
+  # 128+n: signal n; seconds to the millisecond).
   run() {
-    local out=$1 t0=$SECONDS rc=0
+    local out=$1 t0 rc=0
     shift
+    t0=$(date +%s%N)
     ( cd "$DATAALL" && exec timeout -k 10 "$TIMEOUT" "$@" ) > "$out.txt" 2> "$out.log" || rc=$?
-    echo "$rc $(( SECONDS - t0 ))" > "$out.rc"
+    local ms=$(( ($(date +%s%N) - t0) / 1000000 ))
+    printf '%d %d.%03d\n' "$rc" $(( ms / 1000 )) $(( ms % 1000 )) > "$out.rc"
     [ -s "$out.txt" ] || rm -f "$out.txt"
   }
-  mapfile -t FILES < <(cd "$DATAALL" && find . -type f \( -iname '*.off' -o -iname '*.obj' -o -iname '*.ply' \) |
-    sed 's|^\./||' | LC_ALL=C sort)
+  mapfile -t FILES < <(cd "$DATAALL" && find . -type f \( -iname '*.off' -o -iname '*.obj' -o -iname '*.ply' \
+    -o -iname '*.xyz' -o -iname '*.pts' -o -iname '*.pwn' \) | sed 's|^\./||' | LC_ALL=C sort)
   start=$(date +%s)
   i=0
   for f in "${FILES[@]}"; do
@@ -80,7 +87,13 @@ if [ "$CORPUS" = all ]; then
     d="$RUNS/runs/$f"
     mkdir -p "$d"
     run "$d/info" "$CBABS" info "$f"
-    for method in $CMETHODS; do
+    # A point set (the rule of realmeshes_corpus.py's is_point_set): a point file, or 0 faces.
+    methods=$CMETHODS
+    case "${f,,}" in
+      *.xyz | *.pts | *.pwn) methods=$PMETHODS ;;
+      *) ! grep -Eq '^faces: +0$' "$d/info.txt" 2>/dev/null || methods=$PMETHODS ;;
+    esac
+    for method in $methods; do
       run "$d/$method" "$CBABS" estimate "$f" --method "$method" --threads 2 --output "$RUNS/out.csv"
       rm -f "$RUNS/out.csv"
     done
@@ -88,7 +101,7 @@ if [ "$CORPUS" = all ]; then
   echo "realmeshes: corpus of ${#FILES[@]} files run in $(( $(date +%s) - start )) s" >&2
   # shellcheck disable=SC2086
   /usr/bin/python3 "$ROOT/tools/realmeshes_corpus.py" "$DATAALL" "$RUNS/runs" "$REPORT" \
-    --methods $CMETHODS --timeout "$TIMEOUT" --binary "$("$CB" --version 2>/dev/null || echo "$CB")"
+    --methods $CMETHODS --point-methods $PMETHODS --timeout "$TIMEOUT" --binary "$("$CB" --version 2>/dev/null || echo "$CB")"
   echo "realmeshes: wrote the corpus section of $REPORT" >&2
   exit 0
 fi

@@ -2,18 +2,21 @@
 """The corpus section of results/REAL_MESHES.md from the runs of `CORPUS=all tools/realmeshes.sh`
 (standard library only).
 
-RUNS holds, for every file DATA/F that curvbench reads (.off .obj .ply), a folder RUNS/F with
-`info.txt` / `info.log` / `info.rc` (`curvbench info F`) and METHOD.log / METHOD.rc
-(`curvbench estimate F --method METHOD`): stderr, and "exit-code seconds". The summary counts the
-files, lists the refusals (exit code 2) with their message, the crashes (another exit code, or a
-signal) and the time-outs, and sums the failed vertices per method on clean meshes and on the
-rest, and by cause. Clean: `curvbench info` reports no boundary edge, non-manifold edge or vertex,
-zero-area face, duplicate vertex or face, or isolated vertex, and at least 50 vertices.
+RUNS holds, for every file DATA/F that curvbench reads (.off .obj .ply .xyz .pts .pwn), a folder
+RUNS/F with `info.txt` / `info.log` / `info.rc` (`curvbench info F`) and METHOD.log / METHOD.rc
+(`curvbench estimate F --method METHOD`): stderr, and "exit-code seconds". A point set (a .xyz,
+.pts or .pwn file, or a file `info` reports 0 faces of: is_point_set) is run with the point-set
+methods (--point-methods), every other file with --methods. The summary counts the files, lists
+the refusals (exit code 2) with their message, the crashes (another exit code, or a signal) and
+the time-outs, sums the failed vertices per method on clean meshes and on the rest, and by cause,
+and gives a table of the point sets (file, points, method, vertices by status, seconds). Clean:
+`curvbench info` reports no boundary edge, non-manifold edge or vertex, zero-area face, duplicate
+vertex or face, or isolated vertex, and at least 50 vertices.
 
 The section is written between the lines `<!-- corpus: begin -->` and `<!-- corpus: end -->` of
 REPORT: replaced if present, else appended; the rest of REPORT is left as it is. It has no wall
 times (the run time goes to stderr only), and its order is fixed: files by name, methods in the
-order given. The logs of an older curvbench (no `partial` status, no "by cause" lines) are read
+order given; the point-set table's seconds are the only wall times. The logs of an older curvbench (no `partial` status, no "by cause" lines) are read
 too: failed vertices without a reported cause are counted as "cause not reported".
 """
 import argparse
@@ -25,7 +28,8 @@ import sys
 
 BEGIN = "<!-- corpus: begin -->"
 END = "<!-- corpus: end -->"
-READ_EXT = (".off", ".obj", ".ply")  # the formats curvbench reads
+POINT_EXT = (".xyz", ".pts", ".pwn")  # point files: always point sets
+READ_EXT = (".off", ".obj", ".ply") + POINT_EXT  # the formats curvbench reads
 # `curvbench info` lines whose count must be 0 for a clean mesh
 CLEAN_ZERO = ("boundary edges", "non-manifold edges", "non-manifold vertices", "zero-area faces",
               "duplicate vertices", "duplicate faces", "isolated vertices")
@@ -49,7 +53,7 @@ def read_rc(path):
         parts = open(path).read().split()
     except OSError:
         return None
-    return int(parts[0]), (int(parts[1]) if len(parts) > 1 else 0)
+    return int(parts[0]), (float(parts[1]) if len(parts) > 1 else 0.0)
 
 
 def read_text(path):
@@ -70,6 +74,12 @@ def parse_info(text):
             if m:
                 out[key.strip()] = int(m.group(1))
     return out
+
+
+def is_point_set(relpath, info):
+    """A point file (.xyz .pts .pwn), or a file `curvbench info` reads with 0 faces (OFF with 0
+    faces, PLY without a face element): tools/realmeshes.sh runs the point-set methods on it."""
+    return os.path.splitext(relpath)[1].lower() in POINT_EXT or info.get("faces") == 0
 
 
 def is_clean(info):
@@ -129,6 +139,10 @@ def cause_key(c):
             c)
 
 
+def plural(n, one, many):
+    return "%d %s" % (n, one if n == 1 else many)
+
+
 def join_names(names, total, everything):
     return everything if len(names) == total else ", ".join(names)
 
@@ -141,7 +155,9 @@ def main():
     ap.add_argument("runs", help="the per-file run folders (tools/realmeshes.sh: $CORPUS_RUNS/runs)")
     ap.add_argument("report", help="the markdown file to write the section into (created if missing)")
     ap.add_argument("--methods", nargs="+", required=True,
-                    help="the methods run, in the order of `curvbench methods`")
+                    help="the methods run on a mesh, in the order of `curvbench methods`")
+    ap.add_argument("--point-methods", nargs="+", default=[],
+                    help="the methods run on a point set (`curvbench methods --point-sets`)")
     ap.add_argument("--timeout", type=int, default=300, help="the time limit of a run in seconds")
     ap.add_argument("--binary", default="", help="the `curvbench --version` line to print")
     a = ap.parse_args()
@@ -156,12 +172,14 @@ def main():
     files = [f for f in everything if os.path.splitext(f)[1].lower() in READ_EXT]
     others = [f for f in everything if os.path.splitext(f)[1].lower() not in READ_EXT]
     methods = a.methods
+    point_methods = a.point_methods
 
     refusals = collections.OrderedDict()  # file -> [(run, message)]
     crashes = []  # (file, run, text)
     timeouts = []  # (file, run)
     not_run = []  # (file, run)
-    clean_files, other_files = [], []
+    clean_files, other_files, point_files = [], [], []
+    point_rows = []  # (file, points, method label, {status: count} or the outcome, seconds)
     labels = {m: collections.Counter() for m in methods}
     failed = {m: {"clean": 0, "other": 0} for m in methods}
     failed_files = {m: {"clean": 0, "other": 0} for m in methods}
@@ -195,6 +213,26 @@ def main():
         info_rc = read_rc(os.path.join(d, "info.rc"))
         info_ok = classify(f, "info", info_rc, read_text(os.path.join(d, "info.log")))
         info = parse_info(read_text(os.path.join(d, "info.txt"))) if info_ok else {}
+        if is_point_set(f, info):
+            point_files.append(f)
+            for m in point_methods:
+                runs_total += 1
+                log = read_text(os.path.join(d, m + ".log"))
+                rc = read_rc(os.path.join(d, m + ".rc"))
+                secs = rc[1] if rc else 0.0
+                if not classify(f, m, rc, log):
+                    outcome = ("not run" if rc is None else "refused" if rc[0] == 2 else
+                               "timed out" if rc[0] == 124 else "crashed")
+                    point_rows.append((f, info.get("vertices"), m, outcome, secs))
+                    continue
+                est = parse_estimate(log)
+                if est is None:
+                    crashes.append((f, m, "exit 0 without the summary line"))
+                    point_rows.append((f, info.get("vertices"), m, "crashed", secs))
+                    continue
+                runs_ok += 1
+                point_rows.append((f, est["vertices"], est["label"], est["status"], secs))
+            continue
         clean = bool(info) and is_clean(info)
         (clean_files if clean else other_files).append(f)
         kind = "clean" if clean else "other"
@@ -232,16 +270,22 @@ def main():
     out.append(
         "Generated by `make realmeshes CORPUS=all` (tools/realmeshes.sh, "
         "tools/realmeshes_corpus.py): `curvbench info` and every method at its default (the "
-        "names of `curvbench methods`, the fits at their default degree) with `--threads 2` and "
+        "names of `curvbench methods`, the fits at their default degree; on a point set the "
+        "methods of `curvbench methods --point-sets`) with `--threads 2` and "
         "a time limit of %d s per run, on every file of `libcgal-demo`'s data.tar.gz that "
-        "curvbench reads%s. Clean: `info` reports no boundary edge, non-manifold edge or vertex, "
+        "curvbench reads%s. A point set: a .xyz, .pts or .pwn file, or a file `info` reads "
+        "without faces. Clean: `info` reports no boundary edge, non-manifold edge or vertex, "
         "zero-area face, duplicate vertex or face, or isolated vertex, and at least %d vertices."
         % (a.timeout, " (%s)" % a.binary if a.binary else "", CLEAN_MIN_VERTICES))
     out.append("")
-    out.append("- Files: %d in data/ (%s); %d in a format curvbench reads (.off .obj .ply), each "
-               "run with `info` and %d methods (%d estimate runs): %d clean, %d other."
+    out.append("- Files: %d in data/ (%s); %d in a format curvbench reads (.off .obj .ply .xyz "
+               ".pts .pwn), each run with `info` (%d estimate runs in all): %s with %d "
+               "methods, %d clean and %d other; %s with %d methods."
                % (len(everything), ", ".join("%s/ %d" % (k, folders[k]) for k in sorted(folders)),
-                  len(files), nm, runs_total, len(clean_files), len(other_files)))
+                  len(files), runs_total,
+                  plural(len(clean_files) + len(other_files), "mesh", "meshes"), nm,
+                  len(clean_files), len(other_files),
+                  plural(len(point_files), "point set", "point sets"), len(point_methods)))
     by_ext = collections.OrderedDict()
     for f in others:
         by_ext.setdefault(os.path.splitext(f)[1].lower() or "(no extension)", []).append(f)
@@ -268,7 +312,8 @@ def main():
             ms = [r for r in runs if r != "info"]
             who = ["info"] if "info" in runs else []
             if ms:
-                who.append("all %d methods" % nm if len(ms) == nm else ", ".join(ms))
+                total = len(point_methods) if f in point_files else nm
+                who.append("all %d methods" % total if len(ms) == total else ", ".join(ms))
             out.append("- `%s`: %s (%s)" % (f, msg, " and ".join(who)))
     out.append("")
     out.append("### Crashes (another exit code, or a signal)")
@@ -339,6 +384,26 @@ def main():
             out.append("| `%s` | %d | %s | %d | %s |"
                        % (f, nv, label(m), nf,
                           ", ".join("%s %d" % (c, cs[c]) for c in sorted(cs, key=cause_key))))
+    out.append("")
+
+    out.append("### Point sets")
+    out.append("")
+    if not point_files:
+        out.append("None.")
+    else:
+        pcols = [s for s in STATUSES
+                 if any(isinstance(r[3], dict) and r[3].get(s) for r in point_rows)]
+        out.append("Each point set with each point-set method at its defaults: the points "
+                   "estimated by status, or the run's outcome (a refusal's line is listed above); "
+                   "seconds of wall time for the whole run (reading included, 2 threads).")
+        out.append("")
+        out.append("| file | points | method | " + " | ".join(pcols) + " | seconds |")
+        out.append("|---|---:|---|" + "---:|" * len(pcols) + "---:|")
+        for f, n, m, st, secs in point_rows:
+            cells = ([str(st.get(c, 0)) for c in pcols] if isinstance(st, dict)
+                     else [st] + [""] * (len(pcols) - 1) if pcols else [])
+            out.append("| `%s` | %s | %s | %s | %.2f |"
+                       % (f, "" if n is None else n, m, " | ".join(cells), secs))
     out.append(END)
     section = "\n".join(out) + "\n"
 

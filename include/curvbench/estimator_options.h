@@ -69,6 +69,14 @@ struct PointNeighbourhood {
   bool operator==(const PointNeighbourhood&) const = default;
 };
 
+/// Where the starting normals of a point set come from (docs/point_sets.md): pca (PCA of the
+/// point and its 16 nearest neighbours) or jet (CGAL's jet normal, degree 2, the same
+/// neighbours), each oriented over the neighbour graph (MST, then one global rule); or file (the
+/// normals the file gives, normalised, their signs as given). A mesh's starting normals are its
+/// area-weighted vertex normals: there, only pca (the default) is accepted.
+enum class PointNormalSource : std::uint8_t { pca, jet, file };
+inline constexpr const char* kPointNormalSourceNames[] = {"pca", "jet", "file"};
+
 // clang-format off
 #define CURVBENCH_ESTIMATOR_OPTIONS(X)                                                             \
   X(int, degree, "degree", 0, fits, result, 0, 6,                                                  \
@@ -104,6 +112,9 @@ struct PointNeighbourhood {
   X(PointNeighbourhood, neighbourhood, "neighbourhood", PointNeighbourhood{}, all, result, 0, 0,   \
     "neighbours without faces instead of rings: knn=K, radius=R or radius=Cs (C times the mean "   \
     "spacing); default: rings on a mesh, knn=2(d+1)(d+2)/2 on a point set")                       \
+  X(PointNormalSource, point_normals, "point-normals", PointNormalSource::pca, all, result, 0, 0,  \
+    "starting normals of a point set: pca or jet (of the 16 nearest neighbours, oriented over "   \
+    "the neighbour graph), or file (the file's nx ny nz, normalised, signs as given)")            \
   X(double, apss_beta, "apss-beta", 1.0, apss, result, 1e-6, 1e12,                              \
     "APSS: weight of the normal constraints against the positions, in units of the kernel "       \
     "support h squared (beta = apss-beta h^2; Guennebaud and Gross 2007)")                         \

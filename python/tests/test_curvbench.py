@@ -405,3 +405,27 @@ def test_point_set_without_faces_is_outward_and_matches_the_command_line(tmp_pat
     assert np.array_equal(H, r.H)
     with pytest.raises(curvbench.UsageError, match="a point set has no faces"):
         curvbench.estimate(V, method="meyer")
+
+
+def test_point_normals_option_jet_and_file_without_normals(tmp_path):
+    """point_normals="jet": the jet's starting normals, outward on a sphere and the same bits as
+    the command line's --point-normals jet; "file" on arrays (no normals given) is refused with
+    the command line's one line."""
+    rng = np.random.default_rng(7)
+    d = rng.normal(size=(2000, 3))
+    V = 2.0 * d / np.linalg.norm(d, axis=1)[:, None]
+    r = curvbench.estimate(V, method="lhf-2", point_normals="jet")
+    assert (r.status == "ok").all()
+    assert np.all(np.einsum("ij,ij->i", r.normal, V) > 0)
+    assert np.allclose(r.H, -0.5, atol=5e-2)
+    path = tmp_path / "sphere.xyz"
+    np.savetxt(path, V, fmt="%.17g")
+    out = tmp_path / "est.csv"
+    c = cli("estimate", "--method", "lhf-2", "--point-normals", "jet", "--output", out, path)
+    assert c.returncode == 0, c.stderr
+    with open(out) as f:
+        H = np.array([float(row["H"]) for row in csv.DictReader(f)])
+    assert np.array_equal(H, r.H)
+    with pytest.raises(curvbench.MeshError, match="point-normals=file, but the points come "
+                       "without normals"):
+        curvbench.estimate(V, method="lhf-2", point_normals="file")

@@ -442,13 +442,16 @@ TEST_F(MeshIo, WrittenFilesCutShortAreTruncated) {
 // NaN, is refused naming the line (the NaN point skipped with --skip-invalid).
 TEST_F(MeshIo, PointSetsReadAsMeshesWithoutFaces) {
   const std::string pts = "0 0 0\n1 0 0.5\n0 2 0\n";
-  const std::string ply_head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\n"
-                               "property double y\nproperty double z\n";
+  const std::string ply_head =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\n"
+      "property double y\nproperty double z\n";
   for (const auto& [name, text] : std::vector<std::pair<std::string, std::string>>{
            {"a.off", "OFF\n3 0 0\n" + pts},
            {"a.ply", ply_head + "end_header\n" + pts},
-           {"b.ply", ply_head + "element face 0\nproperty list uchar int vertex_indices\n"
-                                "end_header\n" + pts},
+           {"b.ply", ply_head +
+                         "element face 0\nproperty list uchar int vertex_indices\n"
+                         "end_header\n" +
+                         pts},
            {"a.xyz", "# a comment\n" + pts},
            {"a.pts", "3\n" + pts},
            {"a.pwn", "0 0 0 0 0 1\n1 0 0.5 0 0 1\n\n0 2 0 0 0 1\n"}}) {
@@ -470,6 +473,60 @@ TEST_F(MeshIo, PointSetsReadAsMeshesWithoutFaces) {
   EXPECT_EQ(skipped.num_vertices(), 2);
   EXPECT_EQ(report.vertices_skipped, 1);
   EXPECT_EQ(skipped.position(1), Vec3(2, 0, 1));
+}
+
+// The normals a point file gives (nx ny nz) are kept as read, not normalised (a zero one too):
+// .pwn and 6-column .xyz, PLY nx ny nz (ASCII; binary in bulk and with a list property), NOFF;
+// a file without them gives none, and --skip-invalid drops a skipped point's normal with it.
+TEST_F(MeshIo, PointFilesKeepTheirNormals) {
+  const std::string ply_head =
+      "property double x\nproperty double y\nproperty double z\nproperty float nx\n"
+      "property float ny\nproperty float nz\n";
+  Bytes binary;  // x y z nx ny nz as doubles/floats, then a uchar list: the record-by-record path
+  Bytes bulk;    // the same without the list: the block path
+  const double xyz[3][3] = {{0, 0, 0}, {1, 0, 0.5}, {0, 2, 0}};
+  const float nrm[3][3] = {{0, 0, 2}, {0, 0, 0}, {0.5f, 0, 0}};
+  for (int v = 0; v < 3; ++v) {
+    for (Bytes* b : {&binary, &bulk}) {
+      for (int c = 0; c < 3; ++c) b->le(xyz[v][c]);
+      for (int c = 0; c < 3; ++c) b->le(nrm[v][c]);
+    }
+    binary.le(std::uint8_t{1}).le(std::int32_t{7});
+  }
+  const std::string binary_head =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 3\n" + ply_head;
+  const std::string rows = "0 0 0 0 0 2\n1 0 0.5 0 0 0\n0 2 0 0.5 0 0\n";
+  for (const auto& [name, text] : std::vector<std::pair<std::string, std::string>>{
+           {"n.pwn", rows},
+           {"n.xyz", "# x y z nx ny nz\n" + rows},
+           {"n.ply",
+            "ply\nformat ascii 1.0\nelement vertex 3\n" + ply_head + "end_header\n" + rows},
+           {"bulk.ply", binary_head + "end_header\n" + bulk.s},
+           {"list.ply", binary_head + "property list uchar int extra\nend_header\n" + binary.s},
+           {"n.off", "NOFF\n3 0 0\n" + rows}}) {
+    SCOPED_TRACE(name);
+    const Mesh m = read_mesh(file(name, text));
+    ASSERT_TRUE(m.has_given_normals());
+    ASSERT_EQ(m.given_normals().rows(), 3);
+    EXPECT_EQ(Vec3(m.given_normals().row(0).transpose()), Vec3(0, 0, 2));
+    EXPECT_EQ(Vec3(m.given_normals().row(1).transpose()), Vec3(0, 0, 0));
+    EXPECT_EQ(Vec3(m.given_normals().row(2).transpose()), Vec3(0.5, 0, 0));
+    EXPECT_EQ(m.position(1), Vec3(1, 0, 0.5));
+  }
+  for (const auto& [name, text] : std::vector<std::pair<std::string, std::string>>{
+           {"plain.xyz", "0 0 0\n1 0 0\n0 1 0\n"},
+           {"plain.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n"},
+           {"nx_only.ply",
+            "ply\nformat ascii 1.0\nelement vertex 1\nproperty double x\n"
+            "property double y\nproperty double z\nproperty double nx\n"
+            "end_header\n0 0 0 1\n"}}) {
+    SCOPED_TRACE(name);
+    EXPECT_FALSE(read_mesh(file(name, text)).has_given_normals());
+  }
+  const Mesh skipped = read_mesh(file("nan_n.pwn", "0 0 0 0 0 1\n1 nan 0 0 1 0\n2 0 1 1 0 0\n"),
+                                 nullptr, {.skip_invalid = true});
+  ASSERT_EQ(skipped.given_normals().rows(), 2);
+  EXPECT_EQ(Vec3(skipped.given_normals().row(1).transpose()), Vec3(1, 0, 0));
 }
 
 void MeshIo::expect_errors(const std::vector<BadFile>& cases) const {

@@ -126,6 +126,25 @@ TEST(MeshCore, ValidationErrorsNameTheProblem) {
   EXPECT_THROW(Mesh(V, F), InputError);
 }
 
+// Given normals: one row per vertex or none; the mismatch names the source.
+TEST(MeshCore, GivenNormalsNeedOneRowPerVertex) {
+  VertexMatrix V(3, 3);
+  V << 0, 0, 0, 1, 0, 0, 0, 1, 0;
+  Mesh m(V, FaceMatrix(0, 3), "pts.xyz");
+  EXPECT_EQ(m.source(), "pts.xyz");
+  EXPECT_FALSE(m.has_given_normals());
+  try {
+    m.set_given_normals(VertexMatrix::Zero(2, 3));
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "pts.xyz: 2 normals for 3 points");
+  }
+  m.set_given_normals(VertexMatrix::Ones(3, 3));
+  EXPECT_TRUE(m.has_given_normals());
+  m.set_given_normals(VertexMatrix());
+  EXPECT_FALSE(m.has_given_normals());
+}
+
 TEST(MeshCore, EmptyMeshIsHarmless) {
   const Mesh m;
   EXPECT_EQ(m.num_vertices(), 0);
