@@ -87,11 +87,11 @@ int write_generated_mesh(const MeshOptions& o) {
   std::printf("mesh:                  %s\n", gm.description.c_str());
   std::printf("vertices:              %d\n", m.num_vertices());
   std::printf("faces:                 %d\n", m.num_faces());
-  std::printf("boundary vertices:     %d\n", m.num_boundary_vertices());
-  std::printf("euler characteristic:  %d\n", m.euler_characteristic());
-  if (m.num_faces() == 0) {  // a point-cloud family: no edges, angles or valences
+  if (m.num_faces() == 0) {  // a point-cloud family: no boundary, edges, angles or valences
     std::printf("nominal spacing h:     %.6g (sqrt(area / points))\n", gm.spacing);
   } else {
+    std::printf("boundary vertices:     %d\n", m.num_boundary_vertices());
+    std::printf("euler characteristic:  %d\n", m.euler_characteristic());
     std::printf("mean edge length:      %.6g\n", m.mean_edge_length());
     std::printf("angles (deg):          min %.3f, max %.3f\n", q.min_angle_deg, q.max_angle_deg);
     std::printf("valence:               interior %d..%d", q.min_valence, q.max_valence);

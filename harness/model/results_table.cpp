@@ -33,11 +33,24 @@ constexpr const char* kRateHeader =
     "experiment,family,method,degree,rings,noise,vertex_set,quantity,norm,levels,h_first,h_last,"
     "e_first,e_last,rate,pairwise_rates";
 
+// One line's fields, split at commas outside double quotes (RFC 4180: a quoted field may hold
+// commas, and "" inside it is one quote; make bench's limits.csv quotes its notes).
 std::vector<std::string> split_csv(const std::string& line) {
   std::vector<std::string> out;
   std::string cur;
-  for (char c : line) {
-    if (c == ',') {
+  bool quoted = false;
+  for (size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c != '"')
+        cur += c;
+      else if (i + 1 < line.size() && line[i + 1] == '"')
+        cur += line[++i];
+      else
+        quoted = false;
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
       out.push_back(cur);
       cur.clear();
     } else if (c != '\r') {

@@ -156,9 +156,12 @@ const char* const kIntro =
     "(experiments/examples/pcl_curvatures.cpp) where PCL is installed: its H column is the "
     "same surface variation, and on points its normals keep PCL's own orientation, towards a "
     "viewpoint at the origin, which inside a torus turns part of them inward (the L2 error of "
-    "the normals counts those; the RMS angle, unoriented, does not). On the scan-like stripes "
-    "the k nearest points lie on one to three scan lines, so the fits across the lines are "
-    "poorly determined.";
+    "the normals counts those; the RMS angle, unoriented, does not). APSS's H is its fitted "
+    "sphere's, an average of k1 and k2 weighted by the neighbourhood's second moments "
+    "(docs/methods.md), so where k1 != k2 and the sampling is irregular it does not converge, "
+    "with PCA or jet starting normals alike (experiment point-clouds-normals). On the "
+    "scan-like stripes the k nearest points lie on one to three scan lines, so the fits across "
+    "the lines are poorly determined.";
 
 }  // namespace
 

@@ -38,6 +38,21 @@ TEST(CliMesh, WritesEveryFamily) {
   }
 }
 
+// A point-cloud family: a PLY of points without faces, read back as a point set; the summary
+// gives the nominal spacing instead of a mesh's boundary, Euler characteristic and edges.
+TEST(CliMesh, WritesAPointCloudFamily) {
+  const auto dir = fresh_dir("cli_mesh_points");
+  const auto path = dir / "p.ply";
+  const auto r = run_cli("mesh --family points-torus-blue --level 1 --output " + path.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("faces:                 0"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("nominal spacing h:"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("euler"), std::string::npos) << r.output;
+  const Mesh m = read_mesh(path.string());
+  EXPECT_EQ(m.num_vertices(), 1000);
+  EXPECT_EQ(m.num_faces(), 0);
+}
+
 TEST(CliMesh, PlyCarriesExactQuantitiesAndNoiseIsSeeded) {
   const auto dir = fresh_dir("cli_mesh_ply");
   const auto a = dir / "a.ply", b = dir / "b.ply", c = dir / "c.ply";

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/errors.h"
 #include "harness/model/experiment.h"
 #include "harness/model/results_table.h"
 #include "harness/report/point_clouds.h"
@@ -179,6 +180,19 @@ TEST(PointCloudStudy, RateTableAndSideBySide) {
   EXPECT_NE(report::to_markdown(point_cloud_section({e}, empty.string())).find("No point-cloud"),
             std::string::npos);
   EXPECT_TRUE(point_cloud_summary({e}, empty.string()).blocks.empty());
+}
+
+// CSV fields in double quotes keep their commas and read "" as one quote (make bench's
+// limits.csv quotes its notes: its report step used to fail, "expected 6 fields, got 9").
+TEST(CsvTable, QuotedFieldsKeepTheirCommas) {
+  const CsvTable t = parse_csv_table(
+      "# provenance\nstage,bound_kind,notes\n"
+      "read,\"plain copy (read(2), 1 MiB buffer)\",\"110 MB, \"\"fast\"\"\"\r\n",
+      "limits.csv");
+  ASSERT_EQ(t.rows.size(), 1u);
+  EXPECT_EQ(t.text(0, t.col("bound_kind")), "plain copy (read(2), 1 MiB buffer)");
+  EXPECT_EQ(t.text(0, t.col("notes")), "110 MB, \"fast\"");
+  EXPECT_THROW(parse_csv_table("a,b\n1,2,3\n", "x.csv"), InputError);
 }
 
 }  // namespace
