@@ -19,7 +19,6 @@
 //   bench_limits --mesh M.ply --output results/limits.csv [--method lhf-2] [--threads 1]
 //                [--repeat 3] [--scratch DIR]
 #include <fcntl.h>
-#include <malloc.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -410,11 +409,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // Memory freed by one run is kept for the next (as bench/table5.h's keep_freed_memory): the
-  // minimum is then the run whose arrays are already faulted in, the hardware's case, not the
-  // hypervisor's first-touch faults a fresh `curvbench estimate` process also pays.
-  mallopt(M_MMAP_MAX, 0);
-  mallopt(M_TRIM_THRESHOLD, -1);
+  curvbench::bench::keep_freed_memory();  // bench/timing.h
   try {
     return run(argc, argv);
   } catch (const std::exception& e) {

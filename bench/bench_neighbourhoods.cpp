@@ -31,7 +31,6 @@
 // atomically (core/atomic_file.h). Usage:
 //   bench_neighbourhoods --output results/neighbourhoods.csv [--points 1000000] [--repeat 5]
 //                        [--meshes torus-unstructured:4,torus-structured:6]
-#include <malloc.h>
 
 #include <cmath>
 #include <cstdio>
@@ -273,10 +272,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // Memory freed by one run is kept for the next (bench/table5.h's keep_freed_memory): the
-  // minimum is then a run on arrays already faulted in.
-  mallopt(M_MMAP_MAX, 0);
-  mallopt(M_TRIM_THRESHOLD, -1);
+  curvbench::bench::keep_freed_memory();  // bench/timing.h
   try {
     return run(argc, argv);
   } catch (const std::exception& e) {

@@ -8,7 +8,6 @@
 // Header-only: each bench/*.cpp is its own executable.
 #pragma once
 
-#include <malloc.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -23,23 +22,11 @@
 
 #include <benchmark/benchmark.h>
 
+#include "bench/timing.h"
 #include "core/build_info.h"
 #include "harness/model/results_table.h"
 
 namespace curvbench::bench {
-
-/// Keeps the memory freed by one pass in the process for the next (glibc: no mmap for large
-/// blocks, no trimming of the heap), so that every pass after the first reuses memory that is
-/// already mapped. Called first thing in main(). Without it a pass paid for page faults that
-/// depended on which benchmark ran before it: on the project's virtual machine, after CGAL's
-/// LSCM had run, LHF-2 passes at 1.44 million vertices took 0.56-0.85 s instead of 0.36 s at
-/// random (memory given back to the kernel is faulted in again through the hypervisor), which
-/// random interleaving spread over the medians. The first pass of a run (and the end-to-end
-/// row, a separate process) still pays for its first touches; the median does not see them.
-inline void keep_freed_memory() {
-  mallopt(M_MMAP_MAX, 0);
-  mallopt(M_TRIM_THRESHOLD, -1);  // no trimming (the largest value)
-}
 
 /// The settings every per-level sweep shares: mesh levels 1..levels as the argument, wall time,
 /// 9 repetitions (the median resists the bursts of load of a shared machine) of at least 0.1 s,

@@ -190,7 +190,8 @@ void check_point_method(const Estimator& estimator, const Mesh& mesh) {
                    point_set_methods() + " only");
 }
 
-// The starting normals of a point set by the option point-normals (points/point_normals.h).
+// The starting normals of a point set by the option point-normals (points/point_normals.h); a
+// file's normals are checked to exist before the search (MeshEstimation).
 PointNormals point_set_normals(const Mesh& mesh, const PointRows& nearest,
                                const Estimator& estimator, int threads) {
   const PointNormalSource source = estimator.options().point_normals;
@@ -198,10 +199,6 @@ PointNormals point_set_normals(const Mesh& mesh, const PointRows& nearest,
     return oriented_jet_normals(mesh.vertices(), nearest, threads);
   if (source == PointNormalSource::pca)
     return oriented_pca_normals(mesh.vertices(), nearest, threads);
-  if (!mesh.has_given_normals())
-    throw InputError(mesh.source() +
-                     ": point-normals=file, but the points come without normals (a .pwn file, an "
-                     ".xyz file of 6 numbers per line, PLY with nx ny nz, or NOFF has them)");
   return given_point_normals(mesh.vertices(), nearest, mesh.given_normals(), threads);
 }
 
@@ -225,6 +222,10 @@ MeshEstimation::MeshEstimation(const Mesh& mesh, const Estimator& estimator,
         "point-normals=" + option_text(estimator.options(), option_info("point-normals")) +
         " applies to point sets: " + mesh.source() +
         " has faces, whose area-weighted vertex normals start the fits");
+  if (estimator.options().point_normals == PointNormalSource::file && !mesh.has_given_normals())
+    throw InputError(mesh.source() +
+                     ": point-normals=file, but the points come without normals (a .pwn file, an "
+                     ".xyz file of 6 numbers per line, PLY with nx ny nz, or NOFF has them)");
   if (spec.is_points() || mesh.num_faces() == 0) {
     check_point_method(estimator, mesh);
     // One tree serves the normals and the table; of k-NN rows, one search of the larger k

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <filesystem>
 #include <iterator>
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/errors.h"
@@ -62,6 +64,7 @@ std::vector<StudyRows> study_rows(const std::vector<Experiment>& experiments,
 // (columns, in mesh-line order), for one measure; the least error of each column is marked.
 report::Table rate_table(const StudyRows& s, const Measure& m) {
   std::vector<std::string> columns, methods;
+  std::map<std::pair<std::string, std::string>, const RateRow*> cell_of;  // (method, column)
   for (const RateRow& r : s.rates) {
     if (r.quantity != to_string(m.quantity) || r.norm != to_string(m.norm) ||
         !is_point_set_family(r.family) || r.vertex_set != "all")
@@ -70,6 +73,7 @@ report::Table rate_table(const StudyRows& s, const Measure& m) {
     if (std::find(columns.begin(), columns.end(), c) == columns.end()) columns.push_back(c);
     if (std::find(methods.begin(), methods.end(), r.method) == methods.end())
       methods.push_back(r.method);
+    cell_of.try_emplace({r.method, c}, &r);
   }
   report::Table t;
   t.caption = std::string("**") + m.caption + "**: the finest level's error (average rate)";
@@ -79,17 +83,13 @@ report::Table rate_table(const StudyRows& s, const Measure& m) {
   for (const std::string& method : methods) {
     std::vector<report::Cell> row{method};
     for (size_t i = 0; i < columns.size(); ++i) {
-      const auto it = std::find_if(s.rates.begin(), s.rates.end(), [&](const RateRow& r) {
-        return r.method == method && series_name(r) == columns[i] &&
-               r.quantity == to_string(m.quantity) && r.norm == to_string(m.norm) &&
-               is_point_set_family(r.family) && r.vertex_set == "all";
-      });
-      if (it == s.rates.end()) {
+      const auto it = cell_of.find({method, columns[i]});
+      if (it == cell_of.end()) {
         row.push_back("-");
         continue;
       }
-      row.push_back(error_and_rate(*it));
-      if (std::isfinite(it->e_last)) best[i] = std::min(best[i], it->e_last);
+      row.push_back(error_and_rate(*it->second));
+      if (std::isfinite(it->second->e_last)) best[i] = std::min(best[i], it->second->e_last);
     }
     t.add(std::move(row));
   }
