@@ -2,14 +2,18 @@
 // "Neighbourhoods of point sets"), two parts, each time the minimum over --repeat runs (a shared
 // machine only ever adds time):
 //
-//   search  nanoflann's k-d tree (points/point_search.h) over --points area-uniform samples of the
-//           torus R = 1, r = 0.4 (meshgen/point_samples.h, seed 1): the tree's build (one thread),
-//           then for k = 12, 20, 30 (the default K of degrees 2, 3, 4, docs/point_sets.md)
-//             knn-query  PointSearch::knn at every point's position, in the tree's leaf order
-//                        (as the rows are gathered), one thread: the bare query (its k hits
-//                        include the point itself), sorted by distance
+//   search  the neighbour search of points/point_search.h over --points area-uniform samples of
+//           the torus R = 1, r = 0.4 (meshgen/point_samples.h, seed 1): nanoflann's k-d tree's
+//           build (one thread), then for k = 12, 20, 30 (the default K of degrees 2, 3, 4,
+//           docs/point_sets.md)
+//             knn-query  PointSearch::knn (the tree) at every point's position, in the tree's leaf
+//                        order, one thread: the bare query (its k hits include the point
+//                        itself), sorted by distance
+//             knn-of-tree PointSearch::knn_of (the tree) of every point in leaf order, one
+//                        thread: the rows as the tree alone gives them, without their layout
 //             knn-rows   knn_rows: every point's k nearest others in the table's layout (what a
-//                        point neighbourhood costs), on 1 and 2 threads
+//                        point neighbourhood costs; the grid of cells, built in the time, the
+//                        tree for rows the grid cannot settle), on 1 and 2 threads
 //             ball-rows  ball_rows with the radius whose disc holds k points on average
 //                        (n pi r^2 / area = k), on 1 and 2 threads
 //   lhf-2   LHF-2 on each mesh of --meshes (family:level), three ways, on 1 and 2 threads:
@@ -18,13 +22,15 @@
 //                          normals still the area-weighted ones)
 //             points-knn   its vertices as a point set (a Mesh without faces): PCA normals
 //                          oriented over the MST, and knn=12
-//           stages: setup (MeshEstimation's constructor: normals, and for k-NN the tree and the
+//           stages: setup (MeshEstimation's constructor: normals, and for k-NN the search and the
 //           table of rows), estimate (MeshEstimation::run: for the rings, gathering them and the
-//           fits; for k-NN, the fits on the table's rows), total (the minimum of their sums); for
-//           points-knn also the setup's parts: normals-tree, normals-rows (16-NN),
-//           normals-pca, normals-orient (one thread whatever the count); the table's rows are
-//           the first 12 of those 16. The row `table` is the NeighbourhoodTable of knn=12 built
-//           alone (its own tree and search), as a NeighbourhoodCache builds it.
+//           fits; for k-NN, the fits on the table's rows), total (the minimum of their sums),
+//           from-arrays (the Mesh built from its vertex and face arrays, then setup and estimate:
+//           the rings' adjacency counted as the k-NN search is); for
+//           points-knn also the setup's parts: normals-rows (16-NN), normals-pca, normals-orient
+//           (one thread whatever the count); the table's rows are the first 12 of those 16. The
+//           row `table` is the NeighbourhoodTable of knn=12 built alone (its own search), as a
+//           NeighbourhoodCache builds it.
 //
 // CSV columns: part,input,points,stage,neighbourhood,threads,seconds,ns_per_point,
 // neighbours_per_point,ns_per_neighbour (the last two empty where they do not apply). Written
@@ -96,7 +102,12 @@ void search_part(int n, int repeat, std::vector<Row>& rows) {
   const std::string input = "torus-points";
   std::unique_ptr<PointSearch> search;
   const double build_s = best_of(
-      repeat, [&] { search = std::make_unique<PointSearch>(points); }, [&] { search.reset(); });
+      repeat,
+      [&] {
+        search = std::make_unique<PointSearch>(points);
+        search->leaf_order();  // the tree is built on first use
+      },
+      [&] { search.reset(); });
   report(rows, {"search", input, n, "build", "", 1, build_s, 0});
   const double area = 4.0 * std::numbers::pi * std::numbers::pi * kTorusR * kTorusr;
   for (const int k : kKs) {
@@ -111,6 +122,15 @@ void search_part(int n, int repeat, std::vector<Row>& rows) {
       g_sink = g_sink + static_cast<double>(found);
     });
     report(rows, {"search", input, n, "knn-query", knn, 1, query_s, static_cast<double>(k)});
+    const double tree_rows_s = best_of(repeat, [&] {
+      std::size_t found = 0;
+      for (const std::uint32_t i : search->leaf_order()) {
+        search->knn_of(static_cast<int>(i), k, hits);
+        found += hits.size();
+      }
+      g_sink = g_sink + static_cast<double>(found);
+    });
+    report(rows, {"search", input, n, "knn-of-tree", knn, 1, tree_rows_s, static_cast<double>(k)});
     for (const int threads : kThreads) {
       PointRows knn_r;
       const double rows_s = best_of(
@@ -155,6 +175,24 @@ Stages time_estimation(const Mesh& mesh, const Estimator& est, int repeat) {
   return best;
 }
 
+// The same from the arrays: the Mesh built from (vertices, faces) inside the time, as a caller
+// with arrays in memory pays it (the rings need the mesh's adjacency, the k-NN rows their grid or
+// tree, both built in the time), the minimum over the runs.
+double time_from_arrays(const VertexMatrix& vertices, const FaceMatrix& faces, const Estimator& est,
+                        int repeat) {
+  double best = INFINITY;
+  std::vector<VertexEstimate> out(static_cast<std::size_t>(vertices.rows()));
+  for (int r = 0; r < repeat; ++r) {
+    const double seconds = bench::seconds_of([&] {
+      const Mesh mesh(vertices, faces, "bench");
+      MeshEstimation(mesh, est).run(0, out);
+    });
+    g_sink = g_sink + out.back().H;
+    best = std::min(best, seconds);
+  }
+  return best;
+}
+
 void lhf_part(const std::string& family, int level, int repeat, std::vector<Row>& rows) {
   const GeneratedMesh generated = generate_mesh({family, level, 0, 1, false});
   const Mesh& mesh = generated.mesh;
@@ -183,14 +221,12 @@ void lhf_part(const std::string& family, int level, int repeat, std::vector<Row>
       report(rows, {part, input, n, "setup", way.neighbourhood, threads, s.setup, 0});
       report(rows, {part, input, n, "estimate", way.neighbourhood, threads, s.estimate, 0});
       report(rows, {part, input, n, "total", way.neighbourhood, threads, s.total, 0});
+      const double arrays_s = time_from_arrays(way.mesh.vertices(), way.mesh.faces(), *est, repeat);
+      report(rows, {part, input, n, "from-arrays", way.neighbourhood, threads, arrays_s, 0});
     }
-    // The point set's setup in its parts (points/point_normals.h: a tree, the 16-NN rows, PCA,
-    // the orientation over the MST), and the table of knn=12 built alone.
-    std::unique_ptr<PointSearch> search;
-    const double tree_s = best_of(
-        repeat, [&] { search = std::make_unique<PointSearch>(points.vertices()); },
-        [&] { search.reset(); });
-    report(rows, {"lhf-2 points-knn", input, n, "normals-tree", "", threads, tree_s, 0});
+    // The point set's setup in its parts (points/point_normals.h: the 16-NN rows, PCA, the
+    // orientation over the MST), and the table of knn=12 built alone.
+    const auto search = std::make_unique<PointSearch>(points.vertices());  // nothing built yet
     PointRows normal_rows;
     const double normal_rows_s = best_of(
         repeat, [&] { normal_rows = knn_rows(*search, kNormalNeighbours, threads); },

@@ -1,13 +1,17 @@
 // Neighbour search in a point set without connectivity: a k-d tree (nanoflann) over the rows of
-// a VertexMatrix, k nearest neighbours and radius balls, and the point set's mean spacing.
+// a VertexMatrix, k nearest neighbours and radius balls, and the point set's mean spacing; the
+// k-nearest rows of every point at once (knn_rows) through a uniform grid of cells where that
+// settles them, the tree elsewhere.
 //
 // Results are deterministic: the tree is built by one thread from the points alone, every list
 // is sorted by distance, then by index, and a k-nearest list breaks ties at its last distance by
-// index.
+// index. Distances are computed the same way on every path, so the grid and the tree give the
+// same rows.
 #pragma once
 
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <span>
 #include <utility>
 #include <vector>
@@ -24,7 +28,8 @@ struct PointHit {
 
 class PointSearch {
  public:
-  /// Builds the tree over the rows of `points` (which must outlive the search).
+  /// The search over the rows of `points` (which must outlive it). The tree is built on first use
+  /// (by one thread, whichever asks first), so that rows the grid settles alone never pay for it.
   explicit PointSearch(const VertexMatrix& points);
   ~PointSearch();
   PointSearch(const PointSearch&) = delete;
@@ -53,8 +58,10 @@ class PointSearch {
   /// Every point within squared distance r2 of q (inclusive), sorted by distance then index.
   void ball_squared(const Vec3& q, double r2, std::vector<PointHit>& out) const;
   struct Tree;
+  const Tree& tree() const;
   const VertexMatrix* points_;
-  std::unique_ptr<Tree> tree_;
+  mutable std::once_flag tree_built_;
+  mutable std::unique_ptr<Tree> tree_;
 };
 
 /// The mean spacing s of a point set: the mean over the points of the distance to the nearest
@@ -69,9 +76,13 @@ struct PointRows {
   std::vector<int> neighbours;
 };
 
-/// The k-nearest-neighbour rows of every point (knn_of), gathered with `threads` threads in
-/// fixed blocks of the leaf order: the same rows for any number of threads.
-PointRows knn_rows(const PointSearch& search, int k, int threads);
+/// The k-nearest-neighbour rows of every point: row i is knn_of(i, k), for any number of
+/// `threads`. Found through a grid of cells about k-th-neighbour distance wide: a point's row is
+/// taken from the 27 cells around it when its k-th neighbour is nearer than any point outside
+/// them can be, else from the tree (points in sparse places, too few points, a set whose extent
+/// would need too many cells). `grid_rows`, if given, receives how many rows the grid settled.
+PointRows knn_rows(const PointSearch& search, int k, int threads,
+                   std::int64_t* grid_rows = nullptr);
 /// The first k of each row: of k' >= k nearest rows (knn_rows), the k nearest rows.
 PointRows first_of_rows(const PointRows& rows, int k);
 /// The radius-r ball rows of every point (ball_of).

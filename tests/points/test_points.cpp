@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "points/point_normals.h"
@@ -88,6 +89,67 @@ TEST(PointSearch, TiesAtTheLastDistanceGoToTheLowestIndexSoShorterRowsArePrefixe
     EXPECT_EQ(direct.offsets, first.offsets) << k;
     EXPECT_EQ(direct.neighbours, first.neighbours) << k;
   }
+}
+
+// Row i of knn_rows against the tree's knn_of(i, k), index by index, and the share of rows the
+// grid settled (the rest went to the tree).
+double check_rows_against_tree(const VertexMatrix& V, int k, const char* what) {
+  const PointSearch search(V);
+  std::int64_t by_grid = 0;
+  const PointRows rows = knn_rows(search, k, 2, &by_grid);
+  std::vector<PointHit> hits;
+  int mismatches = 0;
+  for (int i = 0; i < V.rows(); ++i) {
+    search.knn_of(i, k, hits);
+    std::vector<int> expected;
+    for (const PointHit& h : hits) expected.push_back(h.index);
+    const std::vector<int> got(rows.neighbours.begin() + rows.offsets[static_cast<size_t>(i)],
+                               rows.neighbours.begin() + rows.offsets[static_cast<size_t>(i) + 1]);
+    if (got != expected && ++mismatches <= 3) ADD_FAILURE() << what << ": row " << i << " differs";
+  }
+  EXPECT_EQ(mismatches, 0) << what;
+  return static_cast<double>(by_grid) / static_cast<double>(V.rows());
+}
+
+// Area-uniform points of the torus R = 1, r = 0.4 (rejection on the area element).
+VertexMatrix torus_points(int n, std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> angle(0.0, 2.0 * M_PI), unit(0.0, 1.0);
+  VertexMatrix V(n, 3);
+  for (int i = 0; i < n;) {
+    const double u = angle(rng), v = angle(rng);
+    if (unit(rng) * 1.4 > 1.0 + 0.4 * std::cos(v)) continue;
+    const double rho = 1.0 + 0.4 * std::cos(v);
+    V.row(i++) << rho * std::cos(u), rho * std::sin(u), 0.4 * std::sin(v);
+  }
+  return V;
+}
+
+TEST(PointSearch, GridRowsAreTheTreesRowsOnEvenUnevenTiedAndFarFlungSets) {
+  // Evenly sampled: the grid settles nearly every row.
+  const VertexMatrix torus = torus_points(20000, 7);
+  for (const int k : {1, 12, 16, 30})
+    EXPECT_GT(check_rows_against_tree(torus, k, "torus"), 0.95) << k;
+  // A grid of points: ties at the k-th distance everywhere, settled by index as the tree does.
+  EXPECT_GT(check_rows_against_tree(grid(120, 0.01, 0.5), 12, "plane grid"), 0.9);
+  // Copies (never a copy's neighbour), far from the origin (rounding near the cell faces).
+  VertexMatrix copies = torus_points(6000, 8);
+  copies.conservativeResize(8000, 3);
+  for (int i = 6000; i < 8000; ++i) copies.row(i) = copies.row(3 * (i - 6000));
+  copies.rowwise() += Vec3(1e6, -2e5, 3e4).transpose();
+  check_rows_against_tree(copies, 16, "copies far out");
+  // Uneven: dense lines 0.1 apart plus a sparse cloud and one far outlier; the tree takes what the
+  // grid cannot settle.
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  VertexMatrix uneven(5001, 3);
+  for (int i = 0; i < 4000; ++i) uneven.row(i) << unit(rng), 0.1 * (i % 10), 1e-3 * unit(rng);
+  for (int i = 4000; i < 5000; ++i) uneven.row(i) << unit(rng), unit(rng), unit(rng);
+  uneven.row(5000) << 50.0, 50.0, 50.0;
+  check_rows_against_tree(uneven, 16, "uneven");
+  // As small as a row, and fewer points than k: every other point, nearest first.
+  check_rows_against_tree(torus_points(20, 3), 16, "tiny");
+  check_rows_against_tree(torus_points(40, 3), 16, "small");
 }
 
 TEST(PointNormals, ClosedSetsPointOutwardEachComponentOnItsOwn) {
