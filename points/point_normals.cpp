@@ -20,78 +20,110 @@ namespace curvbench {
 namespace {
 
 // Prim's frontier: the points not yet in the tree that an edge from it reaches, each with its
-// key, the least (weight, parent) offered, in a binary min-heap by (weight, point).
+// key, the least (weight, parent) offered, in a 4-ary min-heap by (weight, point). A point's
+// state, key and place in the heap sit together (one cache line per offer), and the heap holds
+// each entry's weight beside its point so that sifting reads the heap alone.
 class PrimFrontier {
  public:
-  explicit PrimFrontier(int n)
-      : slot_(static_cast<size_t>(n), -1),
-        weight_(static_cast<size_t>(n)),
-        parent_(static_cast<size_t>(n)) {}
+  explicit PrimFrontier(int n) : nodes_(static_cast<size_t>(n)) {}
   bool empty() const { return heap_.empty(); }
-  /// The edge parent -> v of weight w: v's key becomes (w, parent) if that is less.
+  bool done(int v) const { return nodes_[static_cast<size_t>(v)].slot == kDone; }
+  /// The edge parent -> v of weight w, v not in the tree: v's key becomes (w, parent) if that
+  /// is less.
   void offer(int v, double w, int parent) {
-    const size_t i = static_cast<size_t>(v);
-    if (slot_[i] >= 0 && !(w < weight_[i] || (w == weight_[i] && parent < parent_[i]))) return;
-    weight_[i] = w;
-    parent_[i] = parent;
-    if (slot_[i] < 0) {
-      slot_[i] = static_cast<int>(heap_.size());
-      heap_.push_back(v);
+    Node& node = nodes_[static_cast<size_t>(v)];
+    if (node.slot >= 0 && !(w < node.weight || (w == node.weight && parent < node.parent))) return;
+    node.weight = w;
+    node.parent = parent;
+    if (node.slot < 0) {
+      node.slot = static_cast<int>(heap_.size());
+      heap_.push_back({w, v});
     }
-    sift_up(slot_[i]);
+    sift_up(node.slot, {w, v});
   }
-  /// Removes the least point; returns it and its parent.
+  /// Removes the least point and marks it done; returns it and its parent.
   std::pair<int, int> pop() {
-    const int v = heap_.front();
-    slot_[static_cast<size_t>(v)] = -1;
-    const int last = heap_.back();
+    const int v = heap_.front().point;
+    Node& node = nodes_[static_cast<size_t>(v)];
+    node.slot = kDone;
+    const Entry last = heap_.back();
     heap_.pop_back();
-    if (!heap_.empty()) {
-      place(0, last);
-      sift_down(0);
-    }
-    return {v, parent_[static_cast<size_t>(v)]};
+    if (!heap_.empty()) sift_down(0, last);
+    return {v, node.parent};
   }
 
  private:
-  bool less(int a, int b) const {
-    const double wa = weight_[static_cast<size_t>(a)], wb = weight_[static_cast<size_t>(b)];
-    return wa < wb || (wa == wb && a < b);
+  static constexpr int kFree = -1, kDone = -2;  // slot of a point never reached / in the tree
+  static constexpr int kArity = 4;
+  struct Node {
+    double weight = 0.0;
+    int parent = 0;
+    int slot = kFree;  // its place in heap_ while there
+  };
+  struct Entry {
+    double weight;
+    int point;
+  };
+  static bool less(const Entry& a, const Entry& b) {
+    return a.weight < b.weight || (a.weight == b.weight && a.point < b.point);
   }
-  void place(int s, int v) {
-    heap_[static_cast<size_t>(s)] = v;
-    slot_[static_cast<size_t>(v)] = s;
+  void place(int s, const Entry& e) {
+    heap_[static_cast<size_t>(s)] = e;
+    nodes_[static_cast<size_t>(e.point)].slot = s;
   }
-  void sift_up(int s) {
-    const int v = heap_[static_cast<size_t>(s)];
+  void sift_up(int s, const Entry& e) {
     while (s > 0) {
-      const int up = (s - 1) / 2;
-      if (!less(v, heap_[static_cast<size_t>(up)])) break;
+      const int up = (s - 1) / kArity;
+      if (!less(e, heap_[static_cast<size_t>(up)])) break;
       place(s, heap_[static_cast<size_t>(up)]);
       s = up;
     }
-    place(s, v);
+    place(s, e);
   }
-  void sift_down(int s) {
+  void sift_down(int s, const Entry& e) {
     const int size = static_cast<int>(heap_.size());
-    const int v = heap_[static_cast<size_t>(s)];
     for (;;) {
-      int child = 2 * s + 1;
-      if (child >= size) break;
-      if (child + 1 < size &&
-          less(heap_[static_cast<size_t>(child) + 1], heap_[static_cast<size_t>(child)]))
-        ++child;
-      if (!less(heap_[static_cast<size_t>(child)], v)) break;
-      place(s, heap_[static_cast<size_t>(child)]);
-      s = child;
+      const int first = kArity * s + 1;
+      if (first >= size) break;
+      int least = first;
+      for (int c = first + 1; c < std::min(first + kArity, size); ++c)
+        if (less(heap_[static_cast<size_t>(c)], heap_[static_cast<size_t>(least)])) least = c;
+      if (!less(heap_[static_cast<size_t>(least)], e)) break;
+      place(s, heap_[static_cast<size_t>(least)]);
+      s = least;
     }
-    place(s, v);
+    place(s, e);
   }
-  std::vector<int> heap_;  // points, a binary heap by (weight, point)
-  std::vector<int> slot_;  // a point's place in heap_, -1 when not in it
-  std::vector<double> weight_;
-  std::vector<int> parent_;
+  std::vector<Node> nodes_;
+  std::vector<Entry> heap_;
 };
+
+// The edges of the symmetrised neighbour graph that the rows lack: v -> u for each row edge
+// u -> v whose reverse is not in v's row, grouped by v (a point's row edges and these are its
+// edges in the symmetrised graph; a mutual pair is held once each way, as in the rows).
+PointRows reverse_only_edges(const PointRows& rows, int n) {
+  const auto row_has = [&](int v, int u) {
+    const auto b = rows.neighbours.begin() + rows.offsets[static_cast<size_t>(v)];
+    const auto e = rows.neighbours.begin() + rows.offsets[static_cast<size_t>(v) + 1];
+    return std::find(b, e, u) != e;
+  };
+  std::vector<std::pair<int, int>> missing;  // (v, u): u -> v in the rows, v -> u not
+  for (int u = 0; u < n; ++u)
+    for (auto j = rows.offsets[static_cast<size_t>(u)];
+         j < rows.offsets[static_cast<size_t>(u) + 1]; ++j) {
+      const int v = rows.neighbours[static_cast<size_t>(j)];
+      if (!row_has(v, u)) missing.emplace_back(v, u);
+    }
+  PointRows reverse;
+  reverse.offsets.assign(static_cast<size_t>(n) + 1, 0);
+  for (const auto& [v, u] : missing) ++reverse.offsets[static_cast<size_t>(v) + 1];
+  for (size_t i = 0; i < static_cast<size_t>(n); ++i) reverse.offsets[i + 1] += reverse.offsets[i];
+  reverse.neighbours.resize(missing.size());
+  std::vector<std::int64_t> cursor(reverse.offsets.begin(), reverse.offsets.end() - 1);
+  for (const auto& [v, u] : missing)
+    reverse.neighbours[static_cast<size_t>(cursor[static_cast<size_t>(v)]++)] = u;
+  return reverse;
+}
 
 }  // namespace
 
@@ -130,27 +162,7 @@ std::vector<unsigned char> orient_normals(const VertexMatrix& points, const Poin
                                           VertexMatrix& normals,
                                           std::vector<unsigned char> degenerate, int* components) {
   const int n = static_cast<int>(points.rows());
-  // The symmetrised graph: each directed row edge in both directions (an edge in both rows is
-  // listed twice, which changes nothing below).
-  std::vector<std::int64_t> off(static_cast<size_t>(n) + 1, 0);
-  for (int i = 0; i < n; ++i)
-    for (auto j = rows.offsets[static_cast<size_t>(i)];
-         j < rows.offsets[static_cast<size_t>(i) + 1]; ++j) {
-      ++off[static_cast<size_t>(i) + 1];
-      ++off[static_cast<size_t>(rows.neighbours[static_cast<size_t>(j)]) + 1];
-    }
-  for (size_t i = 0; i < static_cast<size_t>(n); ++i) off[i + 1] += off[i];
-  std::vector<int> adj(static_cast<size_t>(off.back()));
-  {
-    std::vector<std::int64_t> cursor(off.begin(), off.end() - 1);
-    for (int i = 0; i < n; ++i)
-      for (auto j = rows.offsets[static_cast<size_t>(i)];
-           j < rows.offsets[static_cast<size_t>(i) + 1]; ++j) {
-        const int w = rows.neighbours[static_cast<size_t>(j)];
-        adj[static_cast<size_t>(cursor[static_cast<size_t>(i)]++)] = w;
-        adj[static_cast<size_t>(cursor[static_cast<size_t>(w)]++)] = i;
-      }
-  }
+  const PointRows reverse = reverse_only_edges(rows, n);
 
   // Prim's algorithm per component from its lowest index. The next point is the one of least
   // (weight, point) over the edges from the tree, reached from its parent of least (weight,
@@ -158,24 +170,27 @@ std::vector<unsigned char> orient_normals(const VertexMatrix& points, const Poin
   // its key lowered in place (an indexed heap: a heap of edges held 16 per point at 1.4 million
   // points and made this step 10x dearer than the neighbour search).
   PrimFrontier frontier(n);
-  std::vector<unsigned char> done(static_cast<size_t>(n), 0);
   std::vector<int> members;
   int count = 0;
   for (int seed = 0; seed < n; ++seed) {
-    if (done[static_cast<size_t>(seed)]) continue;
+    if (frontier.done(seed)) continue;
     ++count;
     members.clear();
     frontier.offer(seed, 0.0, seed);
     while (!frontier.empty()) {
       const auto [v, parent] = frontier.pop();
-      done[static_cast<size_t>(v)] = 1;
       members.push_back(v);
       if (normals.row(v).dot(normals.row(parent)) < 0.0) normals.row(v) *= -1.0;
-      for (auto e = off[static_cast<size_t>(v)]; e < off[static_cast<size_t>(v) + 1]; ++e) {
-        const int w = adj[static_cast<size_t>(e)];
-        if (done[static_cast<size_t>(w)]) continue;
-        frontier.offer(w, 1.0 - std::abs(normals.row(v).dot(normals.row(w))), v);
-      }
+      const auto offer_edges = [&](const PointRows& edges) {
+        for (auto e = edges.offsets[static_cast<size_t>(v)];
+             e < edges.offsets[static_cast<size_t>(v) + 1]; ++e) {
+          const int w = edges.neighbours[static_cast<size_t>(e)];
+          if (frontier.done(w)) continue;
+          frontier.offer(w, 1.0 - std::abs(normals.row(v).dot(normals.row(w))), v);
+        }
+      };
+      offer_edges(rows);
+      offer_edges(reverse);
     }
     // The global rule of the component (point_normals.h).
     Vec3 centroid = Vec3::Zero(), sum_n = Vec3::Zero();
