@@ -19,82 +19,86 @@ namespace curvbench {
 
 namespace {
 
-// Prim's frontier: the points not yet in the tree that an edge from it reaches, each with its
-// key, the least (weight, parent) offered, in a 4-ary min-heap by (weight, point). A point's
-// state, key and place in the heap sit together (one cache line per offer), and the heap holds
-// each entry's weight beside its point so that sifting reads the heap alone.
+// Prim's frontier: the points not yet in the tree that an edge from it reaches, each once with
+// its key, the least (weight, parent) offered, in a 4-ary min-heap by (weight, point). The heap's
+// entries carry their keys, so that a point's own record is only its place in the heap (4 bytes
+// a point, and the sifts read the small heap alone); the least of four children is picked
+// without branches, and a pop sinks the hole to a leaf before the last entry rises into it.
 class PrimFrontier {
  public:
-  explicit PrimFrontier(int n) : nodes_(static_cast<size_t>(n)) {}
+  explicit PrimFrontier(int n) : slot_(static_cast<size_t>(n), kFree) {}
   bool empty() const { return heap_.empty(); }
-  bool done(int v) const { return nodes_[static_cast<size_t>(v)].slot == kDone; }
+  bool done(int v) const { return slot_[static_cast<size_t>(v)] == kDone; }
   /// The edge parent -> v of weight w, v not in the tree: v's key becomes (w, parent) if that
   /// is less.
   void offer(int v, double w, int parent) {
-    Node& node = nodes_[static_cast<size_t>(v)];
-    if (node.slot >= 0 && !(w < node.weight || (w == node.weight && parent < node.parent))) return;
-    node.weight = w;
-    node.parent = parent;
-    if (node.slot < 0) {
-      node.slot = static_cast<int>(heap_.size());
-      heap_.push_back({w, v});
+    const int s = slot_[static_cast<size_t>(v)];
+    if (s < 0) {
+      heap_.push_back({w, v, parent});
+      sift_up(static_cast<int>(heap_.size()) - 1, {w, v, parent});
+      return;
     }
-    sift_up(node.slot, {w, v});
+    const Entry& key = heap_[static_cast<size_t>(s)];
+    if (w < key.weight || (w == key.weight && parent < key.parent)) sift_up(s, {w, v, parent});
   }
   /// Removes the least point and marks it done; returns it and its parent.
   std::pair<int, int> pop() {
-    const int v = heap_.front().point;
-    Node& node = nodes_[static_cast<size_t>(v)];
-    node.slot = kDone;
+    const Entry top = heap_.front();
+    slot_[static_cast<size_t>(top.point)] = kDone;
     const Entry last = heap_.back();
     heap_.pop_back();
-    if (!heap_.empty()) sift_down(0, last);
-    return {v, node.parent};
+    if (!heap_.empty()) sift_down(last);
+    return {top.point, top.parent};
   }
 
  private:
   static constexpr int kFree = -1, kDone = -2;  // slot of a point never reached / in the tree
   static constexpr int kArity = 4;
-  struct Node {
-    double weight = 0.0;
-    int parent = 0;
-    int slot = kFree;  // its place in heap_ while there
-  };
   struct Entry {
     double weight;
     int point;
+    int parent;
   };
-  static bool less(const Entry& a, const Entry& b) {
-    return a.weight < b.weight || (a.weight == b.weight && a.point < b.point);
+  static bool less(const Entry& a, const Entry& b) {  // by (weight, point), without branches
+    return static_cast<bool>(
+        static_cast<int>(a.weight < b.weight) |
+        (static_cast<int>(a.weight == b.weight) & static_cast<int>(a.point < b.point)));
   }
+  const Entry& at(int s) const { return heap_[static_cast<size_t>(s)]; }
   void place(int s, const Entry& e) {
     heap_[static_cast<size_t>(s)] = e;
-    nodes_[static_cast<size_t>(e.point)].slot = s;
+    slot_[static_cast<size_t>(e.point)] = s;
   }
   void sift_up(int s, const Entry& e) {
     while (s > 0) {
       const int up = (s - 1) / kArity;
-      if (!less(e, heap_[static_cast<size_t>(up)])) break;
-      place(s, heap_[static_cast<size_t>(up)]);
+      if (!less(e, at(up))) break;
+      place(s, at(up));
       s = up;
     }
     place(s, e);
   }
-  void sift_down(int s, const Entry& e) {
+  // The root's hole down to a leaf along the least children, then e up from there.
+  void sift_down(const Entry& e) {
     const int size = static_cast<int>(heap_.size());
+    int s = 0;
     for (;;) {
       const int first = kArity * s + 1;
       if (first >= size) break;
       int least = first;
-      for (int c = first + 1; c < std::min(first + kArity, size); ++c)
-        if (less(heap_[static_cast<size_t>(c)], heap_[static_cast<size_t>(least)])) least = c;
-      if (!less(heap_[static_cast<size_t>(least)], e)) break;
-      place(s, heap_[static_cast<size_t>(least)]);
+      if (first + kArity <= size) {
+        const int a = first + static_cast<int>(less(at(first + 1), at(first)));
+        const int b = first + 2 + static_cast<int>(less(at(first + 3), at(first + 2)));
+        least = less(at(b), at(a)) ? b : a;
+      } else {
+        for (int c = first + 1; c < size; ++c) least = less(at(c), at(least)) ? c : least;
+      }
+      place(s, at(least));
       s = least;
     }
-    place(s, e);
+    sift_up(s, e);
   }
-  std::vector<Node> nodes_;
+  std::vector<int> slot_;  // a point's place in heap_, or kFree, kDone
   std::vector<Entry> heap_;
 };
 
@@ -102,10 +106,13 @@ class PrimFrontier {
 // u -> v whose reverse is not in v's row, grouped by v (a point's row edges and these are its
 // edges in the symmetrised graph; a mutual pair is held once each way, as in the rows).
 PointRows reverse_only_edges(const PointRows& rows, int n) {
-  const auto row_has = [&](int v, int u) {
-    const auto b = rows.neighbours.begin() + rows.offsets[static_cast<size_t>(v)];
-    const auto e = rows.neighbours.begin() + rows.offsets[static_cast<size_t>(v) + 1];
-    return std::find(b, e, u) != e;
+  const auto row_has = [&](int v, int u) {  // a whole-row scan without branches
+    const int* row = rows.neighbours.data() + rows.offsets[static_cast<size_t>(v)];
+    const auto size =
+        rows.offsets[static_cast<size_t>(v) + 1] - rows.offsets[static_cast<size_t>(v)];
+    int found = 0;
+    for (std::int64_t j = 0; j < size; ++j) found |= static_cast<int>(row[j] == u);
+    return found != 0;
   };
   std::vector<std::pair<int, int>> missing;  // (v, u): u -> v in the rows, v -> u not
   for (int u = 0; u < n; ++u)
