@@ -114,13 +114,24 @@ PointRows reverse_only_edges(const PointRows& rows, int n) {
     for (std::int64_t j = 0; j < size; ++j) found |= static_cast<int>(row[j] == u);
     return found != 0;
   };
+  // The edges in the rows' order, each looking up its target's row: far apart in memory when
+  // the points' order is not spatial (random samples: 1.7x dearer without), so the target row
+  // of the edge kAhead on is prefetched, and the offset of the one 2 kAhead on.
+  constexpr std::int64_t kAhead = 16;
+  const std::int64_t edges = rows.offsets[static_cast<size_t>(n)];
   std::vector<std::pair<int, int>> missing;  // (v, u): u -> v in the rows, v -> u not
-  for (int u = 0; u < n; ++u)
-    for (auto j = rows.offsets[static_cast<size_t>(u)];
-         j < rows.offsets[static_cast<size_t>(u) + 1]; ++j) {
-      const int v = rows.neighbours[static_cast<size_t>(j)];
-      if (!row_has(v, u)) missing.emplace_back(v, u);
-    }
+  int source = 0;
+  for (std::int64_t j = 0; j < edges; ++j) {
+    while (rows.offsets[static_cast<size_t>(source) + 1] <= j) ++source;
+    if (j + 2 * kAhead < edges)
+      __builtin_prefetch(
+          &rows.offsets[static_cast<size_t>(rows.neighbours[static_cast<size_t>(j + 2 * kAhead)])]);
+    if (j + kAhead < edges)
+      __builtin_prefetch(&rows.neighbours[static_cast<size_t>(
+          rows.offsets[static_cast<size_t>(rows.neighbours[static_cast<size_t>(j + kAhead)])])]);
+    const int v = rows.neighbours[static_cast<size_t>(j)];
+    if (!row_has(v, source)) missing.emplace_back(v, source);
+  }
   PointRows reverse;
   reverse.offsets.assign(static_cast<size_t>(n) + 1, 0);
   for (const auto& [v, u] : missing) ++reverse.offsets[static_cast<size_t>(v) + 1];
