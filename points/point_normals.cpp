@@ -151,26 +151,49 @@ VertexMatrix pca_normals(const VertexMatrix& points, const PointRows& rows, int 
   VertexMatrix normals(n, 3);
   degenerate.assign(static_cast<size_t>(n), 0);
   if (threads <= 0) threads = 1;
-#pragma omp parallel for num_threads(threads) schedule(static)
-  for (int i = 0; i < n; ++i) {
-    const auto b = rows.offsets[static_cast<size_t>(i)];
-    const auto e = rows.offsets[static_cast<size_t>(i) + 1];
-    const Vec3 p0 = points.row(i).transpose();
-    Vec3 mean = Vec3::Zero();
-    for (auto j = b; j < e; ++j)
-      mean += points.row(rows.neighbours[static_cast<size_t>(j)]).transpose() - p0;
-    mean /= static_cast<double>(e - b + 1);  // the centre is the first point (offset 0)
-    Mat3 cov = mean * mean.transpose();
-    for (auto j = b; j < e; ++j) {
-      const Vec3 d = points.row(rows.neighbours[static_cast<size_t>(j)]).transpose() - p0 - mean;
-      cov += d * d.transpose();
-    }
-    const Eigen::SelfAdjointEigenSolver<Mat3> eig(cov);
-    const Vec3 lambda = eig.eigenvalues();  // increasing
-    normals.row(i) = eig.eigenvectors().col(0).transpose();
-    if (e - b < 2 || !(lambda(1) > 1e-12 * lambda(2)) || !normals.row(i).allFinite()) {
-      degenerate[static_cast<size_t>(i)] = 1;
-      if (!normals.row(i).allFinite()) normals.row(i) = Vec3::UnitZ().transpose();
+#pragma omp parallel num_threads(threads)
+  {
+    std::vector<Vec3> offsets;  // the row's points less the centre, gathered once
+#pragma omp for schedule(static)
+    for (int i = 0; i < n; ++i) {
+      const auto b = rows.offsets[static_cast<size_t>(i)];
+      const auto e = rows.offsets[static_cast<size_t>(i) + 1];
+      const double x0 = points(i, 0), y0 = points(i, 1), z0 = points(i, 2);
+      offsets.resize(static_cast<size_t>(e - b));
+      double mx = 0.0, my = 0.0, mz = 0.0;
+      for (auto j = b; j < e; ++j) {
+        const int v = rows.neighbours[static_cast<size_t>(j)];
+        const Vec3 d(points(v, 0) - x0, points(v, 1) - y0, points(v, 2) - z0);
+        offsets[static_cast<size_t>(j - b)] = d;
+        mx += d.x();
+        my += d.y();
+        mz += d.z();
+      }
+      const double count = static_cast<double>(e - b + 1);  // the centre is the first point
+      mx /= count;
+      my /= count;
+      mz /= count;
+      // The covariance about the mean (the centre's offset 0 gives the mean's outer product),
+      // its lower triangle summed in row order.
+      double xx = mx * mx, yx = my * mx, zx = mz * mx, yy = my * my, zy = mz * my, zz = mz * mz;
+      for (const Vec3& o : offsets) {
+        const double dx = o.x() - mx, dy = o.y() - my, dz = o.z() - mz;
+        xx += dx * dx;
+        yx += dy * dx;
+        zx += dz * dx;
+        yy += dy * dy;
+        zy += dz * dy;
+        zz += dz * dz;
+      }
+      Mat3 cov;
+      cov << xx, yx, zx, yx, yy, zy, zx, zy, zz;
+      const Eigen::SelfAdjointEigenSolver<Mat3> eig(cov);
+      const Vec3 lambda = eig.eigenvalues();  // increasing
+      normals.row(i) = eig.eigenvectors().col(0).transpose();
+      if (e - b < 2 || !(lambda(1) > 1e-12 * lambda(2)) || !normals.row(i).allFinite()) {
+        degenerate[static_cast<size_t>(i)] = 1;
+        if (!normals.row(i).allFinite()) normals.row(i) = Vec3::UnitZ().transpose();
+      }
     }
   }
   return normals;
