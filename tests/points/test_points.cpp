@@ -1,8 +1,14 @@
 // Neighbour search and oriented normals of point sets (points/).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <functional>
+#include <queue>
 #include <random>
+#include <tuple>
 #include <vector>
 
 #include "points/point_normals.h"
@@ -29,6 +35,128 @@ VertexMatrix sphere(int n, double a, const Vec3& c) {
         (c + a * Vec3(rho * std::cos(golden * i), rho * std::sin(golden * i), z)).transpose();
   }
   return V;
+}
+
+// The orientation's tree by lazy Prim, written plainly: every edge from the tree to a point not
+// in it goes into a priority queue as (weight, point, parent), the least popped first; the
+// order the indexed heap of orient_normals promises. Returns the normals with each component's
+// signs propagated (before its global sign) and the component of each point.
+struct PrimOracle {
+  VertexMatrix normals;
+  std::vector<int> component;
+  int components = 0;
+};
+
+PrimOracle lazy_prim(const PointRows& rows, VertexMatrix normals) {
+  const int n = static_cast<int>(normals.rows());
+  std::vector<std::vector<int>> graph(static_cast<size_t>(n));
+  for (int u = 0; u < n; ++u)
+    for (auto j = rows.offsets[static_cast<size_t>(u)];
+         j < rows.offsets[static_cast<size_t>(u) + 1]; ++j) {
+      const int v = rows.neighbours[static_cast<size_t>(j)];
+      graph[static_cast<size_t>(u)].push_back(v);
+      graph[static_cast<size_t>(v)].push_back(u);
+    }
+  using Edge = std::tuple<double, int, int>;  // weight, point, parent
+  std::priority_queue<Edge, std::vector<Edge>, std::greater<Edge>> queue;
+  PrimOracle out{std::move(normals), std::vector<int>(static_cast<size_t>(n), -1), 0};
+  VertexMatrix& N = out.normals;
+  for (int seed = 0; seed < n; ++seed) {
+    if (out.component[static_cast<size_t>(seed)] >= 0) continue;
+    queue.emplace(0.0, seed, seed);
+    while (!queue.empty()) {
+      const auto [weight, v, parent] = queue.top();
+      queue.pop();
+      if (out.component[static_cast<size_t>(v)] >= 0) continue;
+      out.component[static_cast<size_t>(v)] = out.components;
+      if (N.row(v).dot(N.row(parent)) < 0.0) N.row(v) *= -1.0;
+      for (const int w : graph[static_cast<size_t>(v)])
+        if (out.component[static_cast<size_t>(w)] < 0)
+          queue.emplace(1.0 - std::abs(N.row(v).dot(N.row(w))), w, v);
+    }
+    ++out.components;
+  }
+  return out;
+}
+
+// orient_normals against the oracle: the same components, and in each the same normals bit for
+// bit up to the component's one global sign; the degenerate flags kept, and a component's
+// points all decided or all not. Returns the number of exact ties among the edge weights (so a
+// case can show it exercises them).
+int expect_orientation_matches_oracle(const VertexMatrix& points, const PointRows& rows,
+                                      const VertexMatrix& unoriented,
+                                      const std::vector<unsigned char>& degenerate) {
+  VertexMatrix normals = unoriented;
+  int components = -1;
+  const std::vector<unsigned char> undetermined =
+      orient_normals(points, rows, normals, degenerate, &components);
+  const PrimOracle oracle = lazy_prim(rows, unoriented);
+  EXPECT_EQ(components, oracle.components);
+  std::vector<double> sign(static_cast<size_t>(oracle.components), 0.0);
+  std::vector<int> decided(static_cast<size_t>(oracle.components), -1);
+  for (int i = 0; i < points.rows(); ++i) {
+    const auto c = static_cast<size_t>(oracle.component[static_cast<size_t>(i)]);
+    if (sign[c] == 0.0) sign[c] = normals.row(i).dot(oracle.normals.row(i)) > 0.0 ? 1.0 : -1.0;
+    for (int d = 0; d < 3; ++d)
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(normals(i, d)),
+                std::bit_cast<std::uint64_t>(sign[c] * oracle.normals(i, d)))
+          << "point " << i << " axis " << d;
+    if (degenerate[static_cast<size_t>(i)]) {
+      EXPECT_EQ(undetermined[static_cast<size_t>(i)], 1) << i;
+    } else {
+      if (decided[c] < 0) decided[c] = undetermined[static_cast<size_t>(i)];
+      EXPECT_EQ(undetermined[static_cast<size_t>(i)], decided[c]) << i;
+    }
+  }
+  int ties = 0;
+  std::vector<double> weights;
+  for (int u = 0; u < points.rows(); ++u)
+    for (auto j = rows.offsets[static_cast<size_t>(u)];
+         j < rows.offsets[static_cast<size_t>(u) + 1]; ++j)
+      weights.push_back(1.0 - std::abs(unoriented.row(u).dot(
+                                  unoriented.row(rows.neighbours[static_cast<size_t>(j)]))));
+  std::sort(weights.begin(), weights.end());
+  for (size_t k = 1; k < weights.size(); ++k) ties += weights[k] == weights[k - 1];
+  return ties;
+}
+
+// Area-uniform points of the torus R = 1, r = 0.4 (rejection on the area element).
+VertexMatrix torus_points(int n, std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> angle(0.0, 2.0 * M_PI), unit(0.0, 1.0);
+  VertexMatrix V(n, 3);
+  for (int i = 0; i < n;) {
+    const double u = angle(rng), v = angle(rng);
+    if (unit(rng) * 1.4 > 1.0 + 0.4 * std::cos(v)) continue;
+    const double rho = 1.0 + 0.4 * std::cos(v);
+    V.row(i++) << rho * std::cos(u), rho * std::sin(u), 0.4 * std::sin(v);
+  }
+  return V;
+}
+
+// Unit normals drawn (seeded) from the 26 directions of {-1, 0, 1}^3: their weights take a few
+// values, so most edges tie, and unlike a surface's normals each sign hangs on the tree's path.
+VertexMatrix lattice_normals(int n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> digit(-1, 1);
+  VertexMatrix N(n, 3);
+  for (int i = 0; i < n; ++i) {
+    Vec3 d = Vec3::Zero();
+    while (d.isZero()) d = Vec3(digit(rng), digit(rng), digit(rng));
+    N.row(i) = d.normalized().transpose();
+  }
+  return N;
+}
+
+// The 16-NN rows of V with its PCA normals, then with lattice normals: orient_normals against
+// the oracle. Returns the exact ties among the lattice normals' weights.
+int expect_orientation_of_points_matches_oracle(const VertexMatrix& V) {
+  const PointRows rows = knn_rows(PointSearch(V), kNormalNeighbours, 2);
+  std::vector<unsigned char> degenerate;
+  const VertexMatrix normals = pca_normals(V, rows, 2, degenerate);
+  expect_orientation_matches_oracle(V, rows, normals, degenerate);
+  return expect_orientation_matches_oracle(V, rows, lattice_normals(static_cast<int>(V.rows()), 5),
+                                           degenerate);
 }
 
 TEST(PointSearch, KnnIsSortedByDistanceThenIndexAndSkipsDuplicates) {
@@ -111,20 +239,6 @@ double check_rows_against_tree(const VertexMatrix& V, int k, const char* what) {
   return static_cast<double>(by_grid) / static_cast<double>(V.rows());
 }
 
-// Area-uniform points of the torus R = 1, r = 0.4 (rejection on the area element).
-VertexMatrix torus_points(int n, std::uint32_t seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> angle(0.0, 2.0 * M_PI), unit(0.0, 1.0);
-  VertexMatrix V(n, 3);
-  for (int i = 0; i < n;) {
-    const double u = angle(rng), v = angle(rng);
-    if (unit(rng) * 1.4 > 1.0 + 0.4 * std::cos(v)) continue;
-    const double rho = 1.0 + 0.4 * std::cos(v);
-    V.row(i++) << rho * std::cos(u), rho * std::sin(u), 0.4 * std::sin(v);
-  }
-  return V;
-}
-
 TEST(PointSearch, GridRowsAreTheTreesRowsOnEvenUnevenTiedAndFarFlungSets) {
   // Evenly sampled: the grid settles nearly every row.
   const VertexMatrix torus = torus_points(20000, 7);
@@ -195,6 +309,61 @@ TEST(PointNormals, AVerticalSheetAndACollinearSetAreUndetermined) {
   for (int i = 0; i < 20; ++i) line.row(i) << i, 2 * i, 0.5 * i;
   pn = oriented_pca_normals(PointSearch(line), 1);
   for (const unsigned char u : pn.undetermined) EXPECT_EQ(u, 1);
+}
+
+TEST(PointNormals, OrientationIsPrimsTreeOnRandomTorusPoints) {
+  expect_orientation_of_points_matches_oracle(torus_points(3000, 7));
+}
+
+TEST(PointNormals, OrientationIsPrimsTreeOnStructuredGridsOfExactTies) {
+  // A flat grid (its PCA normals all the plane's) and a structured torus grid (ties by its
+  // symmetry); with lattice normals most weights tie, so the tree is the ties' order (least
+  // point, then least parent).
+  EXPECT_GT(expect_orientation_of_points_matches_oracle(grid(40, 0.05, 0.3)), 20000);
+  const int nu = 60, nv = 24;
+  VertexMatrix T(nu * nv, 3);
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      const double u = 2.0 * M_PI * i / nu, v = 2.0 * M_PI * j / nv, rho = 1.0 + 0.4 * std::cos(v);
+      T.row(j * nu + i) << rho * std::cos(u), rho * std::sin(u), 0.4 * std::sin(v);
+    }
+  EXPECT_GT(expect_orientation_of_points_matches_oracle(T), 20000);
+}
+
+TEST(PointNormals, OrientationIsPrimsTreeOnTwoBlobsDuplicatesAndATinySet) {
+  const VertexMatrix a = torus_points(1200, 3), b = sphere(700, 0.5, Vec3(10, 0, 0));
+  VertexMatrix blobs(a.rows() + b.rows(), 3);
+  blobs << b, a;
+  expect_orientation_of_points_matches_oracle(blobs);
+  VertexMatrix copies = torus_points(1500, 5);
+  copies.conservativeResize(2000, 3);
+  for (int i = 1500; i < 2000; ++i) copies.row(i) = copies.row((i * 7) % 1500);
+  expect_orientation_of_points_matches_oracle(copies);
+  expect_orientation_of_points_matches_oracle(torus_points(9, 11));  // rows of 8 < k
+}
+
+TEST(PointNormals, OrientationIsPrimsTreeOnRowsThatAreNotNearestNeighbours) {
+  // Rows of 0 to 4 random others (few mutual edges, several components), random unit normals
+  // and lattice ones.
+  const int n = 3000;
+  std::mt19937 rng(17);
+  std::uniform_int_distribution<int> other(0, n - 1), length(0, 4);
+  std::normal_distribution<double> gauss;
+  PointRows rows;
+  for (int i = 0; i < n; ++i) {
+    const int m = length(rng);
+    for (int j = 0; j < m; ++j) rows.neighbours.push_back(other(rng));
+    rows.offsets.push_back(static_cast<std::int64_t>(rows.neighbours.size()));
+  }
+  VertexMatrix points(n, 3), normals(n, 3);
+  for (int i = 0; i < n; ++i) {
+    const Vec3 p(gauss(rng), gauss(rng), gauss(rng)), q(gauss(rng), gauss(rng), gauss(rng));
+    points.row(i) = p.transpose();
+    normals.row(i) = q.normalized().transpose();
+  }
+  const std::vector<unsigned char> none(static_cast<size_t>(n), 0);
+  expect_orientation_matches_oracle(points, rows, normals, none);
+  expect_orientation_matches_oracle(points, rows, lattice_normals(n, 9), none);
 }
 
 }  // namespace
