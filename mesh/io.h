@@ -4,9 +4,10 @@
 // extension (case-insensitive), one reader per format (mesh/read_off.cpp, read_obj.cpp,
 // read_ply.cpp, read_xyz.cpp), each a single validating pass that builds the polygon soup. A file
 // without faces (a point file, OFF with 0 faces, PLY without a face element) gives a Mesh
-// without faces: a point set (docs/point_sets.md). The normals a file gives with its vertices
-// (.pwn, a 6-column .xyz/.pts, PLY float/double nx ny nz, NOFF) are kept, as read, as
-// Mesh::given_normals(). Polygons with more than three vertices are fan-triangulated;
+// without faces: a point set (docs/point_sets.md). The normals a point set's file gives with its
+// vertices (.pwn, a 6-column .xyz/.pts, PLY float/double nx ny nz, NOFF) are kept, as read, as
+// Mesh::given_normals(); a file with faces keeps none (a mesh's vertex normals come from its
+// faces). Polygons with more than three vertices are fan-triangulated;
 // polygons with fewer than three vertices or a repeated vertex index are dropped and counted.
 // Writing: OFF (full double precision) and PLY (binary little-endian) with optional per-vertex
 // properties (normal, curvatures, directions, ...) for MeshLab / ParaView.

@@ -269,7 +269,8 @@ struct PlyLayout {
   const PlyElement* vertex = nullptr;
   const PlyElement* face = nullptr;
   const PlyProperty* xyz[3] = {nullptr, nullptr, nullptr};
-  /// The vertex element's float or double nx, ny, nz (all three, else none): normals kept.
+  /// The vertex element's float or double nx, ny, nz (all three, else none) of a file without
+  /// faces: normals kept.
   const PlyProperty* normal[3] = {nullptr, nullptr, nullptr};
   bool has_normals() const { return normal[0] != nullptr; }
   const PlyProperty* indices = nullptr;  ///< the face element's index list
@@ -317,6 +318,9 @@ PlyLayout check_ply_layout(const std::string& path, const PlyHeader& h,
   }
   if (face != nullptr && indices == nullptr)
     fail(path, "PLY face element has no 'vertex_indices' list of int or uint");
+  // A mesh's vertex normals come from its faces (the file's serve point sets only, option
+  // point-normals=file), so with faces nx ny nz are read past, not held (24 bytes a vertex).
+  if (l.face_count() > 0) l.normal[0] = l.normal[1] = l.normal[2] = nullptr;
   // ... and, for a halfedge element, uint source/target (CGAL crashes on other types).
   for (const PlyElement& e : h.elements)
     if (e.name == "halfedge")

@@ -28,7 +28,7 @@ bool has_repeated_index(const std::int32_t* p, std::size_t k, std::vector<std::i
 /// Builds the Mesh from a reader's soup: drops polygons with fewer than 3 vertices or a repeated
 /// index; refuses non-finite coordinates or, with skip_invalid, drops those vertices and the
 /// polygons using them and renumbers; fan-triangulates (v0, vi, vi+1) the rest; hands the
-/// file's normals (of the kept vertices) to the Mesh (Mesh::given_normals()).
+/// file's normals (of the kept vertices) of a point set to the Mesh (Mesh::given_normals()).
 /// Takes the soup by value and frees it before the Mesh builds its adjacency (peak memory). The
 /// usual file (triangles, every vertex finite) becomes the Mesh without a copy.
 Mesh soup_to_mesh(const std::string& path, const std::string& format, Soup soup,
@@ -135,8 +135,10 @@ Mesh soup_to_mesh(const std::string& path, const std::string& format, Soup soup,
     }
   }
   soup.xyz.release();
-  // The file's normals, of the kept vertices.
+  // The file's normals, of the kept vertices, of a point set only (a mesh's come from its faces;
+  // point-normals=file applies to point sets).
   VertexMatrix N;
+  if (num_polygons > 0) soup.normals.release();
   if (!soup.normals.empty()) {
     if (skipped.empty()) {
       N = soup.normals.take();

@@ -523,6 +523,18 @@ TEST_F(MeshIo, PointFilesKeepTheirNormals) {
     SCOPED_TRACE(name);
     EXPECT_FALSE(read_mesh(file(name, text)).has_given_normals());
   }
+  // With faces the file's normals are not kept: a mesh's come from its faces.
+  for (const auto& [name, text] : std::vector<std::pair<std::string, std::string>>{
+           {"faces.ply", "ply\nformat ascii 1.0\nelement vertex 3\n" + ply_head +
+                             "element face 1\nproperty list uchar int vertex_indices\n"
+                             "end_header\n" +
+                             rows + "3 0 1 2\n"},
+           {"faces.off", "NOFF\n3 1 0\n" + rows + "3 0 1 2\n"}}) {
+    SCOPED_TRACE(name);
+    const Mesh m = read_mesh(file(name, text));
+    EXPECT_EQ(m.num_faces(), 1);
+    EXPECT_FALSE(m.has_given_normals());
+  }
   const Mesh skipped = read_mesh(file("nan_n.pwn", "0 0 0 0 0 1\n1 nan 0 0 1 0\n2 0 1 1 0 0\n"),
                                  nullptr, {.skip_invalid = true});
   ASSERT_EQ(skipped.given_normals().rows(), 2);
