@@ -230,8 +230,8 @@ int run_estimate(const EstimateOptions& o) {
                "curvbench estimate: %s on %s: %d vertices (%s) in %.3f s (%.2f us/vertex) -> %s\n",
                est->label().c_str(), o.mesh.c_str(), n, counts.c_str(), seconds,
                n > 0 ? 1e6 * seconds / n : 0.0, o.output.c_str());
-  // Why: failed, excluded and partial vertices by the mesh's defect there ("none": a singular fit
-  // or, for excluded, the method's own rule).
+  // Why: failed, excluded and partial vertices by the mesh's defect there ("none": the method's
+  // own failure, Estimator::failure_without_defect, or for excluded its own rule).
   for (size_t k = 0; k < std::size(kExplained); ++k) {
     std::string why;
     for (int d = 0; d < kVertexDefectCount; ++d)
@@ -241,7 +241,7 @@ int run_estimate(const EstimateOptions& o) {
                 : kExplained[k] == VertexStatus::excluded
                     ? "no mesh defect (the method's own rule, e.g. a region reaching the "
                       "boundary)"
-                    : "no mesh defect (a singular fit)") +
+                    : "no mesh defect (" + est->failure_without_defect() + ")") +
                " " + std::to_string(c);
     if (!why.empty())
       std::fprintf(stderr, "curvbench estimate: %s vertices by cause: %s\n",

@@ -125,6 +125,9 @@ class Estimator {
   virtual bool scores_interior_only() const { return false; }
   /// The quantities the method computes (default: all).
   virtual ComputedQuantities computes() const { return {}; }
+  /// Why the method fails a vertex where the mesh shows no defect, for `estimate`'s count of
+  /// failed vertices by cause (default: a fit's system was singular).
+  virtual std::string failure_without_defect() const { return "a singular fit"; }
 
   /// Ring used when options().rings == 0.
   virtual double default_ring() const;

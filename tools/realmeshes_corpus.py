@@ -36,10 +36,12 @@ CLEAN_ZERO = ("boundary edges", "non-manifold edges", "non-manifold vertices", "
 CLEAN_MIN_VERTICES = 50
 STATUSES = ("ok", "degree_reduced", "failed", "excluded", "disk_cut", "sign_undetermined",
             "partial", "reprojected", "normal_fallback")
-# Causes in the order of `curvbench info`'s "hard for estimators" line, then a singular fit.
+# Causes in the order of `curvbench info`'s "hard for estimators" line, then the methods' own
+# failures (Estimator::failure_without_defect: a fit's, ICC's).
 CAUSE_ORDER = ("isolated vertex", "component of fewer than 7 vertices",
                "non-manifold neighbourhood", "zero-area faces only", "boundary vertex",
-               "no mesh defect (a singular fit)")
+               "no mesh defect (a singular fit)",
+               "no mesh defect (a corrected area measure that is not positive)")
 NOT_REPORTED = "cause not reported"
 
 SUMMARY_RE = re.compile(r"^curvbench estimate: (\S+) on .*: (\d+) vertices \(([^()]*)\)")

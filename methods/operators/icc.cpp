@@ -132,6 +132,10 @@ class IccEstimator final : public OperatorEstimator {
 
   std::string name() const override { return "icc"; }
   std::string display_name() const override { return "ICC"; }
+  // icc_curvature divides by the corrected area mu0 of the region.
+  std::string failure_without_defect() const override {
+    return "a corrected area measure that is not positive";
+  }
 
   std::unique_ptr<Workspace> make_workspace(const Mesh& mesh) const override {
     if (options_.ball_factor > 0.0) return std::make_unique<FaceBallWorkspace>(mesh);

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 
 #include "mesh/io.h"
@@ -182,6 +183,29 @@ TEST(Cli, InfoListsAndEstimateCountsTheCausesOfFailedVertices) {
   EXPECT_NE(est.output.find("partial vertices by cause: component of fewer than 7 vertices 6"),
             std::string::npos)
       << est.output;
+}
+
+TEST(Cli, EstimateNamesTheMethodsOwnFailureWhereTheMeshShowsNoDefect) {
+  // A hexagonal bipyramid (8 vertices, closed, manifold) whose top apex is folded down through
+  // the equator to z = -0.6: the corrected area of the apex's 1-ring, with the interpolated
+  // vertex normals, is negative, so ICC (which divides by it) fails there.
+  const auto dir = testing::fresh_dir("own_failure");
+  const auto path = dir / "folded.off";
+  std::ofstream out(path);
+  out << "OFF\n8 12 0\n";
+  for (int i = 0; i < 6; ++i)
+    out << std::cos(M_PI * i / 3) << " " << std::sin(M_PI * i / 3) << " 0\n";
+  out << "0 0 -0.6\n0 0 -1\n";
+  for (int i = 0; i < 6; ++i)
+    out << "3 " << i << " " << (i + 1) % 6 << " 6\n3 " << (i + 1) % 6 << " " << i << " 7\n";
+  out.close();
+  const auto icc = testing::run_cli("estimate " + path.string() + " --method icc --output " +
+                                    (dir / "icc.csv").string());
+  ASSERT_EQ(icc.exit_code, 0) << icc.output;
+  EXPECT_NE(icc.output.find("failed vertices by cause: no mesh defect (a corrected area measure "
+                            "that is not positive) 1"),
+            std::string::npos)
+      << icc.output;
 }
 
 }  // namespace
