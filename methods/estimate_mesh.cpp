@@ -228,8 +228,9 @@ MeshEstimation::MeshEstimation(const Mesh& mesh, const Estimator& estimator,
                      ".xyz file of 6 numbers per line, PLY with nx ny nz, or NOFF has them)");
   if (spec.is_points() || mesh.num_faces() == 0) {
     check_point_method(estimator, mesh);
-    // One tree serves the normals and the table; of k-NN rows, one search of the larger k
-    // serves both (each takes the first k of every row: the same rows as its own search).
+    // One search (its grid, or its tree built on first use) serves the normals and the table;
+    // of k-NN rows, one search of the larger k serves both (each takes the first k of every
+    // row: the same rows as its own search).
     const PointSearch search(mesh.vertices());
     const int table_k = spec.points == NeighbourhoodSpec::Points::knn && spec.size >= 1.0 &&
                                 spec.size < 1e9 && spec.size == std::floor(spec.size)
