@@ -66,6 +66,19 @@ MeshAdvice mesh_advice(const Advice& a) {
   r.regret_median = curvature.validated.median;
   r.regret_worst = curvature.validated.worst;
   for (const FeatureOutOfRange& o : a.out_of_range) r.out_of_range.push_back(o.name);
+  if (!a.has_measured) return r;
+  r.measured = true;
+  const MeasuredQuantity& normal = a.measured.advice.quantities.front();
+  if (normal.chosen >= 0) {
+    const EstimatorChoice& c = a.measured.candidates[static_cast<size_t>(normal.chosen)];
+    r.normal_method = c.method;
+    r.normal_parameter = c.parameter;
+    r.normal_radius = c.radius;
+    r.normal_label = c.label;
+    r.normal_error = normal.cases[static_cast<size_t>(normal.chosen)].predicted;
+  }
+  r.regret_median = a.measured.validated.back().median;
+  r.regret_worst = a.measured.validated.back().worst;
   return r;
 }
 
@@ -201,7 +214,15 @@ MeshAdvice recommend(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
                                         ? default_recommendations()
                                         : read_recommendations_csv(options.results);
   const std::optional<AdviceTable> cases = advice_cases_beside(table.name);
-  return mesh_advice(advise(to_mesh(V, F), options.noise, table, cases ? &*cases : nullptr));
+  const Mesh mesh = to_mesh(V, F);
+  Advice a = advise(mesh, options.noise, table, cases ? &*cases : nullptr);
+  if (options.measure) {
+    if (!cases)
+      throw InputError("measure: no advice_cases.csv beside " + table.name +
+                       " (the candidates it measures; `make experiments` writes it)");
+    measure_on_mesh(a, mesh, *cases, options.threads);
+  }
+  return mesh_advice(a);
 }
 
 TestMesh generate_mesh(const TestMeshOptions& options) {

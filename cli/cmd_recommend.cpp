@@ -1,9 +1,11 @@
-// `curvbench recommend MESH [--noise SIGMA_OVER_H] [--results DIR] [--format text|csv|json]`: the
+// `curvbench recommend MESH [--noise SIGMA_OVER_H] [--results DIR] [--format text|csv|json]
+// [--measure [--threads N]]`: the
 // advice for a mesh (harness/report/recommend_table.h): its quality class from its triangle
 // angles (classify_mesh), its noise given or estimated (estimate_noise), its features, and per
 // quantity the estimator and radius learned from the swept meshes nearest in them with the
 // cross-validated range (advice_cases.csv beside the table, harness/report/advice.h; without it
-// the class table's row), and the `curvbench estimate` command line that runs them.
+// the class table's row), with --measure the advice measured on the mesh itself
+// (measure_on_mesh), and the `curvbench estimate` command line that runs them.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -27,6 +29,8 @@ struct RecommendOptions {
   std::string results;          // "": the default table
   std::string format = "text";
   bool skip_invalid = false;
+  bool measure = false;
+  int threads = 0;
 };
 
 // The program the printed command runs: "curvbench" when that name on PATH is this executable,
@@ -58,7 +62,14 @@ int run_recommend(const RecommendOptions& o) {
   MeshReadReport report;
   const Mesh mesh = read_input_mesh(o.path, o.skip_invalid, report);
   const std::optional<AdviceTable> cases = advice_cases_beside(table.name);
-  const Advice a = advise(mesh, o.noise, table, cases ? &*cases : nullptr);
+  Advice a = advise(mesh, o.noise, table, cases ? &*cases : nullptr);
+  if (o.measure) {
+    if (!cases)
+      throw InputError("--measure: no advice_cases.csv beside " + table.name +
+                       " (the candidates it measures; `make experiments` writes it)");
+    std::fprintf(stderr, "curvbench: measuring the swept cases on %s...\n", o.path.c_str());
+    measure_on_mesh(a, mesh, *cases, o.threads);
+  }
   const std::string command = a.has_choice
                                   ? estimate_command(program_name(), o.path, a.choice,
                                                      o.skip_invalid, advice_output_path(o.path))
@@ -96,6 +107,13 @@ Command add_recommend_command(CLI::App& app) {
                   "text: the advice in words and the command line (default); csv: the table's "
                   "header and row; json: the advice as one object")
       ->check(CLI::IsMember({"text", "csv", "json"}));
+  sub->add_flag("--measure", o->measure,
+                "Also measure the advice on the mesh itself: run every swept case on it and on it "
+                "perturbed by its noise, predict each case's error from the change and from its "
+                "distance to a degree-4 fit, and advise the least (docs/advice.md; slower: each "
+                "case runs 3 times); the command then runs its curvature choice");
+  sub->add_option("--threads", o->threads, "OpenMP threads of --measure (0: all cores)")
+      ->check(CLI::NonNegativeNumber);
   sub->add_flag("--skip-invalid", o->skip_invalid,
                 "Drop vertices with a NaN/Inf coordinate and the faces using them (reported) "
                 "instead of failing (the printed command passes it on)");

@@ -4,7 +4,8 @@
 # curvbench::curvbench_static), the curvbench command, the Python module and the recommendations
 # table they read (share/curvbench/recommendations.csv: harness/report/recommend_table.h looks there,
 # under the prefix of the program, not under CMAKE_INSTALL_DATADIR) with the advice cases beside it
-# (advice_cases.csv: the advice from mesh features, harness/report/advice.h).
+# (advice_cases.csv: the advice from mesh features, harness/report/advice.h; advice_measured.csv:
+# what `recommend --measure` did on the swept meshes, which it quotes).
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 set(CURVBENCH_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/curvbench)
@@ -35,6 +36,8 @@ endif()
 if(EXISTS ${PROJECT_SOURCE_DIR}/results/recommendations.csv)
   install(FILES ${PROJECT_SOURCE_DIR}/results/recommendations.csv DESTINATION share/curvbench)
 endif()
-if(EXISTS ${PROJECT_SOURCE_DIR}/results/advice_cases.csv)
-  install(FILES ${PROJECT_SOURCE_DIR}/results/advice_cases.csv DESTINATION share/curvbench)
-endif()
+foreach(_advice advice_cases.csv advice_measured.csv)
+  if(EXISTS ${PROJECT_SOURCE_DIR}/results/${_advice})
+    install(FILES ${PROJECT_SOURCE_DIR}/results/${_advice} DESTINATION share/curvbench)
+  endif()
+endforeach()

@@ -8,6 +8,9 @@ namespace curvbench {
 /// Lower-case file extension without the dot: "ply" for "dir/Mesh.PLY", "" when there is none.
 std::string lower_extension(const std::string& path);
 
+/// s with its ASCII letters in lower case ("LHF-4" -> "lhf-4").
+std::string ascii_lower(std::string s);
+
 /// x as "%g" prints it ("1.5", "2", "1e-08").
 std::string format_g(double x);
 

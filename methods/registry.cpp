@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/text.h"
 #include "methods/estimator.h"
 #include "methods/option_schema.h"
 
@@ -101,11 +102,6 @@ std::vector<Registration>& registry() {
   return table;
 }
 
-std::string lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
-
 std::string valid_names() {
   std::string s;
   for (const Registration& r : registry()) s += (s.empty() ? "" : ", ") + r.info.name;
@@ -143,7 +139,7 @@ namespace {
 // default 2 (0 for a degree-free operator). Throws make_estimator's UsageErrors.
 const Registration& resolve(const std::string& name, EstimatorOptions& options) {
   validate_options(options);  // the option table's ranges, with its messages, first
-  std::string base = lower(name);
+  std::string base = ascii_lower(name);
   const Registration* reg = find(base);
   bool attached = false;
   if (reg == nullptr) {
@@ -204,7 +200,7 @@ int estimator_degree(const std::string& name, EstimatorOptions options) {
 }
 
 void register_estimator(const MethodInfo& info, EstimatorFactory factory) {
-  if (info.name.empty() || info.name != lower(info.name) || factory == nullptr ||
+  if (info.name.empty() || info.name != ascii_lower(info.name) || factory == nullptr ||
       info.name.find_first_of(" ,=\"#") != std::string::npos)
     throw UsageError(
         "register_estimator: a method needs a lower-case name without spaces, "
@@ -259,7 +255,7 @@ namespace {
 
 // The registration of a name or of a fit's label "<name>-<degree>"; nullptr when none.
 const Registration* find_label(const std::string& label) {
-  const std::string base = lower(label);
+  const std::string base = ascii_lower(label);
   if (const Registration* r = find(base)) return r;
   const size_t dash = base.rfind('-');
   if (dash != std::string::npos && dash + 1 < base.size() &&
@@ -273,7 +269,7 @@ const Registration* find_label(const std::string& label) {
 // rings=3", "ICC-ball2"): the longest name followed by '-' or ' '; nullptr when none.
 const Registration* find_variant(const std::string& label) {
   if (const Registration* r = find_label(label.substr(0, label.find(' ')))) return r;
-  const std::string base = lower(label);
+  const std::string base = ascii_lower(label);
   const Registration* best = nullptr;
   for (const Registration& r : registry()) {
     const std::string& n = r.info.name;

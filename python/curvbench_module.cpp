@@ -210,6 +210,8 @@ py::dict advice_dict(const MeshAdvice& a) {
   d["regret_median"] = number(a.regret_median);
   d["regret_worst"] = number(a.regret_worst);
   d["out_of_range"] = a.out_of_range;
+  d["measured"] = a.measured;
+  d["normal_error"] = number(a.normal_error);
   return d;
 }
 
@@ -305,12 +307,14 @@ PyEstimate py_estimate(const py::handle& V, const py::handle& F, const std::stri
 }
 
 py::dict py_recommend(const py::handle& V, const py::handle& F, std::optional<double> noise,
-                      std::optional<std::string> results) {
+                      std::optional<std::string> results, bool measure, int threads) {
   const Eigen::MatrixXd Vm = to_vertices(V);
   const Eigen::MatrixXi Fm = to_faces(F, Vm.rows());
   RecommendOptions o;
   if (noise) o.noise = *noise;
   if (results) o.results = *results;
+  o.measure = measure;
+  o.threads = threads;
   std::optional<MeshAdvice> advice;
   {
     py::gil_scoped_release unlocked;
@@ -538,7 +542,7 @@ quantities 'normal' (absolute RMS and max), 'H', 'K', 'k1', 'k2' (relative norm 
 (over non-umbilic vertices); excluded estimates (NaN by design) are left out and counted.)");
 
   m.def("recommend", &py_recommend, py::arg("V"), py::arg("F"), py::arg("noise") = py::none(),
-        py::arg("results") = py::none(),
+        py::arg("results") = py::none(), py::arg("measure") = false, py::arg("threads") = 0,
         R"(The estimator and radius recommended for a mesh, as `curvbench recommend`.
 
 V, F: as for estimate(). noise: the mesh's noise sigma/h along the normal (None: estimated from
@@ -550,6 +554,11 @@ that level, and the fields of the choice are None), method and options (estimate
 method=d['method'], **d['options']) runs the choice), label (the sweep's case), quantity, norm and
 error (the error the sweep measured), experiment, family and level (the mesh it measured on),
 table and provenance (the file read and its first comment line).
+measure: also measure the advice on the mesh itself (as `curvbench recommend --measure`; each
+swept case runs 3 times on it, with `threads` threads): then method, options and label are the
+curvature choice measured on the mesh, error its predicted relative L2 error in H, normal_* the
+normals' measured choice with normal_error its predicted RMS error, measured True, and
+regret_median, regret_worst what the same measurement did on the swept meshes.
 Raises MeshError for a mesh it cannot classify (under 50 vertices, non-manifold) and for a
 missing, truncated or foreign table; UsageError for a negative noise.)");
 

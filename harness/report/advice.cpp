@@ -11,6 +11,7 @@
 #include "core/build_info.h"
 #include "core/errors.h"
 #include "core/text.h"
+#include "harness/model/noise_estimate.h"
 #include "mesh/io.h"
 
 namespace curvbench {
@@ -400,6 +401,122 @@ void write_cross_validation_csv(const std::string& path,
   write_file_atomic(path, out.str());
 }
 
+std::vector<MeasuredAdviceRow> measure_swept_advice(
+    const std::vector<SweptNoisyMesh>& meshes, const std::vector<AdviceCase>& cases,
+    const std::function<void(const SweptNoisyMesh&, size_t index)>& progress) {
+  std::vector<MeasuredAdviceRow> out;
+  for (size_t i = 0; i < meshes.size(); ++i) {
+    const SweptNoisyMesh& m = meshes[i];
+    if (progress) progress(m, i);
+    // The candidates: the cases the sweep ran on this mesh, with their true errors.
+    std::vector<EstimatorChoice> candidates;
+    std::map<std::pair<std::string, std::string>, double> error;  // (quantity, label)
+    for (const AdviceCase& c : cases) {
+      if (c.family != m.family || c.level != m.level || !same_level(c.sigma_over_h, m.sigma_over_h))
+        continue;
+      error[{c.quantity, c.label}] = c.error;
+      if (std::none_of(candidates.begin(), candidates.end(),
+                       [&](const EstimatorChoice& e) { return e.label == c.label; }))
+        candidates.push_back(estimator_choice(c.label));
+    }
+    if (candidates.empty()) continue;
+    const Mesh mesh = generate_mesh(m.spec).mesh;
+    MeasuredAdviceOptions o;
+    o.sigma_over_h = estimate_noise(mesh).sigma_over_h;
+    const MeasuredAdvice a = measure_advice(mesh, candidates, o);
+    for (const MeasuredQuantity& q : a.quantities)
+      for (size_t k = 0; k < q.cases.size(); ++k) {
+        const auto e = error.find({q.quantity, q.cases[k].label});
+        if (e == error.end()) continue;  // a quantity the sweep's rows lack for the case
+        MeasuredAdviceRow r;
+        r.family = m.family;
+        r.level = m.level;
+        r.sigma_over_h = m.sigma_over_h;
+        r.estimated_sigma_over_h = a.sigma_over_h;
+        r.quantity = q.quantity;
+        r.label = q.cases[k].label;
+        r.noise_part = q.cases[k].noise_part;
+        r.bias_part = q.cases[k].bias_part;
+        r.predicted = q.cases[k].predicted;
+        r.error = e->second;
+        r.chosen = static_cast<int>(k) == q.chosen;
+        out.push_back(std::move(r));
+      }
+  }
+  return out;
+}
+
+std::vector<CrossValidationRow> measured_regrets(const std::vector<MeasuredAdviceRow>& rows) {
+  std::vector<CrossValidationRow> out;
+  for (size_t i = 0; i < rows.size();) {
+    size_t j = i;  // rows of one mesh, noise level and quantity are consecutive
+    while (j < rows.size() && rows[j].family == rows[i].family && rows[j].level == rows[i].level &&
+           same_level(rows[j].sigma_over_h, rows[i].sigma_over_h) &&
+           rows[j].quantity == rows[i].quantity)
+      ++j;
+    CrossValidationRow r;
+    r.family = rows[i].family;
+    r.level = rows[i].level;
+    r.sigma_over_h = rows[i].sigma_over_h;
+    r.quantity = rows[i].quantity;
+    r.neighbours = "measured on the mesh";
+    for (size_t k = i; k < j; ++k) {
+      if (std::isfinite(rows[k].error) && (r.best.empty() || rows[k].error < r.best_error)) {
+        r.best = rows[k].label;
+        r.best_error = rows[k].error;
+      }
+      if (rows[k].chosen) {
+        r.advised = rows[k].label;
+        r.advised_error = rows[k].error;
+      }
+    }
+    if (!r.advised.empty()) r.regret = r.advised_error / r.best_error;
+    out.push_back(std::move(r));
+    i = j;
+  }
+  return out;
+}
+
+void write_measured_advice_csv(const std::string& path,
+                               const std::vector<MeasuredAdviceRow>& rows) {
+  std::ostringstream out;
+  out << provenance_comment() << "\n"
+      << "family,level,sigma_over_h,estimated_sigma_over_h,quantity,norm,label,noise_part,"
+         "bias_part,predicted,error,chosen\n";
+  for (const MeasuredAdviceRow& r : rows)
+    out << r.family << ',' << r.level << ',' << format_g(r.sigma_over_h) << ','
+        << format_double(r.estimated_sigma_over_h) << ',' << r.quantity << ',' << kAdviceNorm << ','
+        << r.label << ',' << format_double(r.noise_part) << ',' << format_double(r.bias_part) << ','
+        << format_double(r.predicted) << ',' << format_double(r.error) << ',' << (r.chosen ? 1 : 0)
+        << "\n";
+  write_file_atomic(path, out.str());
+}
+
+std::vector<MeasuredAdviceRow> read_measured_advice_csv(const std::string& path) {
+  const CsvTable t = read_csv_table(path);
+  const size_t cf = t.col("family"), cl = t.col("level"), cs = t.col("sigma_over_h"),
+               ce = t.col("estimated_sigma_over_h"), cq = t.col("quantity"), cb = t.col("label"),
+               cn = t.col("noise_part"), cbp = t.col("bias_part"), cp = t.col("predicted"),
+               cer = t.col("error"), cc = t.col("chosen");
+  std::vector<MeasuredAdviceRow> rows;
+  for (size_t i = 0; i < t.rows.size(); ++i) {
+    MeasuredAdviceRow r;
+    r.family = t.text(i, cf);
+    r.level = t.integer(i, cl);
+    r.sigma_over_h = t.number(i, cs);
+    r.estimated_sigma_over_h = t.number(i, ce);
+    r.quantity = t.text(i, cq);
+    r.label = t.text(i, cb);
+    r.noise_part = t.number(i, cn);
+    r.bias_part = t.number(i, cbp);
+    r.predicted = t.number(i, cp);
+    r.error = t.number(i, cer);
+    r.chosen = t.integer(i, cc) == 1;
+    rows.push_back(std::move(r));
+  }
+  return rows;
+}
+
 std::vector<CrossValidationRow> read_cross_validation_csv(const std::string& path) {
   const CsvTable t = read_csv_table(path);
   const size_t cf = t.col("family"), cl = t.col("level"), cs = t.col("sigma_over_h"),
@@ -424,7 +541,8 @@ std::vector<CrossValidationRow> read_cross_validation_csv(const std::string& pat
   return rows;
 }
 
-report::Section cross_validation_section(const std::vector<CrossValidationRow>& rows) {
+report::Section cross_validation_section(const std::vector<CrossValidationRow>& rows,
+                                         const std::vector<CrossValidationRow>& measured) {
   report::Section s{"advice-cross-validation", "Advice on meshes it never saw", {}};
   std::vector<std::string> families;
   std::vector<double> levels;
@@ -472,7 +590,41 @@ report::Section cross_validation_section(const std::vector<CrossValidationRow>& 
     for (double l : levels) add(l, format_g(l));
     add(std::nan(""), "all");
   }
+  const std::vector<std::string> summary_columns = sum.columns;
+  const std::vector<bool> summary_numeric = sum.numeric;
   s.table(std::move(sum));
+
+  if (!measured.empty()) {
+    s.text(
+        "Measured on the mesh (`curvbench recommend --measure`; docs/advice.md): each held-out "
+        "mesh's own noise estimated, every case run on it and on it perturbed twice by that "
+        "noise along the normals of a degree-4 fit; a case's error predicted as the root of the "
+        "sum of squares of the change the perturbations cause (the noise part) and of its "
+        "distance to a reference, less the noise in that distance (the bias part); the reference "
+        "is LHF-4 on 2, 3 or 4 rings, the one of least predicted error against the 2 rings; the "
+        "least prediction advised. It "
+        "learns nothing from the other families. Rows: `advice_measured.csv`.");
+    report::Table m;
+    m.id = "advice-measured-summary";
+    m.columns = summary_columns;
+    m.columns[2] = "meshes";
+    m.numeric = summary_numeric;
+    for (const std::string& q : advice_quantities()) {
+      auto add = [&](double level, const std::string& level_text) {
+        const RegretSummary r = summarize_regret(measured, q, level);
+        if (r.cases == 0) return;
+        m.add({advice_quantity_words(q), report::Cell::number(level, level_text),
+               report::Cell::number(r.cases, std::to_string(r.cases)),
+               report::Cell::number(r.median, regret_text(r.median)),
+               report::Cell::number(r.worst, regret_text(r.worst)),
+               report::Cell::number(r.within_goal, share_text(r.within_goal)),
+               r.meets_goal() ? "met" : "missed"});
+      };
+      for (double l : levels) add(l, format_g(l));
+      add(std::nan(""), "all");
+    }
+    s.table(std::move(m));
+  }
 
   report::Table tab;
   tab.id = "advice-regret-table";
@@ -480,6 +632,10 @@ report::Section cross_validation_section(const std::vector<CrossValidationRow>& 
   tab.columns = {"held-out family", "noise sigma/h", "normals: advised", "regret",
                  "H: advised",      "regret",        "H: best",          "neighbours (H)"};
   tab.numeric = {false, true, false, true, false, true, false, false};
+  if (!measured.empty()) {
+    tab.columns.insert(tab.columns.end(), {"H: measured", "regret"});
+    tab.numeric.insert(tab.numeric.end(), {false, true});
+  }
   for (const std::string& f : families)
     for (double l : levels) {
       const CrossValidationRow* by_q[2] = {nullptr, nullptr};
@@ -499,6 +655,14 @@ report::Section cross_validation_section(const std::vector<CrossValidationRow>& 
       }
       row.push_back(by_q[1] ? "`" + by_q[1]->best + "`" : "");
       row.push_back(by_q[1] ? by_q[1]->neighbours : "");
+      if (!measured.empty()) {
+        const CrossValidationRow* mh = nullptr;
+        for (const CrossValidationRow& r : measured)
+          if (r.family == f && same_level(r.sigma_over_h, l) && r.quantity == "H") mh = &r;
+        row.push_back(mh && !mh->advised.empty() ? "`" + mh->advised + "`" : "");
+        row.push_back(mh ? report::Cell::number(mh->regret, regret_text(mh->regret))
+                         : report::Cell(""));
+      }
       tab.add(std::move(row));
     }
   return s.table(std::move(tab));

@@ -23,9 +23,11 @@
 #include <string>
 #include <vector>
 
+#include "harness/model/measured_advice.h"
 #include "harness/model/mesh_features.h"
 #include "harness/model/results_table.h"
 #include "harness/report/model.h"
+#include "meshgen/generate.h"
 
 namespace curvbench {
 
@@ -156,9 +158,47 @@ void write_cross_validation_csv(const std::string& path,
 /// Reads it back; throws InputError as read_csv_table does.
 std::vector<CrossValidationRow> read_cross_validation_csv(const std::string& path);
 
+/// A swept mesh at one noise level, generated as its sweep generated it.
+struct SweptNoisyMesh {
+  std::string family;  ///< the results' label
+  int level = 0;
+  double sigma_over_h = 0.0;  ///< the true noise
+  MeshSpec spec;
+};
+
+/// One case of the advice measured on a swept mesh (harness/model/measured_advice.h): a row of
+/// advice_measured.csv. `error` is the case's true L2 error there (the sweep's, from the advice
+/// cases); `chosen` marks the least prediction.
+struct MeasuredAdviceRow {
+  std::string family;
+  int level = 0;
+  double sigma_over_h = 0.0;            ///< true
+  double estimated_sigma_over_h = 0.0;  ///< estimate_noise(): what the measurement perturbs with
+  std::string quantity, label;
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  double noise_part = kNaN, bias_part = kNaN, predicted = kNaN, error = kNaN;
+  bool chosen = false;
+};
+
+/// Measures the advice on each mesh, at its estimated noise, with the cases the sweep ran on it
+/// (in the cases' order) as candidates; `progress` (may be empty) is called before each mesh.
+std::vector<MeasuredAdviceRow> measure_swept_advice(
+    const std::vector<SweptNoisyMesh>& meshes, const std::vector<AdviceCase>& cases,
+    const std::function<void(const SweptNoisyMesh&, size_t index)>& progress = {});
+/// Per mesh, noise level and quantity: the chosen case scored by its regret (advised over best
+/// true error among the measured cases); neighbours "measured on the mesh".
+std::vector<CrossValidationRow> measured_regrets(const std::vector<MeasuredAdviceRow>& rows);
+/// Writes advice_measured.csv (provenance comment, header, rows) atomically.
+void write_measured_advice_csv(const std::string& path, const std::vector<MeasuredAdviceRow>& rows);
+/// Reads it back; throws InputError as read_csv_table does.
+std::vector<MeasuredAdviceRow> read_measured_advice_csv(const std::string& path);
+
 /// The section "Advice on meshes it never saw" (id "advice-cross-validation"): what was held
 /// out, the summary per quantity and noise level (median, worst, share within 2x, the goal) and
 /// the table per family and noise level.
-report::Section cross_validation_section(const std::vector<CrossValidationRow>& rows);
+/// With `measured` (measured_regrets()), the advice measured on the mesh beside it: its summary
+/// and its H choice and regret per family and noise level.
+report::Section cross_validation_section(const std::vector<CrossValidationRow>& rows,
+                                         const std::vector<CrossValidationRow>& measured = {});
 
 }  // namespace curvbench

@@ -1,5 +1,6 @@
 #include "harness/report/recommend_table.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -15,6 +16,7 @@
 #include "harness/model/results_table.h"
 #include "harness/report/sweeps.h"
 #include "mesh/io.h"
+#include "mesh/orientation.h"
 #include "methods/estimator.h"
 #include "methods/option_schema.h"
 
@@ -24,11 +26,6 @@ namespace {
 
 bool same_level(double a, double b) {
   return std::fabs(a - b) <= 1e-9 * std::fmax(1.0, b);
-}
-
-std::string lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
 }
 
 std::string seconds_text(double s) {
@@ -206,41 +203,48 @@ std::string recommendations_provenance(const std::string& path) {
   return first;
 }
 
-std::vector<std::string> EstimatorChoice::flags() const {
-  std::vector<std::string> f{"--method", method};
-  if (!parameter.empty()) {
-    f.push_back("--" + parameter);
-    f.push_back(format_g(radius));
-  }
-  return f;
-}
-
-std::string EstimatorChoice::text() const {
-  const std::string name = split_radius_label(label).method;
-  if (parameter.empty()) return name + " at its own neighbourhood (no radius option)";
-  if (parameter == "rings") return name + ", rings " + format_g(radius);
-  return name + ", ball factor C = " + format_g(radius) + " (a ball of radius C h)";
-}
-
-EstimatorChoice estimator_choice(const std::string& label) {
-  const RadiusLabel l = split_radius_label(label);
-  EstimatorChoice c;
-  c.label = label;
-  c.method = lower(l.method);
-  c.parameter = l.parameter;
-  c.radius = l.radius;
-  if (c.method.empty() || c.method.find(' ') != std::string::npos)
-    throw UsageError("'" + label + "' is not a method label with an optional radius");
-  if (!c.parameter.empty()) set_option(c.options, c.parameter, format_double(c.radius));
-  (void)make_estimator(c.method, c.options);  // throws UsageError for what it cannot make
-  return c;
-}
-
 std::optional<AdviceTable> advice_cases_beside(const std::string& table_path) {
   const std::filesystem::path dir = std::filesystem::path(table_path).parent_path();
   std::error_code ec;
   if (!std::filesystem::is_regular_file(dir / "advice_cases.csv", ec)) return std::nullopt;
   return read_advice_cases_csv(dir.empty() ? "." : dir.string());
+}
+
+void measure_on_mesh(Advice& a, const Mesh& mesh, const AdviceTable& cases, int threads) {
+  MeasuredRecommendation m;
+  for (const AdviceCase& c : cases.cases)
+    if (std::none_of(m.candidates.begin(), m.candidates.end(),
+                     [&](const EstimatorChoice& e) { return e.label == c.label; })) {
+      try {
+        m.candidates.push_back(estimator_choice(c.label));
+      } catch (const UsageError& e) {
+        throw InputError(cases.name + ": case '" + c.label +
+                         "' is no estimator curvbench estimate runs (" + e.what() + ")");
+      }
+    }
+  MeasuredAdviceOptions o;
+  o.sigma_over_h = a.sigma_over_h;
+  o.threads = threads;
+  m.advice = measure_advice(orient_mesh(mesh).mesh, m.candidates, o);
+  const std::filesystem::path measured_csv =
+      std::filesystem::path(cases.name).parent_path() / "advice_measured.csv";
+  std::vector<CrossValidationRow> regrets;
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(measured_csv, ec))
+    regrets = measured_regrets(read_measured_advice_csv(measured_csv.string()));
+  for (const std::string& q : measured_quantities())
+    m.validated.push_back(summarize_regret(regrets, q));
+  const MeasuredQuantity& curvature = m.advice.quantities.back();
+  if (curvature.chosen >= 0) {
+    a.choice = m.candidates[curvature.chosen];
+    a.has_choice = true;
+    a.label = a.choice.label;
+    a.quantity = curvature.quantity;
+    a.error = curvature.cases[curvature.chosen].predicted;
+    a.experiment = "measured on the mesh";
+  }
+  a.measured = std::move(m);
+  a.has_measured = true;
 }
 
 bool Advice::choices_differ() const {
@@ -356,7 +360,7 @@ Advice advise(const Mesh& mesh, double noise, const RecommendationTable& table,
 }
 
 bool is_auto_method(const std::string& method) {
-  return lower(method) == "auto";
+  return ascii_lower(method) == "auto";
 }
 
 EstimatorOptions auto_options(const EstimatorChoice& choice, const EstimatorOptions& given,
@@ -476,6 +480,40 @@ std::string feature_advice_text(const Advice& a) {
   return s;
 }
 
+// The lines of the advice measured on the mesh (advice_text).
+std::string measured_advice_text(const Advice& a) {
+  const MeasuredRecommendation& m = a.measured;
+  std::string s = "measured:   on this mesh: the " + std::to_string(m.candidates.size()) +
+                  " cases run on it and on it perturbed " + std::to_string(kMeasuredPerturbations) +
+                  " times by sigma/h " + number_text("%.3g", m.advice.perturbation_over_h) +
+                  " along the normals of " + kMeasuredReferences[0] +
+                  "; predicted error = sqrt(noise part^2 + bias part^2), the bias part against "
+                  "a reference, the LHF-4 ring of least predicted error\n";
+  for (size_t k = 0; k < m.advice.quantities.size(); ++k) {
+    const MeasuredQuantity& q = m.advice.quantities[k];
+    const std::string head = q.quantity == "normal" ? "normals:    " : "curvatures: ";
+    if (q.chosen < 0) {
+      s += head + "none: no case gave a finite value\n";
+      continue;
+    }
+    const MeasuredCase& c = q.cases[q.chosen];
+    s += head + m.candidates[q.chosen].text() + "; case `" + c.label + "`, predicted " +
+         (q.quantity == "normal" ? "RMS normal error " : "relative L2 error in H ") +
+         scientific(c.predicted) + " (noise part " + scientific(c.noise_part) + ", bias part " +
+         scientific(c.bias_part) + " against " + q.reference + ")\n";
+    if (k < m.validated.size() && m.validated[k].cases > 0) {
+      const RegretSummary& v = m.validated[k];
+      s += "            on the swept meshes (exact answers known) this measurement advised "
+           "within 2x of the best case in " +
+           number_text("%.0f%%", 100 * v.within_goal) + " of " + std::to_string(v.cases) +
+           " cases; median " + number_text("%.2f", v.median) + ", worst " +
+           number_text("%.2f", v.worst) + " times the best error\n";
+    }
+  }
+  s += "measured:   the command below runs the curvature's choice\n";
+  return s;
+}
+
 // The fields of the advice from mesh features (advice_json).
 std::string feature_advice_json(const Advice& a) {
   std::string j = ", \"features\": {";
@@ -577,6 +615,7 @@ std::string advice_text(const Advice& a, const std::string& mesh_path, const std
            "`, the fastest case within 2x of that error: " + scientific(r.cheapest_error) + " in " +
            seconds_text(r.cheapest_seconds) + "\n";
   }
+  if (a.has_measured) s += measured_advice_text(a);
   s += "table:      " + a.table + (a.provenance.empty() ? "" : ", " + a.provenance) + "\n";
   if (!command.empty()) s += "run:        " + command + "\n";
   return s;
@@ -619,6 +658,23 @@ std::string advice_json(const Advice& a, const std::string& mesh_path, const std
     j += std::string(i ? ", " : "") + json_string(a.header[i]) + ": " + json_string(r.fields[i]);
   j += "}";
   if (a.has_feature_advice) j += feature_advice_json(a);
+  if (a.has_measured) {
+    j += ", \"measured\": {\"perturbation_over_h\": " +
+         json_number(a.measured.advice.perturbation_over_h);
+    for (const MeasuredQuantity& q : a.measured.advice.quantities) {
+      j += ", " + json_string(q.quantity) + ": ";
+      if (q.chosen < 0) {
+        j += "null";
+        continue;
+      }
+      const MeasuredCase& c = q.cases[q.chosen];
+      j += "{\"label\": " + json_string(c.label) + ", \"reference\": " + json_string(q.reference) +
+           ", \"predicted\": " + json_number(c.predicted) +
+           ", \"noise_part\": " + json_number(c.noise_part) +
+           ", \"bias_part\": " + json_number(c.bias_part) + "}";
+    }
+    j += "}";
+  }
   return j + "}\n";
 }
 

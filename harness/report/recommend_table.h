@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "curvbench/estimator_options.h"
+#include "harness/model/estimator_choice.h"
 #include "harness/model/mesh_features.h"
 #include "harness/model/noise_estimate.h"
 #include "harness/report/advice.h"
@@ -79,26 +80,6 @@ RecommendationTable default_recommendations();
 /// "curvbench 0.1.0 (git 747a679) GNU 12.2.0 Release, generated ..."); "" otherwise.
 std::string recommendations_provenance(const std::string& path);
 
-/// What `curvbench estimate` runs for a sweep's case label: "LHF-4 rings=2" -> method "lhf-4",
-/// rings 2; "ICC ball-factor=4" -> "icc", ball-factor 4; "Rusinkiewicz" -> "rusinkiewicz" at
-/// its 1-ring (split_radius_label, harness/model/results_table.h). The sweeps' method lines set no
-/// other option (experiments/sweep-radius.exp), so the label is the whole estimator.
-struct EstimatorChoice {
-  std::string label;      ///< the case label, as in the table
-  std::string method;     ///< --method
-  std::string parameter;  ///< "rings", "ball-factor" or "" (the method's own neighbourhood)
-  double radius = std::numeric_limits<double>::quiet_NaN();  ///< NaN without a parameter
-  EstimatorOptions options;  ///< the radius set (rings or ball_factor), the rest default
-
-  /// The estimate flags: {"--method", "lhf-4", "--rings", "2"}.
-  std::vector<std::string> flags() const;
-  /// "LHF-4, rings 2", "ICC, ball factor C = 4", "Rusinkiewicz, its 1-ring".
-  std::string text() const;
-};
-/// Throws UsageError when the label names no method make_estimator() knows, or a radius the
-/// method does not take.
-EstimatorChoice estimator_choice(const std::string& label);
-
 /// The advice cases (advice_cases.csv) in the folder of the recommendations table `table_path`
 /// (written by the same `make experiments`); none when that folder has no such file (a table of
 /// an older curvbench). Throws InputError as parse_advice_cases_csv.
@@ -115,6 +96,17 @@ struct QuantityAdvice {
   /// The pick's error on those meshes (lowest, highest).
   double lowest_error = std::numeric_limits<double>::quiet_NaN();
   double highest_error = std::numeric_limits<double>::quiet_NaN();
+};
+
+/// The advice measured on the mesh itself (`curvbench recommend --measure`,
+/// harness/model/measured_advice.h), over the advice cases' estimators.
+struct MeasuredRecommendation {
+  MeasuredAdvice advice;
+  std::vector<EstimatorChoice> candidates;  ///< in the advice cases' order
+  /// What the same measurement advised on the swept meshes against their exact answers
+  /// (advice_measured.csv beside the table), per quantity in measured_quantities() order; no
+  /// cases when that file is absent.
+  std::vector<RegretSummary> validated;
 };
 
 /// The advice for a mesh: its class, its noise (given, or estimated when `noise` is NaN), the
@@ -160,6 +152,9 @@ struct Advice {
   MeshFeatures features;
   std::vector<QuantityAdvice> quantities;
   std::vector<FeatureOutOfRange> out_of_range;
+  /// Measured on the mesh (measure_on_mesh): then `choice` is its curvature's choice.
+  bool has_measured = false;
+  MeasuredRecommendation measured;
   /// Whether the normals' and the curvature's choices differ.
   bool choices_differ() const;
 };
@@ -168,6 +163,12 @@ struct Advice {
 /// `cases`, the advice is the class row's alone.
 Advice advise(const Mesh& mesh, double noise, const RecommendationTable& table,
               const AdviceTable* cases = nullptr);
+
+/// Adds the advice measured on `mesh` at the advice's noise (given or estimated) over the
+/// estimators of `cases`, with `threads` threads (0: all cores); the mesh is oriented first
+/// (closed parts outward). Its curvature's choice becomes the advice's `choice`. Throws
+/// InputError as orient_mesh and measure_advice do, or for cases naming no estimator.
+void measure_on_mesh(Advice& advice, const Mesh& mesh, const AdviceTable& cases, int threads = 0);
 
 /// Whether `method` is "auto" (case-insensitive): the estimator and radius of the advice.
 bool is_auto_method(const std::string& method);

@@ -371,6 +371,7 @@ bool sweeps_section(const std::vector<Experiment>& experiments, const ReportOpti
   std::vector<ErrorRow> radius_rows;  // the recommendations' input
   std::vector<TimingRow> timings;
   std::map<std::string, ExperimentMesh> swept_meshes;  // by the results' family label
+  std::vector<SweptNoisyMesh> noisy_meshes;            // the advice measured on the mesh reads
   bool any_radius = false;
   // The radius sweeps first (the noise sweeps use their best radii), then the noise sweeps.
   std::vector<const Experiment*> sweeps;
@@ -405,7 +406,22 @@ bool sweeps_section(const std::vector<Experiment>& experiments, const ReportOpti
       const std::vector<BestRadius> best = best_radii(rows);
       all_best.insert(all_best.end(), best.begin(), best.end());
       radius_rows.insert(radius_rows.end(), rows.begin(), rows.end());
-      for (const ExperimentMesh& m : e.meshes) swept_meshes.try_emplace(m.label(), m);
+      for (const ExperimentMesh& m : e.meshes) {
+        swept_meshes.try_emplace(m.label(), m);
+        const int order = e.noise_order_of(m);
+        const double sigma = normal_noise_sigma(noise_level(order, e.noise_model_of(m)));
+        if (std::isnan(sigma)) continue;
+        for (int level : m.levels) {
+          MeshSpec spec;
+          spec.family = m.family;
+          spec.level = level;
+          spec.noise_order = order;
+          spec.seed = e.noise_seed;
+          spec.noise_model = e.noise_model_of(m);
+          spec.shape = m.shape;
+          noisy_meshes.push_back({m.label(), level, sigma, spec});
+        }
+      }
       const std::string timing_csv = dir + "/timings/" + e.name + ".csv";
       if (fs::exists(timing_csv))
         for (const TimingRow& t : read_timing_csv(timing_csv)) timings.push_back(t);
@@ -441,12 +457,27 @@ bool sweeps_section(const std::vector<Experiment>& experiments, const ReportOpti
     };
     const std::vector<AdviceCase> cases = advice_cases(radius_rows, features_of);
     const std::vector<CrossValidationRow> validation = cross_validate(cases);
-    report::Section held_out = cross_validation_section(validation);
+    // The advice measured on each swept mesh (computed with the tables; a render-only report
+    // reads the last one's CSV).
+    std::vector<MeasuredAdviceRow> measured;
+    const std::string measured_csv = dir + "/advice_measured.csv";
+    if (options.write_tables) {
+      const auto t0 = std::chrono::steady_clock::now();
+      std::fprintf(stderr, "curvbench: measuring the advice on %zu swept meshes...\n",
+                   noisy_meshes.size());
+      measured = measure_swept_advice(noisy_meshes, cases);
+      std::fprintf(stderr, "curvbench: advice measured in %.0f s\n",
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    } else if (fs::exists(measured_csv)) {
+      measured = read_measured_advice_csv(measured_csv);
+    }
+    report::Section held_out = cross_validation_section(validation, measured_regrets(measured));
     out.heading(held_out.title, 0);
     for (report::Block& b : held_out.blocks) out.blocks.push_back(std::move(b));
     if (options.write_tables) {
       write_advice_cases_csv(dir + "/advice_cases.csv", cases);
       write_cross_validation_csv(dir + "/advice_cross_validation.csv", validation);
+      write_measured_advice_csv(measured_csv, measured);
     }
   }
   return true;

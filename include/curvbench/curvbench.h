@@ -75,6 +75,13 @@ struct MeshAdvice {
   /// Cross-validation on those meshes: the choice learned without each, over the best error.
   double regret_median = kNaN, regret_worst = kNaN;
   std::vector<std::string> out_of_range;  ///< features outside the swept meshes' range
+  // With RecommendOptions::measure (docs/advice.md, "Measured on the mesh"): both choices are
+  // those measured on the mesh itself, `error` is the curvature choice's predicted relative L2
+  // error in H, experiment is "measured on the mesh", and regret_median, regret_worst are what
+  // the same measurement did on the swept meshes (advice_measured.csv beside the table; NaN
+  // without it).
+  bool measured = false;
+  double normal_error = kNaN;  ///< the normals' choice's predicted RMS error
 };
 
 /// Per-vertex estimates; row/entry i belongs to vertex i.
@@ -117,6 +124,10 @@ struct RecommendOptions {
   /// A folder holding the recommendations.csv to read; "": the table installed with curvbench
   /// (or the source tree's, for a build tree).
   std::string results;
+  /// Also measure the advice on the mesh itself (`curvbench recommend --measure`): every swept
+  /// case runs on it 3 times. Needs advice_cases.csv beside the table.
+  bool measure = false;
+  int threads = 0;  ///< of the measurement (0: all cores)
 };
 
 /// The estimator and radius recommended for the mesh (V, F), as `curvbench recommend`. Throws

@@ -371,6 +371,35 @@ def test_auto_follows_the_recommendation_of_the_command_line(tmp_path):
         curvbench.recommend(V, F, noise=-1.0)
 
 
+def test_measured_advice_matches_the_command_line(tmp_path):
+    # recommend(measure=True) is `curvbench recommend --measure`: the same choices per quantity,
+    # the curvature's predicted error, and what the measurement did on the swept meshes.
+    import json
+
+    path = tmp_path / "t.off"
+    r = cli("mesh", "--family", "torus-unstructured", "--level", "1", "--noise-order", "2",
+            "--output", path)
+    assert r.returncode == 0, r.stderr
+    r = cli("recommend", path, "--measure", "--format", "json")
+    assert r.returncode == 0, r.stderr
+    want = json.loads(r.stdout)["measured"]
+    V, F = curvbench.read_mesh(str(path))
+    rec = curvbench.recommend(V, F, measure=True, threads=1)
+    assert rec["measured"] is True
+    assert rec["label"] == want["H"]["label"]
+    assert rec["error"] == pytest.approx(want["H"]["predicted"], rel=1e-12)
+    assert rec["normal_label"] == want["normal"]["label"]
+    assert rec["normal_error"] == pytest.approx(want["normal"]["predicted"], rel=1e-12)
+    assert rec["experiment"] == "measured on the mesh"
+    assert rec["regret_worst"] >= rec["regret_median"] >= 1.0
+    assert curvbench.recommend(V, F)["measured"] is False
+    (tmp_path / "recommendations.csv").write_bytes(
+        open(os.path.join(os.environ["CURVBENCH_SOURCE_DIR"], "results",
+                          "recommendations.csv"), "rb").read())
+    with pytest.raises(curvbench.MeshError, match="measure: no advice_cases.csv beside"):
+        curvbench.recommend(V, F, results=str(tmp_path), measure=True)
+
+
 def test_the_module_includes_only_the_public_api():
     # python/curvbench_module.cpp is a client of include/curvbench/ like any other: besides
     # pybind11 and the standard library it includes only <curvbench/...> headers.

@@ -1,0 +1,71 @@
+// `curvbench recommend --measure`: the advice measured on the mesh is printed per quantity with
+// its predicted error and its parts, the printed command runs its curvature choice, JSON carries
+// it, and a results folder without advice cases is a one-line error (exit 2).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "tests/cli/cli_runner.h"
+
+namespace curvbench {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::fresh_dir;
+using testing::run_cli;
+
+const std::string kResults = std::string(CURVBENCH_SOURCE_DIR) + "/results";
+
+// The text after `prefix` on the line that starts with it ("" when none).
+std::string measure_line(const std::string& output, const std::string& prefix, size_t from = 0) {
+  const size_t at = output.find("\n" + prefix, from);
+  if (at == std::string::npos) return "";
+  const size_t end = output.find('\n', at + 1);
+  return output.substr(at + 1 + prefix.size(), end - at - 1 - prefix.size());
+}
+
+TEST(CliRecommendMeasure, PrintsTheMeasuredChoicePerQuantityAndRunsTheCurvaturesOne) {
+  const fs::path dir = fresh_dir("recommend_measure");
+  const std::string mesh = (dir / "t.off").string();
+  ASSERT_EQ(run_cli("mesh --family torus-unstructured --level 1 --noise-order 2 --output " + mesh)
+                .exit_code,
+            0);
+  const auto r = run_cli("recommend " + mesh + " --measure --threads 2 --results " + kResults);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const size_t measured = r.output.find("\nmeasured:   on this mesh");
+  ASSERT_NE(measured, std::string::npos) << r.output;
+  const std::string normals = measure_line(r.output, "normals:    ", measured);
+  const std::string curvatures = measure_line(r.output, "curvatures: ", measured);
+  EXPECT_NE(normals.find("predicted RMS normal error"), std::string::npos) << r.output;
+  EXPECT_NE(curvatures.find("predicted relative L2 error in H"), std::string::npos) << r.output;
+  EXPECT_NE(curvatures.find("bias part"), std::string::npos) << r.output;
+  // The case of the curvatures' line is the one the command runs.
+  const size_t tick = curvatures.find('`');
+  const std::string label = curvatures.substr(tick + 1, curvatures.find('`', tick + 1) - tick - 1);
+  const std::string run = measure_line(r.output, "run:        ");
+  const std::string method = label.substr(0, label.find(' '));
+  std::string lower_method;
+  for (char c : method) lower_method += static_cast<char>(std::tolower(c));
+  EXPECT_NE(run.find("--method " + lower_method), std::string::npos) << label << " | " << run;
+
+  const auto j = run_cli("recommend " + mesh + " --measure --format json --results " + kResults);
+  ASSERT_EQ(j.exit_code, 0) << j.output;
+  EXPECT_NE(j.output.find("\"measured\": {\"perturbation_over_h\": "), std::string::npos);
+  EXPECT_NE(j.output.find("\"H\": {\"label\": \"" + label + "\""), std::string::npos) << j.output;
+}
+
+TEST(CliRecommendMeasure, NeedsTheAdviceCases) {
+  const fs::path dir = fresh_dir("recommend_measure_no_cases");
+  fs::copy_file(kResults + "/recommendations.csv", dir / "recommendations.csv");
+  const std::string mesh = (dir / "t.off").string();
+  ASSERT_EQ(run_cli("mesh --family torus-unstructured --level 1 --output " + mesh).exit_code, 0);
+  const auto r = run_cli("recommend " + mesh + " --measure --results " + dir.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("--measure: no advice_cases.csv beside"), std::string::npos) << r.output;
+  // Without --measure the same folder still advises (the class table).
+  EXPECT_EQ(run_cli("recommend " + mesh + " --results " + dir.string()).exit_code, 0);
+}
+
+}  // namespace
+}  // namespace curvbench
