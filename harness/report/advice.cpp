@@ -668,4 +668,14 @@ report::Section cross_validation_section(const std::vector<CrossValidationRow>& 
   return s.table(std::move(tab));
 }
 
+std::optional<report::Section> cross_validation_section_of(const std::string& results_dir) {
+  const std::string validation = results_dir + "/advice_cross_validation.csv";
+  const std::string measured = results_dir + "/advice_measured.csv";
+  if (!std::filesystem::exists(validation)) return std::nullopt;
+  return cross_validation_section(read_cross_validation_csv(validation),
+                                  std::filesystem::exists(measured)
+                                      ? measured_regrets(read_measured_advice_csv(measured))
+                                      : std::vector<CrossValidationRow>{});
+}
+
 }  // namespace curvbench

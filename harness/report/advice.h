@@ -20,6 +20,7 @@
 
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -200,5 +201,8 @@ std::vector<MeasuredAdviceRow> read_measured_advice_csv(const std::string& path)
 /// and its H choice and regret per family and noise level.
 report::Section cross_validation_section(const std::vector<CrossValidationRow>& rows,
                                          const std::vector<CrossValidationRow>& measured = {});
+/// The section from a results folder's advice_cross_validation.csv and, when present,
+/// advice_measured.csv; nullopt without the first.
+std::optional<report::Section> cross_validation_section_of(const std::string& results_dir);
 
 }  // namespace curvbench

@@ -232,13 +232,14 @@ std::string summary_markdown(const ReportContent& content, const std::vector<Lea
       "and for curvatures, the estimator and radius learned from the swept meshes nearest in "
       "those features, the error range cross-validation measured there, whether the mesh lies "
       "outside what the sweeps cover, and the `curvbench estimate` command to run; `curvbench "
-      "estimate MESH --method auto` runs it. The tables behind it: "
+      "estimate MESH --method auto` runs it. `--measure` measures the choice on the mesh "
+      "itself instead: every swept case run on it and on copies perturbed by its noise "
+      "(docs/advice.md). The tables behind it: "
       "[report/sweeps.md](report/sweeps.md) and the site's advice page; how far the advice "
       "holds on meshes it never saw: below.");
   md << report::to_markdown(advice);
-  const std::string validation_csv = dir + "/advice_cross_validation.csv";
-  if (fs::exists(validation_csv))
-    md << report::to_markdown(cross_validation_section(read_cross_validation_csv(validation_csv)));
+  if (const auto validation = cross_validation_section_of(dir))
+    md << report::to_markdown(*validation);
 
   report::Section details{"details", "Details", {}};
   std::string list = "- [Paper tables 2, 4 and 5](report/paper-tables.md)\n";
@@ -585,9 +586,8 @@ std::vector<report::Section> advice_sections(const std::string& dir) {
              t.text(i, cc), report::Cell::number(t.number(i, cce), scientific(t.number(i, cce)))});
   }
   s.table(std::move(tab));
-  const std::string validation_csv = dir + "/advice_cross_validation.csv";
-  if (!fs::exists(validation_csv)) return {s};
-  return {s, cross_validation_section(read_cross_validation_csv(validation_csv))};
+  if (const auto validation = cross_validation_section_of(dir)) return {s, *validation};
+  return {s};
 }
 
 void copy_file_checked(const std::string& from, const fs::path& to) {

@@ -218,6 +218,22 @@ TEST(MeasuredAdvice, RegretsCsvAndSection) {
   write_measured_advice_csv((dir / "advice_measured.csv").string(), rows);
   const std::vector<MeasuredAdviceRow> back =
       read_measured_advice_csv((dir / "advice_measured.csv").string());
+  // The results folder's section: none without the learned advice's CSV; with it, the measured
+  // summary only where advice_measured.csv is.
+  CrossValidationRow learned_row = regrets[1];
+  learned_row.neighbours = "b";
+  EXPECT_FALSE(cross_validation_section_of(dir.string()).has_value());
+  write_cross_validation_csv((dir / "advice_cross_validation.csv").string(), {learned_row});
+  const auto has_measured_table = [](const report::Section& sec) {
+    for (const report::Block& b : sec.blocks)
+      if (const auto* t = std::get_if<report::Table>(&b))
+        if (t->id == "advice-measured-summary") return true;
+    return false;
+  };
+  ASSERT_TRUE(cross_validation_section_of(dir.string()).has_value());
+  EXPECT_TRUE(has_measured_table(*cross_validation_section_of(dir.string())));
+  fs::remove(dir / "advice_measured.csv");
+  EXPECT_FALSE(has_measured_table(*cross_validation_section_of(dir.string())));
   fs::remove_all(dir);
   ASSERT_EQ(back.size(), rows.size());
   for (size_t i = 0; i < rows.size(); ++i) {
