@@ -465,7 +465,11 @@ bool sweeps_section(const std::vector<Experiment>& experiments, const ReportOpti
       const auto t0 = std::chrono::steady_clock::now();
       std::fprintf(stderr, "curvbench: measuring the advice on %zu swept meshes...\n",
                    noisy_meshes.size());
-      measured = measure_swept_advice(noisy_meshes, cases);
+      measured = measure_swept_advice(noisy_meshes, cases, [&](const SweptNoisyMesh& m, size_t i) {
+        std::fprintf(stderr, "[advice] %zu/%zu %s level %d sigma/h %s\n", i + 1,
+                     noisy_meshes.size(), m.family.c_str(), m.level,
+                     format_g(m.sigma_over_h).c_str());
+      });
       std::fprintf(stderr, "curvbench: advice measured in %.0f s\n",
                    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     } else if (fs::exists(measured_csv)) {
