@@ -67,16 +67,17 @@ MeshAdvice mesh_advice(const Advice& a) {
   r.regret_worst = curvature.validated.worst;
   for (const FeatureOutOfRange& o : a.out_of_range) r.out_of_range.push_back(o.name);
   if (!a.has_measured) return r;
+  // Measured on the mesh (measure_on_mesh: each quantity has a choice): no swept mesh's error
+  // range stands behind it.
   r.measured = true;
   const MeasuredQuantity& normal = a.measured.advice.quantities.front();
-  if (normal.chosen >= 0) {
-    const EstimatorChoice& c = a.measured.candidates[static_cast<size_t>(normal.chosen)];
-    r.normal_method = c.method;
-    r.normal_parameter = c.parameter;
-    r.normal_radius = c.radius;
-    r.normal_label = c.label;
-    r.normal_error = normal.cases[static_cast<size_t>(normal.chosen)].predicted;
-  }
+  const EstimatorChoice& c = a.measured.candidates[static_cast<size_t>(normal.chosen)];
+  r.normal_method = c.method;
+  r.normal_parameter = c.parameter;
+  r.normal_radius = c.radius;
+  r.normal_label = c.label;
+  r.normal_predicted = normal.cases[static_cast<size_t>(normal.chosen)].predicted;
+  r.error_low = r.error_high = MeshAdvice::kNaN;
   r.regret_median = a.measured.validated.back().median;
   r.regret_worst = a.measured.validated.back().worst;
   return r;
@@ -216,12 +217,7 @@ MeshAdvice recommend(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
   const std::optional<AdviceTable> cases = advice_cases_beside(table.name);
   const Mesh mesh = to_mesh(V, F);
   Advice a = advise(mesh, options.noise, table, cases ? &*cases : nullptr);
-  if (options.measure) {
-    if (!cases)
-      throw InputError("measure: no advice_cases.csv beside " + table.name +
-                       " (the candidates it measures; `make experiments` writes it)");
-    measure_on_mesh(a, mesh, *cases, options.threads);
-  }
+  if (options.measure) measure_on_mesh(a, mesh, cases ? &*cases : nullptr, options.threads);
   return mesh_advice(a);
 }
 

@@ -64,11 +64,8 @@ int run_recommend(const RecommendOptions& o) {
   const std::optional<AdviceTable> cases = advice_cases_beside(table.name);
   Advice a = advise(mesh, o.noise, table, cases ? &*cases : nullptr);
   if (o.measure) {
-    if (!cases)
-      throw InputError("--measure: no advice_cases.csv beside " + table.name +
-                       " (the candidates it measures; `make experiments` writes it)");
     std::fprintf(stderr, "curvbench: measuring the swept cases on %s...\n", o.path.c_str());
-    measure_on_mesh(a, mesh, *cases, o.threads);
+    measure_on_mesh(a, mesh, cases ? &*cases : nullptr, o.threads);
   }
   const std::string command = a.has_choice
                                   ? estimate_command(program_name(), o.path, a.choice,
@@ -107,13 +104,15 @@ Command add_recommend_command(CLI::App& app) {
                   "text: the advice in words and the command line (default); csv: the table's "
                   "header and row; json: the advice as one object")
       ->check(CLI::IsMember({"text", "csv", "json"}));
-  sub->add_flag("--measure", o->measure,
-                "Also measure the advice on the mesh itself: run every swept case on it and on it "
-                "perturbed by its noise, predict each case's error from the change and from its "
-                "distance to a degree-4 fit, and advise the least (docs/advice.md; slower: each "
-                "case runs 3 times); the command then runs its curvature choice");
+  CLI::Option* measure = sub->add_flag(
+      "--measure", o->measure,
+      "Also measure the advice on the mesh itself: run every swept case on it and on it "
+      "perturbed by its noise, predict each case's error from the change and from its "
+      "distance to a degree-4 fit, and advise the least (docs/advice.md; slower: each "
+      "case runs 3 times); the command then runs its curvature choice");
   sub->add_option("--threads", o->threads, "OpenMP threads of --measure (0: all cores)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::NonNegativeNumber)
+      ->needs(measure);
   sub->add_flag("--skip-invalid", o->skip_invalid,
                 "Drop vertices with a NaN/Inf coordinate and the faces using them (reported) "
                 "instead of failing (the printed command passes it on)");

@@ -211,7 +211,7 @@ py::dict advice_dict(const MeshAdvice& a) {
   d["regret_worst"] = number(a.regret_worst);
   d["out_of_range"] = a.out_of_range;
   d["measured"] = a.measured;
-  d["normal_error"] = number(a.normal_error);
+  d["normal_predicted"] = number(a.normal_predicted);
   return d;
 }
 
@@ -557,8 +557,9 @@ table and provenance (the file read and its first comment line).
 measure: also measure the advice on the mesh itself (as `curvbench recommend --measure`; each
 swept case runs 3 times on it, with `threads` threads): then method, options and label are the
 curvature choice measured on the mesh, error its predicted relative L2 error in H, normal_* the
-normals' measured choice with normal_error its predicted RMS error, measured True, and
-regret_median, regret_worst what the same measurement did on the swept meshes.
+normals' measured choice with normal_predicted its predicted RMS error, measured True, family
+'', level 0, error_low and error_high None, and regret_median, regret_worst what the same
+measurement did for H on the swept meshes.
 Raises MeshError for a mesh it cannot classify (under 50 vertices, non-manifold) and for a
 missing, truncated or foreign table; UsageError for a negative noise.)");
 

@@ -4,7 +4,8 @@
 //
 //   format 1.0, dtype [('vertex', '<i4'), (column, '<f8' or '<i4'), ...], shape (n,), packed
 //   vertex   the vertex index (with --skip-invalid: its index in the input file)
-//   columns  those asked for (--columns, harness/model/estimate_columns.h), by default every column of
+//   columns  those asked for (--columns, harness/model/estimate_columns.h), by default every column
+//   of
 //            the table (the PLY's: nx ... status, ring included); integer columns (degree,
 //            points, status as its code 0..7) as int32, the others as float64
 //

@@ -1,5 +1,7 @@
 #include "harness/model/estimator_choice.h"
 
+#include <algorithm>
+
 #include "core/errors.h"
 #include "core/text.h"
 #include "harness/model/results_table.h"
@@ -36,6 +38,15 @@ EstimatorChoice estimator_choice(const std::string& label) {
   if (!c.parameter.empty()) set_option(c.options, c.parameter, format_double(c.radius));
   (void)make_estimator(c.method, c.options);  // throws UsageError for what it cannot make
   return c;
+}
+
+std::vector<EstimatorChoice> distinct_estimator_choices(const std::vector<std::string>& labels) {
+  std::vector<EstimatorChoice> out;
+  for (const std::string& l : labels)
+    if (std::none_of(out.begin(), out.end(),
+                     [&](const EstimatorChoice& c) { return c.label == l; }))
+      out.push_back(estimator_choice(l));
+  return out;
 }
 
 }  // namespace curvbench

@@ -30,5 +30,7 @@ struct EstimatorChoice {
 /// Throws UsageError when the label names no method make_estimator() knows, or a radius the
 /// method does not take.
 EstimatorChoice estimator_choice(const std::string& label);
+/// The distinct labels, in first-seen order, as estimator choices; throws as estimator_choice.
+std::vector<EstimatorChoice> distinct_estimator_choices(const std::vector<std::string>& labels);
 
 }  // namespace curvbench

@@ -169,6 +169,19 @@ struct Experiment {
     return m.has_noise_model ? m.noise_model : noise_model;
   }
 
+  /// The mesh the runner generates for a mesh line at `level`: the one spec of it (the runner's
+  /// cache and the advice measured on the swept meshes read it).
+  MeshSpec mesh_spec(const ExperimentMesh& m, int level) const {
+    MeshSpec spec;
+    spec.family = m.family;
+    spec.level = level;
+    spec.noise_order = noise_order_of(m);
+    spec.seed = noise_seed;
+    spec.noise_model = noise_model_of(m);
+    spec.shape = m.shape;
+    return spec;
+  }
+
   /// Whether a fit of this degree gets the noisy-data half ring.
   bool noisy_for_degree(int degree) const {
     return noisy && (!noisy_quadratic_only || degree <= 2);

@@ -80,6 +80,7 @@ MeasuredAdvice measure_advice(const Mesh& mesh, const std::vector<EstimatorChoic
   advice.h = mesh.mean_edge_length();
   advice.sigma_over_h = options.sigma_over_h;
   advice.perturbation_over_h = std::max(options.sigma_over_h, kMeasuredNoiseFloor);
+  advice.perturbations = options.perturbations;
 
   // The reference ladder after the candidates (each reused when it is one).
   std::vector<EstimatorChoice> runs = candidates;
@@ -141,10 +142,12 @@ MeasuredAdvice measure_advice(const Mesh& mesh, const std::vector<EstimatorChoic
                                     {&out[r].of(q, p), -1.0},
                                     {&out[r].of(q, 0), 1.0}});
       const double apart = mean_square(width, {{&out[c].of(q, 0), 1.0}, {&out[r].of(q, 0), -1.0}});
-      return std::max(0.0, apart - pair / P);
+      const double d = apart - pair / P;
+      return std::isnan(d) ? d : std::max(0.0, d);  // NaN: no vertex where both are finite
     };
-    // The reference: the rung of least predicted error against the first rung.
-    size_t reference = ladder.front();
+    // The reference: the rung of least predicted error against the first rung (a rung without
+    // a finite prediction is none).
+    size_t reference = runs.size();
     double least = std::numeric_limits<double>::infinity();
     for (size_t r : ladder) {
       const double e = bias2(r, ladder.front()) + noise2(r);
@@ -152,6 +155,16 @@ MeasuredAdvice measure_advice(const Mesh& mesh, const std::vector<EstimatorChoic
     }
     MeasuredQuantity mq;
     mq.quantity = measured_quantities()[q];
+    if (reference == runs.size()) {  // no rung finite: nothing to measure against
+      for (const EstimatorChoice& c : candidates) {
+        MeasuredCase mc;
+        mc.label = c.label;
+        mc.predicted = std::numeric_limits<double>::infinity();
+        mq.cases.push_back(mc);
+      }
+      advice.quantities.push_back(std::move(mq));
+      continue;
+    }
     mq.reference = runs[reference].label;
     // H relative to the reference's RMS (the relative norm ratio's denominator); normals absolute.
     const double scale =

@@ -59,7 +59,8 @@ struct MeasuredCase {
 
 struct MeasuredQuantity {
   std::string quantity;
-  std::string reference;            ///< the rung of the ladder the bias parts are measured against
+  /// The rung the bias parts are measured against ("": no rung finite, every prediction +inf).
+  std::string reference;
   std::vector<MeasuredCase> cases;  ///< in the candidates' order
   int chosen = -1;                  ///< index of the least prediction (-1: none finite)
 };
@@ -68,6 +69,7 @@ struct MeasuredAdvice {
   double h = 0.0;                            ///< the mesh's mean edge length
   double sigma_over_h = 0.0;                 ///< as given
   double perturbation_over_h = 0.0;          ///< max(sigma_over_h, kMeasuredNoiseFloor)
+  int perturbations = 0;                     ///< as given
   std::vector<MeasuredQuantity> quantities;  ///< measured_quantities() order
 };
 

@@ -23,8 +23,9 @@ inline constexpr double kNoiseEstimateCoarseRelTol = 0.5;
 inline constexpr double kNoiseEstimateAbsTol = 0.0005;
 
 struct NoiseCheckSpec {
-  std::vector<std::string> families;  ///< empty: every mesh family of mesh_family_table() (no point sets)
-  std::vector<int> levels = {1, 2};   ///< levels above a family's largest are skipped
+  std::vector<std::string>
+      families;  ///< empty: every mesh family of mesh_family_table() (no point sets)
+  std::vector<int> levels = {1, 2};  ///< levels above a family's largest are skipped
   std::vector<double> sigmas = {0.0, 0.001, 0.003, 0.01, 0.03, 0.1};  ///< true sigma/h; 0 first
   std::uint64_t seed = 1;
 };

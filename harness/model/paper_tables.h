@@ -1,7 +1,7 @@
 // The paper's own numbers (Wang, Jiao et al., CAGD 2009), one home for every user: the claims
-// registry (harness/claims_*.cpp), REPORT.md (harness/report/report.cpp), `curvbench mesh --table4`,
-// the report's Table 5 (harness/report/table5.cpp) and the tests. docs/claims.md explains
-// each table.
+// registry (harness/claims_*.cpp), REPORT.md (harness/report/report.cpp), `curvbench mesh
+// --table4`, the report's Table 5 (harness/report/table5.cpp) and the tests. docs/claims.md
+// explains each table.
 //
 //   kTable2  §3.2 Table 2: per degree d = 1..6 the number of coefficients and the number of points
 //            (centre included) of the (d+1)/2-ring of an interior vertex of a valence-6 mesh

@@ -408,17 +408,23 @@ std::vector<MeasuredAdviceRow> measure_swept_advice(
   for (size_t i = 0; i < meshes.size(); ++i) {
     const SweptNoisyMesh& m = meshes[i];
     if (progress) progress(m, i);
-    // The candidates: the cases the sweep ran on this mesh, with their true errors.
-    std::vector<EstimatorChoice> candidates;
+    // The candidates: the cases the sweep ran on this mesh with a true error in every quantity
+    // measured, so that whichever is chosen is scored.
     std::map<std::pair<std::string, std::string>, double> error;  // (quantity, label)
-    for (const AdviceCase& c : cases) {
-      if (c.family != m.family || c.level != m.level || !same_level(c.sigma_over_h, m.sigma_over_h))
-        continue;
-      error[{c.quantity, c.label}] = c.error;
-      if (std::none_of(candidates.begin(), candidates.end(),
-                       [&](const EstimatorChoice& e) { return e.label == c.label; }))
-        candidates.push_back(estimator_choice(c.label));
-    }
+    std::vector<std::string> labels;
+    for (const AdviceCase& c : cases)
+      if (c.family == m.family && c.level == m.level &&
+          same_level(c.sigma_over_h, m.sigma_over_h)) {
+        error[{c.quantity, c.label}] = c.error;
+        labels.push_back(c.label);
+      }
+    std::erase_if(labels, [&](const std::string& l) {
+      return std::any_of(measured_quantities().begin(), measured_quantities().end(),
+                         [&](const std::string& q) {
+                           return !error.count({q, l});
+                         });
+    });
+    const std::vector<EstimatorChoice> candidates = distinct_estimator_choices(labels);
     if (candidates.empty()) continue;
     const Mesh mesh = generate_mesh(m.spec).mesh;
     MeasuredAdviceOptions o;
@@ -427,7 +433,6 @@ std::vector<MeasuredAdviceRow> measure_swept_advice(
     for (const MeasuredQuantity& q : a.quantities)
       for (size_t k = 0; k < q.cases.size(); ++k) {
         const auto e = error.find({q.quantity, q.cases[k].label});
-        if (e == error.end()) continue;  // a quantity the sweep's rows lack for the case
         MeasuredAdviceRow r;
         r.family = m.family;
         r.level = m.level;
@@ -449,7 +454,7 @@ std::vector<MeasuredAdviceRow> measure_swept_advice(
 std::vector<CrossValidationRow> measured_regrets(const std::vector<MeasuredAdviceRow>& rows) {
   std::vector<CrossValidationRow> out;
   for (size_t i = 0; i < rows.size();) {
-    size_t j = i;  // rows of one mesh, noise level and quantity are consecutive
+    size_t j = i + 1;  // rows of one mesh, noise level and quantity are consecutive
     while (j < rows.size() && rows[j].family == rows[i].family && rows[j].level == rows[i].level &&
            same_level(rows[j].sigma_over_h, rows[i].sigma_over_h) &&
            rows[j].quantity == rows[i].quantity)
@@ -541,18 +546,57 @@ std::vector<CrossValidationRow> read_cross_validation_csv(const std::string& pat
   return rows;
 }
 
+namespace {
+
+// "LHF-4 rings=2, LHF-4 rings=3, LHF-4 rings=4".
+std::string reference_ladder_text() {
+  std::string t;
+  for (const char* r : kMeasuredReferences) t += (t.empty() ? "" : ", ") + std::string(r);
+  return t;
+}
+
+// Per quantity, a row per noise level and one for all: cases, median and worst regret, the share
+// within 2x and the goal.
+report::Table regret_summary_table(const std::string& id, const std::string& cases_column,
+                                   const std::vector<CrossValidationRow>& rows,
+                                   const std::vector<double>& levels) {
+  report::Table sum;
+  sum.id = id;
+  sum.columns = {"quantity",     "noise sigma/h", cases_column, "median regret",
+                 "worst regret", "within 2x",     "goal"};
+  sum.numeric = {false, true, true, true, true, true, false};
+  for (const std::string& q : advice_quantities()) {
+    auto add = [&](double level, const std::string& level_text) {
+      const RegretSummary r = summarize_regret(rows, q, level);
+      if (r.cases == 0) return;
+      sum.add({advice_quantity_words(q), report::Cell::number(level, level_text),
+               report::Cell::number(r.cases, std::to_string(r.cases)),
+               report::Cell::number(r.median, regret_text(r.median)),
+               report::Cell::number(r.worst, regret_text(r.worst)),
+               report::Cell::number(r.within_goal, share_text(r.within_goal)),
+               r.meets_goal() ? "met" : "missed"});
+    };
+    for (double l : levels) add(l, format_g(l));
+    add(std::nan(""), "all");
+  }
+  return sum;
+}
+
+}  // namespace
+
 report::Section cross_validation_section(const std::vector<CrossValidationRow>& rows,
                                          const std::vector<CrossValidationRow>& measured) {
   report::Section s{"advice-cross-validation", "Advice on meshes it never saw", {}};
   std::vector<std::string> families;
   std::vector<double> levels;
-  for (const CrossValidationRow& r : rows) {
-    if (std::find(families.begin(), families.end(), r.family) == families.end())
-      families.push_back(r.family);
-    if (std::none_of(levels.begin(), levels.end(),
-                     [&](double l) { return same_level(l, r.sigma_over_h); }))
-      levels.push_back(r.sigma_over_h);
-  }
+  for (const std::vector<CrossValidationRow>* set : {&rows, &measured})
+    for (const CrossValidationRow& r : *set) {
+      if (std::find(families.begin(), families.end(), r.family) == families.end())
+        families.push_back(r.family);
+      if (std::none_of(levels.begin(), levels.end(),
+                       [&](double l) { return same_level(l, r.sigma_over_h); }))
+        levels.push_back(r.sigma_over_h);
+    }
   std::sort(levels.begin(), levels.end());
   char goal[200];
   std::snprintf(goal, sizeof goal,
@@ -571,59 +615,21 @@ report::Section cross_validation_section(const std::vector<CrossValidationRow>& 
       std::string(goal) + ". Rows: `advice_cross_validation.csv`; the cases: `advice_cases.csv`.");
   if (rows.empty()) return s.text("No radius sweep with the advice's quantities ran.");
 
-  report::Table sum;
-  sum.id = "advice-regret-summary";
-  sum.columns = {"quantity",  "noise sigma/h", "held-out cases", "median regret", "worst regret",
-                 "within 2x", "goal"};
-  sum.numeric = {false, true, true, true, true, true, false};
-  for (const std::string& q : advice_quantities()) {
-    auto add = [&](double level, const std::string& level_text) {
-      const RegretSummary r = summarize_regret(rows, q, level);
-      if (r.cases == 0) return;
-      sum.add({advice_quantity_words(q), report::Cell::number(level, level_text),
-               report::Cell::number(r.cases, std::to_string(r.cases)),
-               report::Cell::number(r.median, regret_text(r.median)),
-               report::Cell::number(r.worst, regret_text(r.worst)),
-               report::Cell::number(r.within_goal, share_text(r.within_goal)),
-               r.meets_goal() ? "met" : "missed"});
-    };
-    for (double l : levels) add(l, format_g(l));
-    add(std::nan(""), "all");
-  }
-  const std::vector<std::string> summary_columns = sum.columns;
-  const std::vector<bool> summary_numeric = sum.numeric;
-  s.table(std::move(sum));
-
+  s.table(regret_summary_table("advice-regret-summary", "held-out cases", rows, levels));
   if (!measured.empty()) {
     s.text(
         "Measured on the mesh (`curvbench recommend --measure`; docs/advice.md): each held-out "
-        "mesh's own noise estimated, every case run on it and on it perturbed twice by that "
-        "noise along the normals of a degree-4 fit; a case's error predicted as the root of the "
-        "sum of squares of the change the perturbations cause (the noise part) and of its "
-        "distance to a reference, less the noise in that distance (the bias part); the reference "
-        "is LHF-4 on 2, 3 or 4 rings, the one of least predicted error against the 2 rings; the "
-        "least prediction advised. It "
-        "learns nothing from the other families. Rows: `advice_measured.csv`.");
-    report::Table m;
-    m.id = "advice-measured-summary";
-    m.columns = summary_columns;
-    m.columns[2] = "meshes";
-    m.numeric = summary_numeric;
-    for (const std::string& q : advice_quantities()) {
-      auto add = [&](double level, const std::string& level_text) {
-        const RegretSummary r = summarize_regret(measured, q, level);
-        if (r.cases == 0) return;
-        m.add({advice_quantity_words(q), report::Cell::number(level, level_text),
-               report::Cell::number(r.cases, std::to_string(r.cases)),
-               report::Cell::number(r.median, regret_text(r.median)),
-               report::Cell::number(r.worst, regret_text(r.worst)),
-               report::Cell::number(r.within_goal, share_text(r.within_goal)),
-               r.meets_goal() ? "met" : "missed"});
-      };
-      for (double l : levels) add(l, format_g(l));
-      add(std::nan(""), "all");
-    }
-    s.table(std::move(m));
+        "mesh's own noise estimated, every case run on it and on it perturbed " +
+        std::to_string(kMeasuredPerturbations) + " times by that noise along the normals of " +
+        std::string(kMeasuredReferences[0]) +
+        "; a case's error predicted as the root of the sum of squares of the change the "
+        "perturbations cause (the noise part) and of its distance to a reference, less the "
+        "noise in that distance (the bias part); the reference is the rung of " +
+        reference_ladder_text() +
+        " of least predicted error against the first; the least "
+        "prediction advised. It learns nothing from the other families. Rows: "
+        "`advice_measured.csv`.");
+    s.table(regret_summary_table("advice-measured-summary", "meshes", measured, levels));
   }
 
   report::Table tab;

@@ -210,39 +210,46 @@ std::optional<AdviceTable> advice_cases_beside(const std::string& table_path) {
   return read_advice_cases_csv(dir.empty() ? "." : dir.string());
 }
 
-void measure_on_mesh(Advice& a, const Mesh& mesh, const AdviceTable& cases, int threads) {
+void measure_on_mesh(Advice& a, const Mesh& mesh, const AdviceTable* cases, int threads) {
+  if (!cases)
+    throw InputError("measure: no advice_cases.csv beside " + a.table +
+                     " (the candidates it measures; `make experiments` writes it)");
   MeasuredRecommendation m;
-  for (const AdviceCase& c : cases.cases)
-    if (std::none_of(m.candidates.begin(), m.candidates.end(),
-                     [&](const EstimatorChoice& e) { return e.label == c.label; })) {
-      try {
-        m.candidates.push_back(estimator_choice(c.label));
-      } catch (const UsageError& e) {
-        throw InputError(cases.name + ": case '" + c.label +
-                         "' is no estimator curvbench estimate runs (" + e.what() + ")");
-      }
-    }
+  std::vector<std::string> labels;
+  for (const AdviceCase& c : cases->cases) labels.push_back(c.label);
+  try {
+    m.candidates = distinct_estimator_choices(labels);
+  } catch (const UsageError& e) {
+    throw InputError(cases->name + ": a case is no estimator curvbench estimate runs (" + e.what() +
+                     ")");
+  }
   MeasuredAdviceOptions o;
   o.sigma_over_h = a.sigma_over_h;
   o.threads = threads;
   m.advice = measure_advice(orient_mesh(mesh).mesh, m.candidates, o);
+  for (const MeasuredQuantity& q : m.advice.quantities)
+    if (q.chosen < 0)
+      throw InputError(mesh.source() + ": no case gave a finite " +
+                       advice_quantity_words(q.quantity) +
+                       " on this mesh to measure the advice with");
   const std::filesystem::path measured_csv =
-      std::filesystem::path(cases.name).parent_path() / "advice_measured.csv";
+      std::filesystem::path(cases->name).parent_path() / "advice_measured.csv";
   std::vector<CrossValidationRow> regrets;
   std::error_code ec;
   if (std::filesystem::is_regular_file(measured_csv, ec))
     regrets = measured_regrets(read_measured_advice_csv(measured_csv.string()));
   for (const std::string& q : measured_quantities())
     m.validated.push_back(summarize_regret(regrets, q));
+  // The curvature's measured choice replaces the learned one; no swept mesh stands behind it.
   const MeasuredQuantity& curvature = m.advice.quantities.back();
-  if (curvature.chosen >= 0) {
-    a.choice = m.candidates[curvature.chosen];
-    a.has_choice = true;
-    a.label = a.choice.label;
-    a.quantity = curvature.quantity;
-    a.error = curvature.cases[curvature.chosen].predicted;
-    a.experiment = "measured on the mesh";
-  }
+  a.choice = m.candidates[static_cast<size_t>(curvature.chosen)];
+  a.has_choice = true;
+  a.label = a.choice.label;
+  a.quantity = curvature.quantity;
+  a.error = curvature.cases[static_cast<size_t>(curvature.chosen)].predicted;
+  a.experiment = "measured on the mesh";
+  a.family.clear();
+  a.level = 0;
   a.measured = std::move(m);
   a.has_measured = true;
 }
@@ -492,12 +499,9 @@ std::string measured_advice_text(const Advice& a) {
   for (size_t k = 0; k < m.advice.quantities.size(); ++k) {
     const MeasuredQuantity& q = m.advice.quantities[k];
     const std::string head = q.quantity == "normal" ? "normals:    " : "curvatures: ";
-    if (q.chosen < 0) {
-      s += head + "none: no case gave a finite value\n";
-      continue;
-    }
-    const MeasuredCase& c = q.cases[q.chosen];
-    s += head + m.candidates[q.chosen].text() + "; case `" + c.label + "`, predicted " +
+    const MeasuredCase& c = q.cases[static_cast<size_t>(q.chosen)];  // measure_on_mesh: >= 0
+    s += head + m.candidates[static_cast<size_t>(q.chosen)].text() + "; case `" + c.label +
+         "`, predicted " +
          (q.quantity == "normal" ? "RMS normal error " : "relative L2 error in H ") +
          scientific(c.predicted) + " (noise part " + scientific(c.noise_part) + ", bias part " +
          scientific(c.bias_part) + " against " + q.reference + ")\n";
@@ -510,7 +514,8 @@ std::string measured_advice_text(const Advice& a) {
            number_text("%.2f", v.worst) + " times the best error\n";
     }
   }
-  s += "measured:   the command below runs the curvature's choice\n";
+  s += "measured:   the command below runs the curvature's measured choice (not the learned one "
+       "above)\n";
   return s;
 }
 
@@ -659,19 +664,26 @@ std::string advice_json(const Advice& a, const std::string& mesh_path, const std
   j += "}";
   if (a.has_feature_advice) j += feature_advice_json(a);
   if (a.has_measured) {
-    j += ", \"measured\": {\"perturbation_over_h\": " +
-         json_number(a.measured.advice.perturbation_over_h);
-    for (const MeasuredQuantity& q : a.measured.advice.quantities) {
-      j += ", " + json_string(q.quantity) + ": ";
-      if (q.chosen < 0) {
-        j += "null";
-        continue;
-      }
-      const MeasuredCase& c = q.cases[q.chosen];
-      j += "{\"label\": " + json_string(c.label) + ", \"reference\": " + json_string(q.reference) +
+    const MeasuredRecommendation& m = a.measured;
+    j += ", \"measured_advice\": {\"perturbation_over_h\": " +
+         json_number(m.advice.perturbation_over_h) +
+         ", \"perturbations\": " + std::to_string(m.advice.perturbations);
+    for (size_t k = 0; k < m.advice.quantities.size(); ++k) {
+      const MeasuredQuantity& q = m.advice.quantities[k];
+      const MeasuredCase& c = q.cases[static_cast<size_t>(q.chosen)];  // measure_on_mesh: >= 0
+      j += ", " + json_string(q.quantity) + ": {\"label\": " + json_string(c.label) +
+           ", \"reference\": " + json_string(q.reference) +
            ", \"predicted\": " + json_number(c.predicted) +
            ", \"noise_part\": " + json_number(c.noise_part) +
-           ", \"bias_part\": " + json_number(c.bias_part) + "}";
+           ", \"bias_part\": " + json_number(c.bias_part);
+      if (k < m.validated.size()) {
+        const RegretSummary& v = m.validated[k];
+        j += ", \"validated\": {\"cases\": " + std::to_string(v.cases) +
+             ", \"within_2x\": " + json_number(v.within_goal) +
+             ", \"median_regret\": " + json_number(v.median) +
+             ", \"worst_regret\": " + json_number(v.worst) + "}";
+      }
+      j += "}";
     }
     j += "}";
   }

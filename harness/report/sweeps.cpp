@@ -1,5 +1,6 @@
 #include "harness/report/sweeps.h"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -411,16 +412,8 @@ bool sweeps_section(const std::vector<Experiment>& experiments, const ReportOpti
         const int order = e.noise_order_of(m);
         const double sigma = normal_noise_sigma(noise_level(order, e.noise_model_of(m)));
         if (std::isnan(sigma)) continue;
-        for (int level : m.levels) {
-          MeshSpec spec;
-          spec.family = m.family;
-          spec.level = level;
-          spec.noise_order = order;
-          spec.seed = e.noise_seed;
-          spec.noise_model = e.noise_model_of(m);
-          spec.shape = m.shape;
-          noisy_meshes.push_back({m.label(), level, sigma, spec});
-        }
+        for (int level : m.levels)
+          noisy_meshes.push_back({m.label(), level, sigma, e.mesh_spec(m, level)});
       }
       const std::string timing_csv = dir + "/timings/" + e.name + ".csv";
       if (fs::exists(timing_csv))

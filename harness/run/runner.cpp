@@ -92,9 +92,6 @@ std::vector<std::pair<Quantity, Norm>> panel_measures(const Experiment& e) {
 const ScoredMesh& MeshCache::get(const std::string& family, int level, int noise_order,
                                  std::uint64_t seed, const NoiseModel& model,
                                  const MeshShape& shape) {
-  const auto key = std::make_tuple(family, level, noise_order, seed, model, shape);
-  auto it = meshes_.find(key);
-  if (it != meshes_.end()) return *it->second;
   MeshSpec spec;
   spec.family = family;
   spec.level = level;
@@ -102,6 +99,14 @@ const ScoredMesh& MeshCache::get(const std::string& family, int level, int noise
   spec.seed = seed;
   spec.noise_model = model;
   spec.shape = shape;
+  return get(spec);
+}
+
+const ScoredMesh& MeshCache::get(const MeshSpec& spec) {
+  const auto key = std::make_tuple(spec.family, spec.level, spec.noise_order, spec.seed,
+                                   spec.noise_model, spec.shape);
+  auto it = meshes_.find(key);
+  if (it != meshes_.end()) return *it->second;
   auto scored = std::make_unique<ScoredMesh>();
   scored->generated = generate_mesh(spec);
   const auto& g = scored->generated;
@@ -144,8 +149,7 @@ std::vector<RunCase> expand_cases(const std::vector<Experiment>& experiments) {
 std::vector<ErrorRow> run_case(const RunCase& c, MeshCache& cache, int threads,
                                std::vector<CauseRow>* causes) {
   const Experiment& e = *c.experiment;
-  const ScoredMesh& sm = cache.get(c.mesh->family, c.level, e.noise_order_of(*c.mesh), e.noise_seed,
-                                   e.noise_model_of(*c.mesh), c.mesh->shape);
+  const ScoredMesh& sm = cache.get(e.mesh_spec(*c.mesh, c.level));
   const Mesh& mesh = sm.generated.mesh;
 
   using clock = std::chrono::steady_clock;

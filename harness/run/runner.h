@@ -36,6 +36,7 @@ struct ScoredMesh {
 /// generated on first use.
 class MeshCache {
  public:
+  const ScoredMesh& get(const MeshSpec& spec);
   const ScoredMesh& get(const std::string& family, int level, int noise_order, std::uint64_t seed,
                         const NoiseModel& model = {}, const MeshShape& shape = {});
 

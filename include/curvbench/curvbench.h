@@ -77,11 +77,12 @@ struct MeshAdvice {
   std::vector<std::string> out_of_range;  ///< features outside the swept meshes' range
   // With RecommendOptions::measure (docs/advice.md, "Measured on the mesh"): both choices are
   // those measured on the mesh itself, `error` is the curvature choice's predicted relative L2
-  // error in H, experiment is "measured on the mesh", and regret_median, regret_worst are what
-  // the same measurement did on the swept meshes (advice_measured.csv beside the table; NaN
+  // error in H, experiment is "measured on the mesh" (family empty, level 0, error_low and
+  // error_high NaN: no swept mesh stands behind it), and regret_median, regret_worst are what the
+  // same measurement did for H on the swept meshes (advice_measured.csv beside the table; NaN
   // without it).
   bool measured = false;
-  double normal_error = kNaN;  ///< the normals' choice's predicted RMS error
+  double normal_predicted = kNaN;  ///< the normals' choice's predicted RMS error
 };
 
 /// Per-vertex estimates; row/entry i belongs to vertex i.

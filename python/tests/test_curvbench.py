@@ -382,15 +382,17 @@ def test_measured_advice_matches_the_command_line(tmp_path):
     assert r.returncode == 0, r.stderr
     r = cli("recommend", path, "--measure", "--format", "json")
     assert r.returncode == 0, r.stderr
-    want = json.loads(r.stdout)["measured"]
+    want = json.loads(r.stdout)["measured_advice"]
     V, F = curvbench.read_mesh(str(path))
     rec = curvbench.recommend(V, F, measure=True, threads=1)
     assert rec["measured"] is True
     assert rec["label"] == want["H"]["label"]
     assert rec["error"] == pytest.approx(want["H"]["predicted"], rel=1e-12)
     assert rec["normal_label"] == want["normal"]["label"]
-    assert rec["normal_error"] == pytest.approx(want["normal"]["predicted"], rel=1e-12)
-    assert rec["experiment"] == "measured on the mesh"
+    assert rec["normal_predicted"] == pytest.approx(want["normal"]["predicted"], rel=1e-12)
+    assert rec["experiment"] == "measured on the mesh" and rec["family"] == ""
+    assert rec["error_low"] is None and rec["error_high"] is None
+    assert rec["regret_median"] == pytest.approx(want["H"]["validated"]["median_regret"], rel=1e-12)
     assert rec["regret_worst"] >= rec["regret_median"] >= 1.0
     assert curvbench.recommend(V, F)["measured"] is False
     (tmp_path / "recommendations.csv").write_bytes(

@@ -48,11 +48,22 @@ TEST(CliRecommendMeasure, PrintsTheMeasuredChoicePerQuantityAndRunsTheCurvatures
   std::string lower_method;
   for (char c : method) lower_method += static_cast<char>(std::tolower(c));
   EXPECT_NE(run.find("--method " + lower_method), std::string::npos) << label << " | " << run;
+  // ... with its radius ("LHF-2 rings=3" -> --rings 3; "ICC ball-factor=2" -> --ball-factor 2).
+  const size_t eq = label.find('=');
+  if (eq != std::string::npos) {
+    const std::string flag = "--" + label.substr(label.find(' ') + 1, eq - label.find(' ') - 1) +
+                             " " + label.substr(eq + 1);
+    EXPECT_NE(run.find(flag), std::string::npos) << label << " | " << run;
+  }
 
   const auto j = run_cli("recommend " + mesh + " --measure --format json --results " + kResults);
   ASSERT_EQ(j.exit_code, 0) << j.output;
-  EXPECT_NE(j.output.find("\"measured\": {\"perturbation_over_h\": "), std::string::npos);
+  EXPECT_NE(j.output.find("\"measured_advice\": {\"perturbation_over_h\": "), std::string::npos);
   EXPECT_NE(j.output.find("\"H\": {\"label\": \"" + label + "\""), std::string::npos) << j.output;
+  const std::string normal_label = normals.substr(
+      normals.find('`') + 1, normals.find('`', normals.find('`') + 1) - normals.find('`') - 1);
+  EXPECT_NE(j.output.find("\"normal\": {\"label\": \"" + normal_label + "\""), std::string::npos)
+      << j.output;
 }
 
 TEST(CliRecommendMeasure, NeedsTheAdviceCases) {
@@ -62,7 +73,9 @@ TEST(CliRecommendMeasure, NeedsTheAdviceCases) {
   ASSERT_EQ(run_cli("mesh --family torus-unstructured --level 1 --output " + mesh).exit_code, 0);
   const auto r = run_cli("recommend " + mesh + " --measure --results " + dir.string());
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find("--measure: no advice_cases.csv beside"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("measure: no advice_cases.csv beside"), std::string::npos) << r.output;
+  // --threads belongs to --measure.
+  EXPECT_EQ(run_cli("recommend " + mesh + " --threads 2 --results " + dir.string()).exit_code, 2);
   // Without --measure the same folder still advises (the class table).
   EXPECT_EQ(run_cli("recommend " + mesh + " --results " + dir.string()).exit_code, 0);
 }
