@@ -1,12 +1,16 @@
-// Runs build/curvbench as a child process and captures its exit code and output.
+// Runs build/curvbench as a child process and captures its exit code and output; and the file
+// helpers of the tests that read and write its files: a fresh directory, a file's bytes, writing
+// a file, every file under a directory.
 #pragma once
 
 #include <unistd.h>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace curvbench::testing {
 
@@ -44,6 +48,26 @@ inline std::string slurp(const std::filesystem::path& p) {
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
+}
+
+/// Writes `text` to the file `p`, creating its directory first.
+inline void write_text(const std::filesystem::path& p, const std::string& text) {
+  std::filesystem::create_directories(p.parent_path());
+  std::ofstream(p) << text;
+}
+
+/// Every file under `dir` (path relative to `dir` -> bytes), skipping the paths that start with
+/// one of `skipped_prefixes`.
+inline std::map<std::string, std::string> files_under(
+    const std::filesystem::path& dir, const std::vector<std::string>& skipped_prefixes) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
+    const std::string rel = std::filesystem::relative(entry.path(), dir).string();
+    bool skipped = !entry.is_regular_file();
+    for (const std::string& prefix : skipped_prefixes) skipped |= rel.rfind(prefix, 0) == 0;
+    if (!skipped) files[rel] = slurp(entry.path());
+  }
+  return files;
 }
 
 }  // namespace curvbench::testing

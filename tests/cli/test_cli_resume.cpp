@@ -30,7 +30,7 @@ namespace fs = std::filesystem;
 
 // 2 meshes x 3 levels x 3 methods = 18 cases, a few seconds in all: long enough to be stopped
 // in the middle, short enough for the suite.
-fs::path write_experiment(const fs::path& dir) {
+fs::path write_resume_experiment(const fs::path& dir) {
   fs::create_directories(dir / "experiments");
   std::ofstream(dir / "experiments" / "resume.exp")
       << "title   \"Resume check\"\n"
@@ -122,15 +122,8 @@ int run_and_signal(const fs::path& exp_dir, const fs::path& out, const fs::path&
 
 // Every file under `dir` (relative path -> bytes), skipping the case store and the measured
 // estimation times (timings/: each computed case has its own; checked separately below).
-std::map<std::string, std::string> outputs(const fs::path& dir) {
-  std::map<std::string, std::string> files;
-  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
-    const auto rel = fs::relative(entry.path(), dir).string();
-    if (!entry.is_regular_file() || rel.rfind(".cache", 0) == 0 || rel.rfind("timings", 0) == 0)
-      continue;
-    files[rel] = slurp(entry.path());
-  }
-  return files;
+std::map<std::string, std::string> outputs_without_timings(const fs::path& dir) {
+  return testing::files_under(dir, {".cache", "timings"});
 }
 
 int reused_count(const std::string& log) {
@@ -143,11 +136,12 @@ class CliResume : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     root_ = new fs::path(fresh_dir("cli_resume"));
-    exp_dir_ = new fs::path(write_experiment(*root_));
+    exp_dir_ = new fs::path(write_resume_experiment(*root_));
     const auto [code, log] = run_to_end(*exp_dir_, *root_ / "reference", *root_ / "reference.log");
     ASSERT_EQ(code, 0) << log;
     ASSERT_EQ(reused_count(log), 0) << log;
-    reference_ = new std::map<std::string, std::string>(outputs(*root_ / "reference"));
+    reference_ =
+        new std::map<std::string, std::string>(outputs_without_timings(*root_ / "reference"));
   }
   static void TearDownTestSuite() {
     fs::remove_all(*root_);
@@ -158,7 +152,7 @@ class CliResume : public ::testing::Test {
 
   // The outputs of `out` are those of the uninterrupted reference run, file for file.
   static void expect_same_as_reference(const fs::path& out) {
-    const auto got = outputs(out);
+    const auto got = outputs_without_timings(out);
     ASSERT_FALSE(reference_->empty());
     EXPECT_EQ(got.size(), reference_->size());
     for (const auto& [name, bytes] : *reference_) {

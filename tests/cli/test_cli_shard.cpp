@@ -29,7 +29,7 @@ using testing::slurp;
 namespace fs = std::filesystem;
 
 // 2 meshes x 2 levels x 3 methods = 12 small cases.
-void write_experiment(const fs::path& dir) {
+void write_shard_experiment(const fs::path& dir) {
   fs::create_directories(dir);
   std::ofstream(dir / "shard.exp")
       << "title   \"Shard check\"\n"
@@ -52,14 +52,8 @@ std::vector<std::string> lines(const std::string& text) {
 }
 
 // Every file under `dir` (relative path -> bytes), skipping the case store.
-std::map<std::string, std::string> outputs(const fs::path& dir) {
-  std::map<std::string, std::string> files;
-  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
-    const auto rel = fs::relative(entry.path(), dir).string();
-    if (!entry.is_regular_file() || rel.rfind(".cache", 0) == 0) continue;
-    files[rel] = slurp(entry.path());
-  }
-  return files;
+std::map<std::string, std::string> outputs_without_cache(const fs::path& dir) {
+  return testing::files_under(dir, {".cache"});
 }
 
 class CliShard : public ::testing::Test {
@@ -67,7 +61,7 @@ class CliShard : public ::testing::Test {
   void SetUp() override {
     ::setenv("SOURCE_DATE_EPOCH", "1790000000", 1);
     root_ = fresh_dir("cli_shard");
-    write_experiment(root_ / "experiments");
+    write_shard_experiment(root_ / "experiments");
     common_ =
         " --experiments-dir " + (root_ / "experiments").string() + " --table4-max 16 --threads 1";
   }
@@ -133,7 +127,7 @@ TEST_F(CliShard, ThreeShardProcessesThenTheReportEqualOneRun) {
 
   r = run_cli(report + common_);
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const auto want = outputs(single), got = outputs(sharded);
+  const auto want = outputs_without_cache(single), got = outputs_without_cache(sharded);
   ASSERT_TRUE(want.count("REPORT.md") && want.count("shard.csv") && want.count("CLAIMS.md"));
   ASSERT_TRUE(want.count("plots/shard-h_torus-structured.svg"));
   ASSERT_TRUE(want.count("errors_by_cause/shard.csv"));  // from the store's finest-level cases
@@ -203,8 +197,8 @@ TEST_F(CliShard, ThreeShardProcessesThenTheReportEqualOneRun) {
   EXPECT_NE(r.output.find(ids.front()), std::string::npos) << r.output;
 }
 
-// The alternative readings (harness/readings/readings.h) are cases too: each shard computes its part of
-// them into the store's readings/ folder, and the report writes their CSVs as one run does.
+// The alternative readings (harness/readings/readings.h) are cases too: each shard computes its
+// part of them into the store's readings/ folder, and the report writes their CSVs as one run does.
 TEST_F(CliShard, ShardsComputeTheReadingsToo) {
   const fs::path dir = root_ / "reading-experiments";
   fs::create_directories(dir);
@@ -231,7 +225,7 @@ TEST_F(CliShard, ShardsComputeTheReadingsToo) {
   const auto r = run_cli("run well --report-only --cache " + store.string() + " --output " +
                          sharded.string() + common);
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const auto want = outputs(single), got = outputs(sharded);
+  const auto want = outputs_without_cache(single), got = outputs_without_cache(sharded);
   for (const char* name : {"well.csv", "CLAIMS.md", "REPORT.md"}) {
     ASSERT_TRUE(want.count(name) && got.count(name)) << name;
     EXPECT_TRUE(got.at(name) == want.at(name)) << name << " differs from the single-process run";

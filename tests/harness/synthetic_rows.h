@@ -1,5 +1,6 @@
 // Synthetic error rows for the report tests: one method's H L2 series over levels 1-3 of a
-// family, h = 0.4, 0.2, 0.1 and errors e0 (h / 0.4)^rate, so that every rate is known exactly.
+// family, h = 0.4, 0.2, 0.1 and errors e0 (h / 0.4)^rate, so that every rate is known exactly;
+// and single rows of a sweep (one level, one error per method, noise and quantity).
 #pragma once
 
 #include <cmath>
@@ -11,8 +12,8 @@
 namespace curvbench::testing {
 
 inline std::vector<ErrorRow> synthetic_series(const std::string& experiment,
-                                              const std::string& family,
-                                              const std::string& method, double e0, double rate) {
+                                              const std::string& family, const std::string& method,
+                                              double e0, double rate) {
   ErrorRow like;  // the columns the levels share
   like.experiment = experiment;
   like.surface = "bump";
@@ -34,6 +35,28 @@ inline std::vector<ErrorRow> synthetic_series(const std::string& experiment,
     rows.push_back(r);
   }
   return rows;
+}
+
+/// One L2 error row of the experiment "sweep-test" on the torus at level 2 (5000 vertices,
+/// h = 0.05), its typed columns filled as reading the CSV does.
+inline ErrorRow sweep_row(const std::string& family, const std::string& method,
+                          const std::string& noise, double error,
+                          const std::string& quantity = "H") {
+  ErrorRow r;
+  r.experiment = "sweep-test";
+  r.surface = "torus";
+  r.family = family;
+  r.level = 2;
+  r.vertices = 5000;
+  r.h = 0.05;
+  r.method = method;
+  r.noise = noise;
+  r.vertex_set = "all";
+  r.quantity = quantity;
+  r.norm = "L2";
+  r.error = error;
+  type_columns(r);
+  return r;
 }
 
 }  // namespace curvbench::testing

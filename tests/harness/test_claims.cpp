@@ -23,11 +23,13 @@
 #include "harness/claims/kit.h"
 #include "harness/model/paper_tables.h"
 #include "harness/model/results_table.h"
+#include "tests/cli/cli_runner.h"
 
 namespace curvbench {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::write_text;
 
 const std::vector<std::string> kAllIds = {
     "A1", "A2", "A3", "A4", "A5", "B1", "B2", "B3", "B4", "B5", "B6", "C1", "C2", "C3", "C4",
@@ -53,11 +55,6 @@ class TempDir {
  private:
   fs::path path_;
 };
-
-void write_text(const std::string& path, const std::string& text) {
-  std::ofstream out(path);
-  out << text;
-}
 
 double h_of(int level) {
   return 0.25 / std::pow(2.0, level - 1);

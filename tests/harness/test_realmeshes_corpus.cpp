@@ -19,11 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 using testing::fresh_dir;
 using testing::slurp;
-
-void write_text(const fs::path& path, const std::string& text) {
-  fs::create_directories(path.parent_path());
-  std::ofstream(path) << text;
-}
+using testing::write_text;
 
 // The lines of `md` that start with `prefix`, joined.
 std::string lines_starting(const std::string& md, const std::string& prefix) {

@@ -1,6 +1,6 @@
-// Recommendations (harness/report/recommend.h): the table is what the sweep rows and timings imply (best,
-// cheapest within 2x, ties, a missing timing, a noise level not swept), the CSV carries it, and
-// the mesh classification and noise estimate on the families the table stands for.
+// Recommendations (harness/report/recommend.h): the table is what the sweep rows and timings imply
+// (best, cheapest within 2x, ties, a missing timing, a noise level not swept), the CSV carries it,
+// and the mesh classification and noise estimate on the families the table stands for.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,35 +11,19 @@
 #include <vector>
 
 #include "core/errors.h"
-#include "harness/report/recommend.h"
 #include "harness/model/results_table.h"
+#include "harness/report/recommend.h"
 #include "meshgen/generate.h"
 #include "meshgen/noise.h"
 #include "tests/cli/cli_runner.h"
+#include "tests/harness/synthetic_rows.h"
 
 namespace curvbench {
 namespace {
 
 namespace fs = std::filesystem;
 
-ErrorRow row(const std::string& family, const std::string& method, const std::string& noise,
-             double error, const std::string& quantity = "H") {
-  ErrorRow r;
-  r.experiment = "sweep-test";
-  r.surface = "torus";
-  r.family = family;
-  r.level = 2;
-  r.vertices = 5000;
-  r.h = 0.05;
-  r.method = method;
-  r.noise = noise;
-  r.vertex_set = "all";
-  r.quantity = quantity;
-  r.norm = "L2";
-  r.error = error;
-  type_columns(r);  // as reading the CSV does
-  return r;
-}
+using testing::sweep_row;
 
 TimingRow timing(const std::string& family, const std::string& method, double seconds) {
   return {"sweep-test", family, method, 2, 5000, seconds};
@@ -61,23 +45,23 @@ std::vector<ErrorRow> sweep_rows() {
       // the smaller radius); within 2x (<= 2e-3): LHF-2 rings=1 (1.5e-3, 0.01 s) and Meyer
       // (2e-3, exactly 2x, 0.01 s: ties LHF-2 in time, loses on error); Quadric rings=1 is the
       // fastest of all (0.001 s) but outside 2x (2.1e-3); ICC C=1 (1.2e-3) has no timing.
-      row(kTorus, "LHF-4 rings=2", "none", 1e-3),
-      row(kTorus, "LHF-4 rings=3", "none", 1e-3),
-      row(kTorus, "LHF-2 rings=1", "none", 1.5e-3),
-      row(kTorus, "Meyer", "none", 2e-3),
-      row(kTorus, "Quadric rings=1", "none", 2.1e-3),
-      row(kTorus, "ICC ball-factor=1", "none", 1.2e-3),
-      row(kTorus, "LHF-4 rings=2", "none", 1e-9, "normal"),  // another quantity: ignored
+      sweep_row(kTorus, "LHF-4 rings=2", "none", 1e-3),
+      sweep_row(kTorus, "LHF-4 rings=3", "none", 1e-3),
+      sweep_row(kTorus, "LHF-2 rings=1", "none", 1.5e-3),
+      sweep_row(kTorus, "Meyer", "none", 2e-3),
+      sweep_row(kTorus, "Quadric rings=1", "none", 2.1e-3),
+      sweep_row(kTorus, "ICC ball-factor=1", "none", 1.2e-3),
+      sweep_row(kTorus, "LHF-4 rings=2", "none", 1e-9, "normal"),  // another quantity: ignored
       // Well-shaped, sigma = 0.03h: a tie in error across methods goes to the faster
       // (Normal-cycle C=2, 0.02 s, over LHF-2 rings=4, 0.05 s); nothing else within 2x.
-      row(kTorus, "LHF-2 rings=4", "normal gauss 0.03h", 0.05),
-      row(kTorus, "Normal-cycle ball-factor=2", "normal gauss 0.03h", 0.05),
-      row(kTorus, "Meyer", "normal gauss 0.03h", 0.5),
+      sweep_row(kTorus, "LHF-2 rings=4", "normal gauss 0.03h", 0.05),
+      sweep_row(kTorus, "Normal-cycle ball-factor=2", "normal gauss 0.03h", 0.05),
+      sweep_row(kTorus, "Meyer", "normal gauss 0.03h", 0.5),
       // Other noise models are no level of the table.
-      row(kTorus, "Meyer", "isotropic gauss 0.01h", 1e-6),
+      sweep_row(kTorus, "Meyer", "isotropic gauss 0.01h", 1e-6),
       // Irregular, sigma = 0.1h: the best has no timing, the cheapest within 2x is another.
-      row(kBump, "LHF-2 rings=3", "normal gauss 0.1h", 0.2),
-      row(kBump, "LHF-2 rings=2", "normal gauss 0.1h", 0.3),
+      sweep_row(kBump, "LHF-2 rings=3", "normal gauss 0.1h", 0.2),
+      sweep_row(kBump, "LHF-2 rings=2", "normal gauss 0.1h", 0.3),
   };
 }
 
@@ -146,9 +130,9 @@ TEST(Recommend, TableIsWhatTheRowsImply) {
 }
 
 TEST(Recommend, NoTimedCaseWithinTwiceHasNoCheapest) {
-  const auto recs =
-      recommendations({row(kBump, "LHF-2 rings=3", "none", 0.2), row(kBump, "Meyer", "none", 0.5)},
-                      {timing(kBump, "Meyer", 0.001)});
+  const auto recs = recommendations(
+      {sweep_row(kBump, "LHF-2 rings=3", "none", 0.2), sweep_row(kBump, "Meyer", "none", 0.5)},
+      {timing(kBump, "Meyer", 0.001)});
   const Recommendation& r = cell(recs, "irregular", 0.0);
   ASSERT_TRUE(r.swept);
   EXPECT_EQ(r.best.label, "LHF-2 rings=3");

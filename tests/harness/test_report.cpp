@@ -55,7 +55,7 @@ std::string experiment_markdown(const std::filesystem::path& dir, const std::str
 }
 
 // The table line of a method: "| LHF-2 | ... |" (the first one from `from`).
-std::string row_of(const std::string& md, const std::string& method, size_t from = 0) {
+std::string method_line(const std::string& md, const std::string& method, size_t from = 0) {
   const auto at = md.find("| " + method + " |", from);
   return at == std::string::npos ? std::string() : md.substr(at, md.find('\n', at) - at);
 }
@@ -72,10 +72,12 @@ TEST(BuildReport, ExperimentSectionHasCaptionsErrorsAndRates) {
             std::string::npos)
       << "the caption comes from the family table";
   // Rates from the first and the last level: exactly 2 and 4 (printed with two decimals).
-  EXPECT_NE(row_of(md, "LHF-2").find("**2.00**"), std::string::npos) << row_of(md, "LHF-2");
-  EXPECT_NE(row_of(md, "LHF-4").find("**4.00**"), std::string::npos) << row_of(md, "LHF-4");
-  EXPECT_NE(row_of(md, "LHF-4").find("1.00e-04"), std::string::npos);
-  EXPECT_NE(row_of(md, "LHF-4").find("6.25e-06"), std::string::npos);  // 1e-4 / 16
+  EXPECT_NE(method_line(md, "LHF-2").find("**2.00**"), std::string::npos)
+      << method_line(md, "LHF-2");
+  EXPECT_NE(method_line(md, "LHF-4").find("**4.00**"), std::string::npos)
+      << method_line(md, "LHF-4");
+  EXPECT_NE(method_line(md, "LHF-4").find("1.00e-04"), std::string::npos);
+  EXPECT_NE(method_line(md, "LHF-4").find("6.25e-06"), std::string::npos);  // 1e-4 / 16
 
   // A study beyond the paper says so, not "paper §beyond".
   const std::string md_beyond = experiment_markdown(dir, "beyond");
@@ -98,10 +100,10 @@ TEST(BuildReport, EachVertexSetHasItsOwnTable) {
   ASSERT_NE(four, std::string::npos);
   ASSERT_NE(five, std::string::npos);
   ASSERT_LT(four, five);
-  EXPECT_NE(row_of(md, "LHF-2", four).find("1.00e-02"), std::string::npos);
-  EXPECT_NE(row_of(md, "LHF-2", four).find("**2.00**"), std::string::npos);
-  EXPECT_NE(row_of(md, "LHF-2", five).find("3.00e-02"), std::string::npos);
-  EXPECT_NE(row_of(md, "LHF-2", five).find("**1.00**"), std::string::npos);
+  EXPECT_NE(method_line(md, "LHF-2", four).find("1.00e-02"), std::string::npos);
+  EXPECT_NE(method_line(md, "LHF-2", four).find("**2.00**"), std::string::npos);
+  EXPECT_NE(method_line(md, "LHF-2", five).find("3.00e-02"), std::string::npos);
+  EXPECT_NE(method_line(md, "LHF-2", five).find("**1.00**"), std::string::npos);
 }
 
 TEST(BuildReport, PlotsHoldTheSeriesWithRatesAndReferenceSlopes) {

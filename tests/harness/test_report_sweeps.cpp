@@ -14,30 +14,14 @@
 #include "harness/report/model.h"
 #include "harness/report/sweeps.h"
 #include "tests/cli/cli_runner.h"
+#include "tests/harness/synthetic_rows.h"
 
 namespace curvbench {
 namespace {
 
 namespace fs = std::filesystem;
 
-ErrorRow row(const std::string& method, const std::string& noise, const std::string& quantity,
-             double error) {
-  ErrorRow r;
-  r.experiment = "sweep-test";
-  r.surface = "torus";
-  r.family = "torus-unstructured";
-  r.level = 2;
-  r.vertices = 5000;
-  r.h = 0.05;
-  r.method = method;
-  r.noise = noise;
-  r.vertex_set = "all";
-  r.quantity = quantity;
-  r.norm = "L2";
-  r.error = error;
-  type_columns(r);  // as reading the CSV does
-  return r;
-}
+using testing::sweep_row;
 
 // The typed columns of a row read back from its text: the swept radius from the label, sigma/h
 // and the noise model from the noise column.
@@ -70,15 +54,16 @@ TEST(ReportSweeps, LabelsAndNoiseLabelsReadBack) {
 // The smallest error wins, per (noise, quantity); a tie goes to the smaller radius; a NaN error
 // never wins; a fixed method keeps its one row.
 TEST(ReportSweeps, BestRadiusIsTheSmallestError) {
-  std::vector<ErrorRow> rows = {row("LHF-2 rings=1", "none", "H", 0.3),
-                                row("LHF-2 rings=2", "none", "H", 0.1),
-                                row("LHF-2 rings=3", "none", "H", 0.2),
-                                row("LHF-2 rings=4", "none", "H", std::nan("")),
-                                row("LHF-2 rings=1", "none", "K", 0.5),
-                                row("LHF-2 rings=2", "none", "K", 0.5),
-                                row("LHF-2 rings=1", "normal gauss 0.03h", "H", 0.9),
-                                row("LHF-2 rings=4", "normal gauss 0.03h", "H", 0.4),
-                                row("Meyer", "none", "H", 0.7)};
+  std::vector<ErrorRow> rows = {
+      sweep_row("torus-unstructured", "LHF-2 rings=1", "none", 0.3, "H"),
+      sweep_row("torus-unstructured", "LHF-2 rings=2", "none", 0.1, "H"),
+      sweep_row("torus-unstructured", "LHF-2 rings=3", "none", 0.2, "H"),
+      sweep_row("torus-unstructured", "LHF-2 rings=4", "none", std::nan(""), "H"),
+      sweep_row("torus-unstructured", "LHF-2 rings=1", "none", 0.5, "K"),
+      sweep_row("torus-unstructured", "LHF-2 rings=2", "none", 0.5, "K"),
+      sweep_row("torus-unstructured", "LHF-2 rings=1", "normal gauss 0.03h", 0.9, "H"),
+      sweep_row("torus-unstructured", "LHF-2 rings=4", "normal gauss 0.03h", 0.4, "H"),
+      sweep_row("torus-unstructured", "Meyer", "none", 0.7, "H")};
   const std::vector<BestRadius> best = best_radii(rows);
   ASSERT_EQ(best.size(), 4u);
   EXPECT_EQ(best[0].method, "LHF-2");
@@ -123,9 +108,9 @@ TEST(ReportSweeps, SectionAndCsvFromTheResults) {
   e.source = "experiments/sweep_test.exp";
   std::vector<ErrorRow> rows;
   for (const char* q : {"normal", "H", "K"}) {
-    rows.push_back(row("ICC ball-factor=1", "none", q, 0.2));
-    rows.push_back(row("ICC ball-factor=2", "none", q, 0.05));
-    rows.push_back(row("Meyer", "none", q, 0.3));
+    rows.push_back(sweep_row("torus-unstructured", "ICC ball-factor=1", "none", 0.2, q));
+    rows.push_back(sweep_row("torus-unstructured", "ICC ball-factor=2", "none", 0.05, q));
+    rows.push_back(sweep_row("torus-unstructured", "Meyer", "none", 0.3, q));
     rows[rows.size() - 3].seconds = 0.01;
     rows[rows.size() - 2].seconds = 0.02;
     rows[rows.size() - 1].seconds = 0.005;

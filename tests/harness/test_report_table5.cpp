@@ -29,7 +29,7 @@ const report::Table* table_of(const report::Section& s, const std::string& id) {
 }
 
 // The row of a table whose first cell reads `first`.
-const std::vector<report::Cell>* row_of(const report::Table& t, const std::string& first) {
+const std::vector<report::Cell>* row_headed_by(const report::Table& t, const std::string& first) {
   for (const auto& r : t.rows)
     if (!r.empty() && r[0].text == first) return &r;
   return nullptr;
@@ -80,7 +80,7 @@ TEST(ReportTable5, EverySubtableFromTheCsvs) {
   // Ratios, ours (paper): LOP-2 / LHF-2 = 2 (paper 0.011 / 0.0061 = 1.80).
   const report::Table* ratios = table_of(s, "table5-ratios");
   ASSERT_NE(ratios, nullptr);
-  const auto* lop = row_of(*ratios, "LOP-2 / LHF-2");
+  const auto* lop = row_headed_by(*ratios, "LOP-2 / LHF-2");
   ASSERT_NE(lop, nullptr);
   EXPECT_EQ((*lop)[1].text, "2.00 (1.80)");
   EXPECT_DOUBLE_EQ((*lop)[1].value, 2.0);
@@ -89,10 +89,10 @@ TEST(ReportTable5, EverySubtableFromTheCsvs) {
   // solver rows are not methods.
   const std::vector<std::string> extra(times->columns.begin() + 11, times->columns.end());
   EXPECT_EQ(extra, (std::vector<std::string>{"Meyer", "LHF-2 scalar"}));
-  const auto* meyer = row_of(*ratios, "Meyer / LHF-2");
+  const auto* meyer = row_headed_by(*ratios, "Meyer / LHF-2");
   ASSERT_NE(meyer, nullptr);
   EXPECT_EQ((*meyer)[1].text, "0.50");
-  const auto* scalar = row_of(*ratios, "LHF-2 scalar / LHF-2");
+  const auto* scalar = row_headed_by(*ratios, "LHF-2 scalar / LHF-2");
   ASSERT_NE(scalar, nullptr);
   EXPECT_EQ((*scalar)[1].text, "3.00");
   // QR against SVD: 6x.

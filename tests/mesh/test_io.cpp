@@ -14,18 +14,19 @@
 #include <fstream>
 #include <initializer_list>
 #include <limits>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "core/errors.h"
 #include "mesh/io.h"
 #include "mesh/mesh.h"
+#include "tests/cli/cli_runner.h"
 
 namespace curvbench {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::slurp;
 
 /// Bytes of a binary file under construction.
 struct Bytes {
@@ -90,13 +91,6 @@ class MeshIo : public ::testing::Test {
   fs::path dir_;
 };
 
-std::string slurp(const std::string& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 /// read_mesh(p) must throw InputError: one line, starting with the file name, containing every
 /// part.
 void expect_read_error(const std::string& p, const std::vector<std::string>& parts) {
@@ -124,7 +118,7 @@ Mesh awkward_tetrahedron() {
   return Mesh(V, F);
 }
 
-void expect_same_mesh(const Mesh& a, const Mesh& b) {
+void expect_bit_identical_mesh(const Mesh& a, const Mesh& b) {
   ASSERT_EQ(a.num_vertices(), b.num_vertices());
   ASSERT_EQ(a.num_faces(), b.num_faces());
   for (int v = 0; v < a.num_vertices(); ++v)
@@ -311,7 +305,7 @@ TEST_F(MeshIo, WriteOffRoundTripIsBitExact) {
   EXPECT_NE(text.find("0.10000000000000001 0.33333333333333331 -0\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\n3 1 2 3\n"), std::string::npos);
   MeshReadReport report;
-  expect_same_mesh(read_mesh(p, &report), m);
+  expect_bit_identical_mesh(read_mesh(p, &report), m);
   EXPECT_EQ(report.format, "off");
   EXPECT_EQ(listing(), std::vector<std::string>{"out.off"});  // no temporary left over
 }
@@ -351,7 +345,7 @@ TEST_F(MeshIo, WritePlyWithPropertiesHasExactLayoutAndRoundTrips) {
   }
 
   MeshReadReport report;
-  expect_same_mesh(read_mesh(p, &report), m);
+  expect_bit_identical_mesh(read_mesh(p, &report), m);
   EXPECT_EQ(report.format, "ply");
 }
 
@@ -361,8 +355,8 @@ TEST_F(MeshIo, WriteMeshDispatchesOverwritesAndLeavesNoTemporaries) {
   write_mesh(path("a.OFF"), m);
   write_mesh(path("b.Ply"), m, props);
   write_mesh(path("b.Ply"), m, props);  // replaces the existing file
-  expect_same_mesh(read_mesh(path("a.OFF")), m);
-  expect_same_mesh(read_mesh(path("b.Ply")), m);
+  expect_bit_identical_mesh(read_mesh(path("a.OFF")), m);
+  expect_bit_identical_mesh(read_mesh(path("b.Ply")), m);
   EXPECT_NE(slurp(path("b.Ply")).find("property double k2\n"), std::string::npos);
   EXPECT_THROW(write_mesh(path("c.stl"), m), UsageError);
   EXPECT_THROW(write_mesh(path("c.off"), m, props), UsageError);  // OFF has no properties
@@ -423,8 +417,8 @@ TEST_F(MeshIo, WrittenFilesCutShortAreTruncated) {
   const Mesh m = grid();
   write_off(path("g.off"), m);
   write_ply(path("g.ply"), m, {{"k", std::vector<double>(100, 0.5), false}});
-  expect_same_mesh(read_mesh(path("g.off")), m);
-  expect_same_mesh(read_mesh(path("g.ply")), m);
+  expect_bit_identical_mesh(read_mesh(path("g.off")), m);
+  expect_bit_identical_mesh(read_mesh(path("g.ply")), m);
   // Cut inside the vertex block and inside the face block.
   for (const double keep : {0.3, 0.8}) {
     SCOPED_TRACE(keep);
@@ -922,8 +916,8 @@ TEST_F(MeshIo, WrittenCommentsAreSkippedByTheReader) {
   EXPECT_EQ(slurp(path("c.off")).rfind("OFF\n# first: 3 of 4\n# second\n4 4 0\n", 0), 0u);
   EXPECT_NE(slurp(path("c.ply")).find("comment first: 3 of 4\ncomment second\n"),
             std::string::npos);
-  expect_same_mesh(read_mesh(path("c.off")), m);
-  expect_same_mesh(read_mesh(path("c.ply")), m);
+  expect_bit_identical_mesh(read_mesh(path("c.off")), m);
+  expect_bit_identical_mesh(read_mesh(path("c.ply")), m);
   EXPECT_THROW(write_mesh(path("d.off"), m, {}, {"two\nlines"}), UsageError);
   EXPECT_EQ(listing(), (std::vector<std::string>{"c.off", "c.ply"}));
 }

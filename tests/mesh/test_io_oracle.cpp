@@ -7,12 +7,11 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "core/text.h"
 #include "mesh/io.h"
+#include "tests/cli/cli_runner.h"
 #include "tests/mesh/cgal_oracle.h"
 
 namespace curvbench {
@@ -20,12 +19,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using testing::slurp;
 
 TEST(MeshIoOracle, CorpusFilesWeAcceptCgalReadsToTheSameSoup) {
   const fs::path corpus = fs::path(CURVBENCH_SOURCE_DIR) / "tests" / "corpus";

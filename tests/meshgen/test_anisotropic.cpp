@@ -21,7 +21,7 @@
 namespace curvbench {
 namespace {
 
-GeneratedMesh make(const std::string& family, int level, double aspect) {
+GeneratedMesh stretched_mesh(const std::string& family, int level, double aspect) {
   MeshSpec spec;
   spec.family = family;
   spec.level = level;
@@ -119,7 +119,7 @@ int inverted_faces(const Mesh& m) {
 TEST(TorusAnisotropic, ClosedOutwardAndOnTheTorus) {
   for (double aspect : {2.0, 4.0})
     for (int level = 1; level <= 3; ++level) {
-      const GeneratedMesh g = make("torus-anisotropic", level, aspect);
+      const GeneratedMesh g = stretched_mesh("torus-anisotropic", level, aspect);
       const Mesh& m = g.mesh;
       EXPECT_EQ(g.family, "torus-anisotropic");
       EXPECT_EQ(g.level, level);
@@ -139,7 +139,7 @@ TEST(TorusAnisotropic, ClosedOutwardAndOnTheTorus) {
 }
 
 TEST(TorusAnisotropic, ExactQuantitiesMatchFiniteDifferences) {
-  const GeneratedMesh g = make("torus-anisotropic", 1, 16.0);
+  const GeneratedMesh g = stretched_mesh("torus-anisotropic", 1, 16.0);
   const Mesh& m = g.mesh;
   int compared = 0;
   for (int v = 0; v < m.num_vertices(); v += 7) {
@@ -161,7 +161,7 @@ TEST(TorusAnisotropic, StretchIsTheAspectAlongTheParallels) {
     for (int level = 1; level <= (aspect < 6 ? 4 : 3); ++level) {
       SCOPED_TRACE("A=" + std::to_string(aspect) + " level " + std::to_string(level));
       const std::vector<double> ratio =
-          conformal_stretches(make("torus-anisotropic", level, aspect).mesh);
+          conformal_stretches(stretched_mesh("torus-anisotropic", level, aspect).mesh);
       const double grid = quantile(ratio, 0.5);
       EXPECT_NEAR(grid / aspect, 1.0, 0.02);
       EXPECT_NEAR(quantile(ratio, 0.0) / grid, 1.0, 1e-9);
@@ -177,7 +177,7 @@ TEST(TorusAnisotropic, TheTrianglesOnTheTorusApproachTheGrid) {
   double previous_gap = 1.0;
   for (int level = 1; level <= 4; ++level) {
     SCOPED_TRACE("level " + std::to_string(level));
-    const Mesh m = make("torus-anisotropic", level, aspect).mesh;
+    const Mesh m = stretched_mesh("torus-anisotropic", level, aspect).mesh;
     const double grid = quantile(conformal_stretches(m), 0.5);
     std::vector<double> ratio, alignment, inner, outer;
     stretches(m, false, parallel, ratio, alignment);
@@ -219,7 +219,7 @@ TEST(TorusAnisotropic, NoLevelFoldsAndTheSagStaysWithinHalfARow) {
     double previous_excess = 0.0;
     for (int level = 1; level <= 3; ++level) {
       SCOPED_TRACE("A=" + std::to_string(aspect) + " level " + std::to_string(level));
-      const Mesh m = make("torus-anisotropic", level, aspect).mesh;
+      const Mesh m = stretched_mesh("torus-anisotropic", level, aspect).mesh;
       EXPECT_EQ(inverted_faces(m), 0);
       const double grid = quantile(conformal_stretches(m), 0.5);
       std::vector<double> ratio, alignment;
@@ -233,7 +233,7 @@ TEST(TorusAnisotropic, NoLevelFoldsAndTheSagStaysWithinHalfARow) {
     }
   }
   // A = 16, level 1: the fewest columns (n_u = 29) with du A' <= 2 sqrt(3); 28 would exceed it.
-  const GeneratedMesh a16 = make("torus-anisotropic", 1, 16.0);
+  const GeneratedMesh a16 = stretched_mesh("torus-anisotropic", 1, 16.0);
   EXPECT_NE(a16.description.find("n_u=29 n_w=168"), std::string::npos) << a16.description;
   const double grid = quantile(conformal_stretches(a16.mesh), 0.5);
   EXPECT_LE(2.0 * std::numbers::pi / 29.0 * grid, 2.0 * std::sqrt(3.0));
@@ -247,7 +247,7 @@ TEST(TorusAnisotropic, LevelsHalveH) {
     double previous_h = 0.0;
     int previous_v = 0;
     for (int level = 1; level <= (aspect < 6 ? 4 : 3); ++level) {
-      const Mesh m = make("torus-anisotropic", level, aspect).mesh;
+      const Mesh m = stretched_mesh("torus-anisotropic", level, aspect).mesh;
       if (level > 1) {
         EXPECT_EQ(m.num_vertices(), 4 * previous_v);
         EXPECT_NEAR(previous_h / m.mean_edge_length(), 2.0, 0.05);
@@ -260,7 +260,7 @@ TEST(TorusAnisotropic, LevelsHalveH) {
       EXPECT_GT(previous_v, 10000);
     }
   }
-  EXPECT_EQ(make("torus-anisotropic", 1, 16.0).mesh.num_vertices(), 29 * 168);
+  EXPECT_EQ(stretched_mesh("torus-anisotropic", 1, 16.0).mesh.num_vertices(), 29 * 168);
 }
 
 TEST(TorusAnisotropic, DeterministicAndTheAspectChangesTheMesh) {
@@ -279,7 +279,7 @@ TEST(TorusAnisotropic, DeterministicAndTheAspectChangesTheMesh) {
 TEST(BumpAnisotropic, SquareDomainOnTheBumpExactQuantities) {
   for (double aspect : {4.0, 16.0})
     for (int level = 1; level <= 3; ++level) {
-      const GeneratedMesh g = make("bump-anisotropic", level, aspect);
+      const GeneratedMesh g = stretched_mesh("bump-anisotropic", level, aspect);
       EXPECT_EQ(g.family, "bump-anisotropic");
       EXPECT_EQ(g.level, level);
       testing::expect_square_bump_mesh(g);
@@ -296,7 +296,7 @@ TEST(BumpAnisotropic, StretchIsTheAspectAlongX) {
   // atan(sqrt(3)/A'), or for A' < sqrt(3) that of the half triangles, atan(A'/sqrt(3)).
   for (double aspect : {1.5, 4.0, 16.0})
     for (int level = 1; level <= 3; ++level) {
-      const GeneratedMesh g = make("bump-anisotropic", level, aspect);
+      const GeneratedMesh g = stretched_mesh("bump-anisotropic", level, aspect);
       std::vector<double> ratio, alignment;
       stretches(
           g.mesh, true, [](const Vec3&) { return Vec3(1, 0, 0); }, ratio, alignment);
@@ -324,7 +324,7 @@ TEST(BumpAnisotropic, LevelsHalveHAndStayCheap) {
   for (double aspect : {4.0, 16.0}) {
     double previous = 0.0;
     for (int level = 1; level <= 4; ++level) {
-      const Mesh m = make("bump-anisotropic", level, aspect).mesh;
+      const Mesh m = stretched_mesh("bump-anisotropic", level, aspect).mesh;
       std::vector<double> length, x;
       testing::planar_edges(m, length, x);
       const double median = quantile(length, 0.5);
@@ -341,7 +341,8 @@ TEST(BumpAnisotropic, LevelsHalveHAndStayCheap) {
 }
 
 TEST(BumpAnisotropic, Deterministic) {
-  const GeneratedMesh a = make("bump-anisotropic", 2, 8.0), b = make("bump-anisotropic", 2, 8.0);
+  const GeneratedMesh a = stretched_mesh("bump-anisotropic", 2, 8.0),
+                      b = stretched_mesh("bump-anisotropic", 2, 8.0);
   EXPECT_TRUE(test::identical(a.mesh.vertices(), b.mesh.vertices()));
   EXPECT_TRUE(test::identical(a.mesh.faces(), b.mesh.faces()));
 }

@@ -14,7 +14,7 @@
 namespace curvbench {
 namespace {
 
-GeneratedMesh make(int level, double density, std::uint64_t seed = 1) {
+GeneratedMesh bump_density_mesh(int level, double density, std::uint64_t seed = 1) {
   MeshSpec spec;
   spec.family = "bump-density";
   spec.level = level;
@@ -39,7 +39,7 @@ TEST(BumpDensity, SquareDomainDelaunayOnTheBump) {
   for (double density : {1.0, 8.0, 20.0})
     for (int level = 1; level <= 3; ++level) {
       SCOPED_TRACE("D=" + std::to_string(density) + " level " + std::to_string(level));
-      const GeneratedMesh g = make(level, density);
+      const GeneratedMesh g = bump_density_mesh(level, density);
       EXPECT_EQ(g.family, "bump-density");
       EXPECT_EQ(g.level, level);
       testing::expect_square_bump_mesh(g);
@@ -54,7 +54,7 @@ TEST(BumpDensity, SquareDomainDelaunayOnTheBump) {
 }
 
 TEST(BumpDensity, ExactQuantitiesMatchFiniteDifferences) {
-  EXPECT_GT(testing::expect_bump_exact_matches_fd(make(2, 8.0), 5), 100);
+  EXPECT_GT(testing::expect_bump_exact_matches_fd(bump_density_mesh(2, 8.0), 5), 100);
 }
 
 TEST(BumpDensity, EdgeLengthGrowsByTheDensityFactor) {
@@ -66,7 +66,7 @@ TEST(BumpDensity, EdgeLengthGrowsByTheDensityFactor) {
   for (double density : {1.0, 4.0, 8.0, 16.0}) {
     SCOPED_TRACE("D=" + std::to_string(density));
     std::vector<double> length, x;
-    testing::planar_edges(make(3, density).mesh, length, x);
+    testing::planar_edges(bump_density_mesh(3, density).mesh, length, x);
     Eigen::MatrixXd A(static_cast<Eigen::Index>(x.size()), 2);
     Eigen::VectorXd b(static_cast<Eigen::Index>(x.size()));
     for (size_t i = 0; i < x.size(); ++i) {
@@ -88,7 +88,7 @@ TEST(BumpDensity, LevelsHalveHAndStayCheap) {
   for (double density : {1.0, 8.0, 16.0}) {
     double previous_h = 0.0;
     for (int level = 1; level <= 4; ++level) {
-      const Mesh m = make(level, density).mesh;
+      const Mesh m = bump_density_mesh(level, density).mesh;
       if (level > 1) {
         EXPECT_NEAR(previous_h / m.mean_edge_length(), 2.0, 0.1);
       }
@@ -104,7 +104,8 @@ TEST(BumpDensity, LevelsHalveHAndStayCheap) {
 }
 
 TEST(BumpDensity, DeterministicPerSeed) {
-  const GeneratedMesh a = make(2, 8.0, 5), b = make(2, 8.0, 5), c = make(2, 8.0, 6);
+  const GeneratedMesh a = bump_density_mesh(2, 8.0, 5), b = bump_density_mesh(2, 8.0, 5),
+                      c = bump_density_mesh(2, 8.0, 6);
   EXPECT_TRUE(test::identical(a.mesh.vertices(), b.mesh.vertices()));
   EXPECT_TRUE(test::identical(a.mesh.faces(), b.mesh.faces()));
   ASSERT_EQ(a.mesh.num_vertices(), c.mesh.num_vertices());  // the seed moves points only

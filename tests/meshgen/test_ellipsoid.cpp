@@ -27,7 +27,7 @@ double implicit(const Vec3& p) {
   return x * x + y * y + z * z - 1.0;
 }
 
-Vec3 outward(const Vec3& p) {  // the gradient direction of the implicit function
+Vec3 ellipsoid_outward(const Vec3& p) {  // the gradient direction of the implicit function
   return Vec3(p.x() / (kA * kA), p.y() / (kB * kB), p.z() / (kC * kC)).normalized();
 }
 
@@ -54,7 +54,7 @@ TEST_P(EllipsoidMesh, OnTheEllipsoidClosedOutwardWellShaped) {
     ASSERT_EQ(n, 1);
     ASSERT_EQ(edge_use.count({e.second, e.first}), 1u);
   }
-  EXPECT_EQ(testing::inward_faces(m, outward), 0);
+  EXPECT_EQ(testing::inward_faces(m, ellipsoid_outward), 0);
   const MeshQuality q = mesh_quality(m);
   EXPECT_GE(q.min_angle_deg, 25.0);
   EXPECT_LT(q.min_valence, 6);
@@ -73,7 +73,7 @@ TEST_P(EllipsoidMesh, ExactQuantitiesAndSignConvention) {
     const std::string where = "vertex " + std::to_string(v);
     test::expect_frame_conventions(e, where.c_str());
     EXPECT_LE((e.point - p).norm(), 1e-15);
-    EXPECT_LE((e.normal - outward(p)).norm(), 1e-14);
+    EXPECT_LE((e.normal - ellipsoid_outward(p)).norm(), 1e-14);
     EXPECT_LT(e.k1, 0.0);
     const double lat = std::asin(std::clamp(p.z() / kC, -1.0, 1.0));
     if (std::abs(lat) > 1.3) continue;  // the parameterization degenerates at the poles

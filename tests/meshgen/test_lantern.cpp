@@ -22,7 +22,7 @@ namespace {
 
 constexpr const char* kFamilies[] = {"lantern", "lantern-squeezed"};
 
-GeneratedMesh make(const std::string& family, int level) {
+GeneratedMesh lantern_family_mesh(const std::string& family, int level) {
   return generate_mesh(MeshSpec{family, level});
 }
 
@@ -66,7 +66,7 @@ TEST(Lantern, LevelSizes) {
         EXPECT_EQ(s.sectors, 16 << (level - 1));
         EXPECT_EQ(2 * s.slices, s.sectors);
       }
-      const GeneratedMesh g = make(kFamilies[squeezed], level);
+      const GeneratedMesh g = lantern_family_mesh(kFamilies[squeezed], level);
       EXPECT_EQ(g.mesh.num_vertices(), (s.slices + 1) * s.sectors);
       EXPECT_EQ(g.mesh.num_faces(), 2 * s.slices * s.sectors);
       EXPECT_GT(g.mesh.num_vertices(), 2 * previous);
@@ -76,7 +76,7 @@ TEST(Lantern, LevelSizes) {
   }
   EXPECT_EQ(max_mesh_level("lantern"), 4);
   EXPECT_EQ(max_mesh_level("lantern-squeezed"), 4);
-  EXPECT_THROW(make("lantern", 5), UsageError);
+  EXPECT_THROW(lantern_family_mesh("lantern", 5), UsageError);
   EXPECT_THROW(lantern_mesh({2, 4}), UsageError);
   EXPECT_THROW(lantern_mesh({8, 0}), UsageError);
 }
@@ -84,7 +84,7 @@ TEST(Lantern, LevelSizes) {
 TEST(Lantern, OnTheCylinderOrientedOutwardOpenAtBothEnds) {
   for (const char* family : kFamilies) {
     for (int level = 1; level <= 3; ++level) {
-      const GeneratedMesh g = make(family, level);
+      const GeneratedMesh g = lantern_family_mesh(family, level);
       SCOPED_TRACE(std::string(family) + " level " + std::to_string(level));
       const Mesh& m = g.mesh;
       EXPECT_EQ(g.family, family);
@@ -124,7 +124,7 @@ TEST(Lantern, OnTheCylinderOrientedOutwardOpenAtBothEnds) {
 // H = -1/2, K = 0, d1 along the axis, orthogonal to n.
 TEST(Lantern, ExactQuantitiesAndSignConvention) {
   for (const char* family : kFamilies) {
-    const GeneratedMesh g = make(family, 2);
+    const GeneratedMesh g = lantern_family_mesh(family, 2);
     for (int v = 0; v < g.mesh.num_vertices(); v += 7) {
       const Vec3 p = g.exact_points.row(v).transpose();
       const SurfacePoint e = g.surface->evaluate(p);
@@ -145,7 +145,7 @@ TEST(Lantern, ExactQuantitiesAndSignConvention) {
 
 TEST(Lantern, Deterministic) {
   for (const char* family : kFamilies) {
-    const GeneratedMesh a = make(family, 3), b = make(family, 3);
+    const GeneratedMesh a = lantern_family_mesh(family, 3), b = lantern_family_mesh(family, 3);
     EXPECT_TRUE(test::identical(a.mesh.vertices(), b.mesh.vertices()));
     EXPECT_TRUE(test::identical(a.mesh.faces(), b.mesh.faces()));
     EXPECT_EQ(a.description, b.description);
@@ -157,7 +157,7 @@ TEST(Lantern, Deterministic) {
 TEST(Lantern, FaceNormalsAndAreaConverge) {
   FaceFacts previous;
   for (int level = 1; level <= 4; ++level) {
-    const FaceFacts f = face_facts(make("lantern", level));
+    const FaceFacts f = face_facts(lantern_family_mesh("lantern", level));
     SCOPED_TRACE(level);
     if (level > 1) {
       EXPECT_LT(f.normal_error, 0.55 * previous.normal_error);
@@ -176,7 +176,7 @@ TEST(Lantern, FaceNormalsAndAreaConverge) {
 TEST(Lantern, SqueezedPositionsConvergeFaceNormalsAndAreaDoNot) {
   FaceFacts first, previous;
   for (int level = 1; level <= 4; ++level) {
-    const FaceFacts f = face_facts(make("lantern-squeezed", level));
+    const FaceFacts f = face_facts(lantern_family_mesh("lantern-squeezed", level));
     SCOPED_TRACE(level);
     EXPECT_GT(f.normal_error, 0.5);
     EXPECT_GT(f.area_ratio, 1.15);

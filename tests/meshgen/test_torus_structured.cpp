@@ -8,29 +8,15 @@
 #include "meshgen/torus_structured.h"
 #include "tests/meshgen/identical_matrices.h"
 #include "tests/meshgen/inward_faces.h"
+#include "tests/meshgen/torus_test_util.h"
 
 namespace curvbench {
 namespace {
 
-constexpr double kR = 1.0, kr = 0.3;
-
-// Distance of p to the torus R = 1, r = 0.3.
-double torus_distance(const Vec3& p) {
-  const double rho = std::hypot(p.x(), p.y());
-  return std::abs(std::hypot(rho - kR, p.z()) - kr);
-}
-
-// Outward direction at p: from the core circle point towards p.
-Vec3 outward(const Vec3& p) {
-  const double rho = std::hypot(p.x(), p.y());
-  const Vec3 c(kR * p.x() / rho, kR * p.y() / rho, 0.0);
-  return (p - c).normalized();
-}
-
-// Counts faces whose normal points inward at the face centroid.
-int inward_faces(const Mesh& m) {
-  return testing::inward_faces(m, outward);
-}
+using testing::kTorusR;
+using testing::kTorusr;
+using testing::torus_distance;
+using testing::torus_outward;
 
 TEST(TorusStructured, CountsTopologyAndOrientation) {
   const int paper_v[4] = {1338, 5246, 21156, 85208};  // paper Table 5 (GAMBIT meshes)
@@ -49,10 +35,11 @@ TEST(TorusStructured, CountsTopologyAndOrientation) {
     EXPECT_TRUE(m.is_consistently_oriented());
     EXPECT_EQ(m.euler_characteristic(), 0);
     // Outward: positive volume close to 2 pi^2 R r^2 (an inscribed polyhedron: slightly less).
-    const double exact_volume = 2.0 * std::numbers::pi * std::numbers::pi * kR * kr * kr;
+    const double exact_volume =
+        2.0 * std::numbers::pi * std::numbers::pi * kTorusR * kTorusr * kTorusr;
     EXPECT_GT(m.signed_volume(), 0.97 * exact_volume);
     EXPECT_LT(m.signed_volume(), exact_volume);
-    EXPECT_EQ(inward_faces(m), 0);
+    EXPECT_EQ(testing::inward_faces(m, torus_outward), 0);
     // Valence 6 everywhere (each vertex in 6 faces on a closed mesh).
     for (int v = 0; v < m.num_vertices(); ++v) ASSERT_EQ(m.vertex_faces(v).size(), 6u);
     // On the torus, exact points are the vertices.
@@ -92,7 +79,7 @@ TEST(TorusStructured, JitterKeepsConnectivityAndSurface) {
   EXPECT_EQ(m.num_vertices(), plain.mesh.num_vertices());
   EXPECT_EQ(m.euler_characteristic(), 0);
   EXPECT_TRUE(m.is_consistently_oriented());
-  EXPECT_EQ(inward_faces(m), 0);
+  EXPECT_EQ(testing::inward_faces(m, torus_outward), 0);
   EXPECT_EQ(a.exact_points, m.vertices());
   // Deterministic per seed; another seed gives other points.
   EXPECT_TRUE(test::identical(a.mesh.vertices(), b.mesh.vertices()));
@@ -109,8 +96,8 @@ TEST(TorusStructured, JitterKeepsConnectivityAndSurface) {
     // Angular displacement in u and v, in cells: at most 0.15.
     const auto angle = [](double x) { return std::remainder(x, 2 * std::numbers::pi); };
     const double u_p = std::atan2(p.y(), p.x()), u_q = std::atan2(q.y(), q.x());
-    const double v_p = std::atan2(p.z(), std::hypot(p.x(), p.y()) - kR);
-    const double v_q = std::atan2(q.z(), std::hypot(q.x(), q.y()) - kR);
+    const double v_p = std::atan2(p.z(), std::hypot(p.x(), p.y()) - kTorusR);
+    const double v_q = std::atan2(q.z(), std::hypot(q.x(), q.y()) - kTorusR);
     max_u = std::max(max_u, std::abs(angle(u_p - u_q)) / du);
     max_v = std::max(max_v, std::abs(angle(v_p - v_q)) / dv);
   }

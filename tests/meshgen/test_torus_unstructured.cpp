@@ -19,10 +19,7 @@ namespace curvbench {
 namespace {
 
 using testing::torus_distance;
-
-Vec3 outward(const Vec3& p) {
-  return testing::torus_outward(p);
-}
+using testing::torus_outward;
 
 class TorusUnstructured : public ::testing::TestWithParam<int> {};
 
@@ -54,7 +51,7 @@ TEST_P(TorusUnstructured, PaperCountsExactPositionsAnglesValences) {
   }
   EXPECT_LT(worst, 1e-14);
   // Outward faces.
-  EXPECT_EQ(testing::inward_faces(m, outward), 0);
+  EXPECT_EQ(testing::inward_faces(m, torus_outward), 0);
   // Well-shaped and unstructured: minimum angle >= 25 degrees, at least three valences.
   const MeshQuality q = mesh_quality(m);
   EXPECT_GE(q.min_angle_deg, 25.0);

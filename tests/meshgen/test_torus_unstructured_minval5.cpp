@@ -24,10 +24,7 @@ namespace curvbench {
 namespace {
 
 using testing::torus_distance;
-
-Vec3 outward(const Vec3& p) {
-  return testing::torus_outward(p);
-}
+using testing::torus_outward;
 
 class TorusUnstructuredMinval5 : public ::testing::TestWithParam<int> {};
 
@@ -72,14 +69,14 @@ TEST_P(TorusUnstructuredMinval5, NoLowValenceWellShapedOnTheTorusPaperCounts) {
   EXPECT_EQ(count_duplicate_faces(m), 0);
 
   // Outward faces.
-  EXPECT_EQ(testing::inward_faces(m, outward), 0);
+  EXPECT_EQ(testing::inward_faces(m, torus_outward), 0);
 
   // The exact data comes from the same torus as the base family's.
   ASSERT_TRUE(g.surface);
   EXPECT_EQ(g.surface, base.surface);
   for (int v = 0; v < m.num_vertices(); v += 97) {
     const SurfacePoint s = g.surface->evaluate(g.exact_points.row(v).transpose());
-    EXPECT_NEAR(s.normal.dot(outward(m.position(v))), 1.0, 1e-12);
+    EXPECT_NEAR(s.normal.dot(torus_outward(m.position(v))), 1.0, 1e-12);
     EXPECT_DOUBLE_EQ(s.k2, -1.0 / testing::kTorusr);
   }
 }

@@ -4,12 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "core/errors.h"
 #include "meshgen/generate.h"
 #include "methods/estimator.h"
+#include "tests/methods/convergence_rates.h"
 #include "tests/methods/method_test_util.h"
 
 namespace curvbench {
@@ -43,8 +43,8 @@ VertexMatrix radial_normals(const Mesh& m, double side) {
   return n;
 }
 
-std::vector<VertexEstimate> run(const Mesh& m, const VertexMatrix& normals,
-                                const EstimatorOptions& o = {}) {
+std::vector<VertexEstimate> run_apss(const Mesh& m, const VertexMatrix& normals,
+                                     const EstimatorOptions& o = {}) {
   const auto est = make_estimator("apss", o);
   auto ws = est->make_workspace(m);
   const auto data = est->prepare(m, normals, 1);
@@ -84,7 +84,7 @@ TEST(Apss, ReproducesSpheresWithExactNormals) {
     for (const double beta : {1e-3, 1.0, 1e3}) {
       EstimatorOptions o;
       o.apss_beta = beta;
-      const auto res = run(m, radial_normals(m, 1.0), o);
+      const auto res = run_apss(m, radial_normals(m, 1.0), o);
       for (int v = 0; v < m.num_vertices(); ++v) {
         const VertexEstimate& e = res[static_cast<size_t>(v)];
         const std::string where = "jitter " + std::to_string(jitter) + " beta " +
@@ -104,7 +104,7 @@ TEST(Apss, ReproducesSpheresWithExactNormals) {
 TEST(Apss, InwardNormalsFlipTheSign) {
   const double r = 0.8;
   const Mesh m = icosphere(2, r);
-  const auto res = run(m, radial_normals(m, -1.0));
+  const auto res = run_apss(m, radial_normals(m, -1.0));
   for (int v = 0; v < m.num_vertices(); ++v) {
     const VertexEstimate& e = res[static_cast<size_t>(v)];
     EXPECT_NEAR(e.H, 1.0 / r, 1e-12);
@@ -138,7 +138,7 @@ TEST(Apss, ReproducesPlanes) {
                            [&](double x, double y) { return Vec3(R * Vec3(x, y, 0) + offset); });
   VertexMatrix n(m.num_vertices(), 3);
   for (int v = 0; v < m.num_vertices(); ++v) n.row(v) = (R * Vec3::UnitZ()).transpose();
-  const auto res = run(m, n);
+  const auto res = run_apss(m, n);
   for (int v = 0; v < m.num_vertices(); ++v) {
     const VertexEstimate& e = res[static_cast<size_t>(v)];
     ASSERT_EQ(e.status, VertexStatus::ok) << v;
@@ -165,7 +165,7 @@ TEST(Apss, CylinderSeparatesThePrincipalCurvatures) {
     const Vec3 p = m.position(v);
     n.row(v) = Vec3(p.x(), p.y(), 0).normalized().transpose();
   }
-  const auto res = run(m, n);
+  const auto res = run_apss(m, n);
   const int v = 20 * 41 + 20;
   const VertexEstimate& e = res[static_cast<size_t>(v)];
   ASSERT_EQ(e.status, VertexStatus::ok);
@@ -198,39 +198,6 @@ TEST(Apss, IsolatedVertexFails) {
   EXPECT_TRUE(std::isnan(res[3].H));
 }
 
-struct Rates {
-  double normal = 0, H = 0;
-};
-
-// Normal L2 = sqrt(mean |n~ - n|^2), H L2 = ||H~ - H||_2 / ||H||_2 over every vertex, levels
-// first..last; rate = log(e_first / e_last) / log(h_first / h_last), h the mean edge length.
-Rates apss_rates(const std::string& family, int first, int last) {
-  double e0[2] = {}, e1[2] = {}, hh0 = 0, hh1 = 0;
-  for (int level = first; level <= last; ++level) {
-    MeshSpec spec;
-    spec.family = family;
-    spec.level = level;
-    const GeneratedMesh gm = generate_mesh(spec);
-    const auto res = estimate_mesh(gm.mesh, *make_estimator("apss", {}));
-    double sn = 0, sh = 0, shh = 0;
-    for (int i = 0; i < gm.mesh.num_vertices(); ++i) {
-      const VertexEstimate& r = res[static_cast<size_t>(i)];
-      EXPECT_EQ(r.status, VertexStatus::ok) << family << " v " << i;
-      const SurfacePoint sp = gm.surface->evaluate(gm.exact_points.row(i).transpose());
-      sn += (r.normal - sp.normal).squaredNorm();
-      sh += (r.H - sp.H) * (r.H - sp.H);
-      shh += sp.H * sp.H;
-    }
-    const double en = std::sqrt(sn / gm.mesh.num_vertices()), eh = std::sqrt(sh / shh);
-    std::printf("%-18s APSS level %d: h %.4g  normal L2 %.3e  H L2 %.3e\n", family.c_str(), level,
-                gm.mesh.mean_edge_length(), en, eh);
-    if (level == first) e0[0] = en, e0[1] = eh, hh0 = gm.mesh.mean_edge_length();
-    if (level == last) e1[0] = en, e1[1] = eh, hh1 = gm.mesh.mean_edge_length();
-  }
-  const double lh = std::log(hh0 / hh1);
-  return {std::log(e0[0] / e1[0]) / lh, std::log(e0[1] / e1[1]) / lh};
-}
-
 // Convergence with the meshes' own area-weighted normals, levels 1-4 (rates from the first and
 // last level). What a sphere fit can give: it is exact on spheres, but one algebraic sphere has
 // one curvature, so where k1 != k2 the fitted u4 is an average of k1 and k2 weighted by the
@@ -242,10 +209,12 @@ Rates apss_rates(const std::string& family, int first, int last) {
 // as input): torus-unstructured normal L2 2.0e-2 -> 1.8e-3 (rate 1.16), H L2 8.6e-2 -> 6.7e-2
 // (rate 0.12); bump-irregular normal 5.1e-2 -> 2.2e-3 (1.51), H 0.19 -> 0.13 (0.19).
 TEST(ApssConvergence, NormalsFirstOrderHStallsOnIrregularMeshes) {
-  const Rates torus = apss_rates("torus-unstructured", 1, 4);
+  const testing::ConvergenceRates torus =
+      testing::convergence_rates("torus-unstructured", "apss", {1, 2, 3, 4});
   EXPECT_GE(torus.normal, 1.0);
   EXPECT_LT(torus.H, 0.3);
-  const Rates bump = apss_rates("bump-irregular", 1, 4);
+  const testing::ConvergenceRates bump =
+      testing::convergence_rates("bump-irregular", "apss", {1, 2, 3, 4});
   EXPECT_GE(bump.normal, 1.0);
   EXPECT_LT(bump.H, 0.3);
 }

@@ -14,7 +14,7 @@
 namespace curvbench {
 namespace {
 
-constexpr int L = kBatchLanes;
+constexpr int kLanes = kBatchLanes;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 using testing::same_bits;
@@ -24,18 +24,18 @@ TEST(BatchedCurvature, FramesHaveTheBitsOfMakeLocalFrame) {
   std::normal_distribution<double> gauss;
   int regular = 0;
   for (int batch = 0; batch < 500; ++batch) {
-    alignas(64) double normals[3 * L];
-    Vec3 n[L];
-    for (int l = 0; l < L; ++l) {
+    alignas(64) double normals[3 * kLanes];
+    Vec3 n[kLanes];
+    for (int l = 0; l < kLanes; ++l) {
       n[l] = Vec3(gauss(rng), gauss(rng), gauss(rng));
       if (batch % 3 == 0) n[l].normalize();  // unit (the usual input) and not
       if (batch == 1 && l < 6) n[l] = 1e-3 * Vec3::Unit(l % 3) * (l < 3 ? 1.0 : -1.0);  // axes
       if (batch == 2) n[l] = Vec3(1.0, 1.0, (l % 2) ? 1.0 : -0.0);  // ties in |x| > |y|
-      for (int c = 0; c < 3; ++c) normals[c * L + l] = n[l](c);
+      for (int c = 0; c < 3; ++c) normals[c * kLanes + l] = n[l](c);
     }
     BatchedFrames frames;
     batched_local_frames(normals, frames);
-    for (int l = 0; l < L; ++l) {
+    for (int l = 0; l < kLanes; ++l) {
       ASSERT_TRUE(frames.regular[static_cast<size_t>(l)]) << batch << " " << l;
       const LocalFrame a = make_local_frame(n[l]), b = frames.frame(l);
       EXPECT_TRUE(same_bits(a.t1, b.t1) && same_bits(a.t2, b.t2) && same_bits(a.m, b.m))
@@ -43,19 +43,19 @@ TEST(BatchedCurvature, FramesHaveTheBitsOfMakeLocalFrame) {
       ++regular;
     }
   }
-  EXPECT_EQ(regular, 500 * L);
+  EXPECT_EQ(regular, 500 * kLanes);
 }
 
 TEST(BatchedCurvature, ZeroOrNonFiniteNormalsAreLeftToTheScalarFrame) {
-  alignas(64) double normals[3 * L] = {};
+  alignas(64) double normals[3 * kLanes] = {};
   const Vec3 bad[4] = {Vec3::Zero(), Vec3(kNaN, 0, 1), Vec3(0, INFINITY, 0), Vec3(1e200, 1e200, 0)};
-  for (int l = 0; l < L; ++l) {
+  for (int l = 0; l < kLanes; ++l) {
     const Vec3 n = l < 4 ? bad[l] : Vec3(0.0, 0.0, 1.0);
-    for (int c = 0; c < 3; ++c) normals[c * L + l] = n(c);
+    for (int c = 0; c < 3; ++c) normals[c * kLanes + l] = n(c);
   }
   BatchedFrames frames;
   batched_local_frames(normals, frames);
-  for (int l = 0; l < L; ++l) EXPECT_EQ(frames.regular[static_cast<size_t>(l)], l >= 4) << l;
+  for (int l = 0; l < kLanes; ++l) EXPECT_EQ(frames.regular[static_cast<size_t>(l)], l >= 4) << l;
 }
 
 // Random frames and Taylor derivatives; lane l of batch b gets case (b + l) % 8 of special
@@ -63,15 +63,15 @@ TEST(BatchedCurvature, ZeroOrNonFiniteNormalsAreLeftToTheScalarFrame) {
 TEST(BatchedCurvature, CurvatureHasTheBitsOfCurvatureFromHeight) {
   std::mt19937 rng(11);
   std::normal_distribution<double> gauss;
-  constexpr int stride = kMaxRhs * L;
+  constexpr int stride = kMaxRhs * kLanes;
   int regular = 0, irregular = 0;
   for (int batch = 0; batch < 400; ++batch) {
-    alignas(64) double normals[3 * L];
+    alignas(64) double normals[3 * kLanes];
     alignas(64) double taylor[6 * stride] = {};
-    double t[L][5];
-    for (int l = 0; l < L; ++l) {
+    double t[kLanes][5];
+    for (int l = 0; l < kLanes; ++l) {
       const Vec3 n = Vec3(gauss(rng), gauss(rng), gauss(rng)).normalized();
-      for (int c = 0; c < 3; ++c) normals[c * L + l] = n(c);
+      for (int c = 0; c < 3; ++c) normals[c * kLanes + l] = n(c);
       const double scale = std::pow(10.0, static_cast<int>(rng() % 7) - 3);
       for (int e = 0; e < 5; ++e) t[l][e] = scale * gauss(rng);
       switch ((batch + l) % 8) {
@@ -98,7 +98,7 @@ TEST(BatchedCurvature, CurvatureHasTheBitsOfCurvatureFromHeight) {
     batched_local_frames(normals, frames);
     BatchedCurvature out;
     batched_curvature_from_height(frames, taylor, stride, out);
-    for (int l = 0; l < L; ++l) {
+    for (int l = 0; l < kLanes; ++l) {
       const LocalFrame f = frames.frame(l);
       const Curvature a =
           curvature_from_height(f.t1, f.t2, f.m, t[l][0], t[l][1], t[l][2], t[l][3], t[l][4]);
@@ -118,8 +118,8 @@ TEST(BatchedCurvature, CurvatureHasTheBitsOfCurvatureFromHeight) {
           << a.d1.transpose() << " vs " << b.d1.transpose();
     }
   }
-  EXPECT_EQ(regular + irregular, 400 * L);
-  EXPECT_EQ(regular, 400 * L / 2);  // cases 4-7 of every 8
+  EXPECT_EQ(regular + irregular, 400 * kLanes);
+  EXPECT_EQ(regular, 400 * kLanes / 2);  // cases 4-7 of every 8
 }
 
 }  // namespace

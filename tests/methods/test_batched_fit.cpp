@@ -32,8 +32,8 @@ namespace {
 
 constexpr double kTol = 1e-10;
 
-std::vector<VertexEstimate> run(const Mesh& mesh, const std::string& method, EstimatorOptions o,
-                                Kernel kernel, int threads = 1) {
+std::vector<VertexEstimate> run_with_kernel(const Mesh& mesh, const std::string& method,
+                                            EstimatorOptions o, Kernel kernel, int threads = 1) {
   o.kernel = kernel;
   o.threads = threads;
   return estimate_mesh(mesh, *make_estimator(method, o));
@@ -114,8 +114,8 @@ TEST(BatchedFit, EqualsScalarOnEveryFamily) {
         EstimatorOptions o;
         o.degree = d;
         o.noisy = name.find("noisy") != std::string::npos;
-        const auto s = run(mesh, method, o, Kernel::scalar);
-        const auto b = run(mesh, method, o, Kernel::batched);
+        const auto s = run_with_kernel(mesh, method, o, Kernel::scalar);
+        const auto b = run_with_kernel(mesh, method, o, Kernel::batched);
         const Comparison c = compare(s, b);
         EXPECT_EQ(c.differing, 0) << name << " " << method << "-" << d << ": " << c.first;
         if (d >= 2) {  // degree 1 fits no second derivatives: k1 = k2 = 0, no directions
@@ -138,8 +138,8 @@ TEST(BatchedFit, EqualsScalarOnBoundariesAndIrregularValences) {
       for (int d = 1; d <= 4; ++d) {
         EstimatorOptions o;
         o.degree = d;
-        const Comparison c =
-            compare(run(mesh, method, o, Kernel::scalar), run(mesh, method, o, Kernel::batched));
+        const Comparison c = compare(run_with_kernel(mesh, method, o, Kernel::scalar),
+                                     run_with_kernel(mesh, method, o, Kernel::batched));
         EXPECT_EQ(c.differing, 0) << method << "-" << d << ": " << c.first;
       }
 }
@@ -160,8 +160,8 @@ TEST(BatchedFit, EqualsScalarWithOtherOptionsAndFallbacks) {
         if (variant == 2) o.rings = 2.0;
         if (variant == 3) o.adaptive = false;
         if (variant == 4) o.qr_tolerance = 0.2;
-        const auto s = run(mesh, method, o, Kernel::scalar);
-        const Comparison c = compare(s, run(mesh, method, o, Kernel::batched));
+        const auto s = run_with_kernel(mesh, method, o, Kernel::scalar);
+        const Comparison c = compare(s, run_with_kernel(mesh, method, o, Kernel::batched));
         EXPECT_EQ(c.differing, 0) << method << "-" << d << " variant " << variant << ": "
                                   << c.first;
         if (variant == 4)
@@ -178,8 +178,8 @@ TEST(BatchedFit, EqualsScalarWhereTheConditionTestFires) {
   for (const char* method : kMethods) {
     EstimatorOptions o;
     o.degree = 4;
-    const auto s = run(mesh, method, o, Kernel::scalar);
-    const Comparison c = compare(s, run(mesh, method, o, Kernel::batched));
+    const auto s = run_with_kernel(mesh, method, o, Kernel::scalar);
+    const Comparison c = compare(s, run_with_kernel(mesh, method, o, Kernel::batched));
     EXPECT_EQ(c.differing, 0) << method << "-4: " << c.first;
     // Vertex 64 = (0.5, 0): its 3-ring (28 rows) lies on four grid lines; the fit grows the
     // ring to 3.5 and keeps degree 4.
@@ -189,8 +189,8 @@ TEST(BatchedFit, EqualsScalarWhereTheConditionTestFires) {
     // qr-condition=no (the |R_jj| test alone): the batch keeps those lanes too, and the vertex
     // keeps its 3-ring at degree 4.
     o.qr_condition = false;
-    const auto rjj = run(mesh, method, o, Kernel::scalar);
-    const Comparison c_rjj = compare(rjj, run(mesh, method, o, Kernel::batched));
+    const auto rjj = run_with_kernel(mesh, method, o, Kernel::scalar);
+    const Comparison c_rjj = compare(rjj, run_with_kernel(mesh, method, o, Kernel::batched));
     EXPECT_EQ(c_rjj.differing, 0) << method << "-4 qr-condition=no: " << c_rjj.first;
     EXPECT_EQ(rjj[64].degree, 4) << method;
     EXPECT_EQ(rjj[64].ring, 3.0) << method;
@@ -224,8 +224,8 @@ TEST(BatchedFit, SameBytesForAnyThreadCountAndRangeSplit) {
       for (int d : {2, 4}) {
         EstimatorOptions o;
         o.degree = d;
-        const auto one = run(mesh, method, o, Kernel::batched, 1);
-        EXPECT_TRUE(same_bytes(one, run(mesh, method, o, Kernel::batched, 2)))
+        const auto one = run_with_kernel(mesh, method, o, Kernel::batched, 1);
+        EXPECT_TRUE(same_bytes(one, run_with_kernel(mesh, method, o, Kernel::batched, 2)))
             << family << method << d;
         o.kernel = Kernel::batched;
         o.threads = 2;

@@ -160,17 +160,17 @@ TEST(Driver, PointsAndRingsFollowTable2OnTheRegularMesh) {
 
 // ---- sphere of radius 2 -----------------------------------------------------------------------
 
-struct SphereErrors {
+struct FitSphereErrors {
   double normal = 0, H = 0, K = 0, k = 0;
 };
 
-SphereErrors sphere_errors(const std::string& method, int degree, int level) {
+FitSphereErrors fit_sphere_errors(const std::string& method, int degree, int level) {
   const Mesh mesh = icosphere(level, 2.0);
   EstimatorOptions o;
   o.degree = degree;
   auto est = make_estimator(method, o);
   const auto res = estimate_mesh(mesh, *est);
-  SphereErrors e;
+  FitSphereErrors e;
   for (int v = 0; v < mesh.num_vertices(); ++v) {
     const VertexEstimate& r = res[static_cast<size_t>(v)];
     EXPECT_EQ(r.status, VertexStatus::ok) << method << " v " << v;
@@ -192,9 +192,9 @@ TEST(Sphere, EveryMethodGivesMinusHalfAndConverges) {
   runs.emplace_back("lhf", 4);
   runs.emplace_back("lop", 4);
   for (const auto& [method, d] : runs) {
-    SphereErrors prev;
+    FitSphereErrors prev;
     for (int level = 2; level <= 4; ++level) {
-      const SphereErrors e = sphere_errors(method, d, level);
+      const FitSphereErrors e = fit_sphere_errors(method, d, level);
       const std::string where = method + "-" + std::to_string(d);
       if (level == 4) {  // 2562 vertices, h ~ 0.1 a: every quantity within 1% of the exact one
         EXPECT_LT(e.normal, 1e-3) << where;

@@ -17,7 +17,17 @@
 namespace curvbench {
 namespace {
 
-using namespace testing;
+using testing::bitwise_equal;
+using testing::cone_fan;
+using testing::expect_bent_fan_directions;
+using testing::expect_inward_flips_sign;
+using testing::expect_thread_independent;
+using testing::fan;
+using testing::grid_mesh;
+using testing::icosphere;
+using testing::order;
+using testing::sphere_errors;
+using testing::SphereErrors;
 
 TEST(Goldfeather, RegistryAndLabel) {
   EXPECT_EQ(make_estimator("goldfeather", {})->label(), "Goldfeather");

@@ -20,7 +20,18 @@
 namespace curvbench {
 namespace {
 
-using namespace testing;
+using testing::ball;
+using testing::bitwise_equal;
+using testing::expect_bent_fan_directions;
+using testing::expect_inward_flips_sign;
+using testing::expect_thread_independent;
+using testing::fan;
+using testing::grid_mesh;
+using testing::icosphere;
+using testing::order;
+using testing::sphere_errors;
+using testing::SphereErrors;
+using testing::torus_H_error;
 
 // The measures of vertex v's faces with the corner normals u (n x 3), and its curvatures.
 Curvature one_ring(const Mesh& mesh, const VertexMatrix& u, int v) {
@@ -53,7 +64,8 @@ Mesh lantern(int m, int n) {
   return Mesh(V, F, "lantern");
 }
 
-VertexMatrix radial_normals(const Mesh& mesh) {
+// The unit normals of the cylinder x^2 + y^2 = 1 at its points (away from the z axis).
+VertexMatrix cylinder_normals(const Mesh& mesh) {
   VertexMatrix u = mesh.vertices();
   for (int v = 0; v < u.rows(); ++v) u.row(v) = Vec3(u(v, 0), u(v, 1), 0.0).normalized();
   return u;
@@ -222,7 +234,7 @@ TEST(Icc, SchwarzLanternWithExactNormals) {
   for (int n : {8, 16}) {
     for (int m : {n, n * n}) {
       const Mesh mesh = lantern(m, n);
-      const VertexMatrix u = radial_normals(mesh);
+      const VertexMatrix u = cylinder_normals(mesh);
       const auto est = estimate_mesh(mesh, *make_estimator("icc", {}));
       const auto meyer = estimate_mesh(mesh, *make_estimator("meyer", {}));
       double exact_err = 0.0, est_err = 0.0, meyer_err = 0.0;

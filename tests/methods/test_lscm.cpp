@@ -394,13 +394,14 @@ TEST(LscmMap, CutsRingsThatAreNotDisks) {
 
 // ---- estimators ---------------------------------------------------------------------------------
 
-struct SphereErrors {
+struct SphereErrorsAndFailures {
   double k = 0.0, K = 0.0, normal = 0.0;
   int not_ok = 0;
 };
 
-SphereErrors sphere_errors(const Mesh& mesh, const Estimator& est, double a) {
-  SphereErrors e;
+SphereErrorsAndFailures sphere_errors_and_failures(const Mesh& mesh, const Estimator& est,
+                                                   double a) {
+  SphereErrorsAndFailures e;
   const std::vector<VertexEstimate> r = estimate_mesh(mesh, est);
   for (int v = 0; v < mesh.num_vertices(); ++v) {
     const VertexEstimate& q = r[static_cast<size_t>(v)];
@@ -419,10 +420,10 @@ TEST(LscmEstimator, SphereOfRadiusTwoConvergesToMinusOneHalf) {
   o.degree = 2;
   for (const char* name : {"lscm", "lscm-fast"}) {
     const auto est = make_estimator(name, o);
-    SphereErrors prev;
+    SphereErrorsAndFailures prev;
     for (int level = 2; level <= 4; ++level) {
       const Mesh mesh = icosphere(level, 2.0);
-      const SphereErrors e = sphere_errors(mesh, *est, 2.0);
+      const SphereErrorsAndFailures e = sphere_errors_and_failures(mesh, *est, 2.0);
       std::printf(
           "%s-2 sphere level %d (%d vertices): max |k+0.5| %.3e, |K-0.25| %.3e, "
           "|n-n*| %.3e\n",

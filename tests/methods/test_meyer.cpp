@@ -14,7 +14,14 @@
 namespace curvbench {
 namespace {
 
-using namespace testing;
+using testing::cone_fan;
+using testing::expect_bent_fan_directions;
+using testing::expect_inward_flips_sign;
+using testing::expect_thread_independent;
+using testing::grid_mesh;
+using testing::order;
+using testing::sphere_errors;
+using testing::SphereErrors;
 
 TEST(Meyer, RegistryAndLabel) {
   const auto est = make_estimator("Meyer", {});

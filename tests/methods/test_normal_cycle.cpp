@@ -14,7 +14,12 @@
 namespace curvbench {
 namespace {
 
-using namespace testing;
+using testing::ball;
+using testing::expect_inward_flips_sign;
+using testing::expect_thread_independent;
+using testing::icosphere;
+using testing::sphere_errors;
+using testing::SphereErrors;
 
 TEST(NormalCycle, RegistryOptionsAndLabel) {
   EXPECT_EQ(make_estimator("normal-cycle", {})->label(), "Normal-cycle");

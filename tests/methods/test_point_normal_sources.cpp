@@ -33,7 +33,7 @@ VertexMatrix sphere_points(int n) {
   return V;
 }
 
-Mesh point_set(VertexMatrix V, VertexMatrix normals = {}) {
+Mesh point_set_with_normals(VertexMatrix V, VertexMatrix normals = {}) {
   Mesh mesh(std::move(V), FaceMatrix(0, 3), "sphere.pwn");
   mesh.set_given_normals(std::move(normals));
   return mesh;
@@ -79,7 +79,7 @@ TEST(PointNormalSources, EverySourceGivesOutwardNormalsOnASphere) {
   // The file's normals: outward, of lengths 0.5 to 2 (normalised by the reader's user).
   VertexMatrix given(V.rows(), 3);
   for (int i = 0; i < V.rows(); ++i) given.row(i) = (0.25 + (i % 7) * 0.25) * V.row(i);
-  const Mesh mesh = point_set(V, given);
+  const Mesh mesh = point_set_with_normals(V, given);
   for (const std::string source : {"pca", "jet", "file"})
     for (const std::string method : {"lhf-2", "jet-2", "apss"}) {
       SCOPED_TRACE(source + " " + method);
@@ -106,7 +106,7 @@ double sphere_h_rms(const std::vector<VertexEstimate>& est) {
 // 1e-9 and the jet's below a tenth of PCA's.
 TEST(PointNormalSources, ApssIsAsAccurateAsItsNormals) {
   const VertexMatrix V = sphere_points(2000);
-  const Mesh mesh = point_set(V, V);
+  const Mesh mesh = point_set_with_normals(V, V);
   double rms[3];
   const char* const sources[3] = {"pca", "jet", "file"};
   for (int s = 0; s < 3; ++s)
@@ -120,7 +120,7 @@ TEST(PointNormalSources, ApssIsAsAccurateAsItsNormals) {
 // (B = n . x_uu with n inward), where pca and jet still orient outward.
 TEST(PointNormalSources, FileNormalsFlippedInwardFlipTheFits) {
   const VertexMatrix V = sphere_points(2000);
-  const Mesh mesh = point_set(V, -V);
+  const Mesh mesh = point_set_with_normals(V, -V);
   for (const std::string method : {"lhf-2", "lop-2", "jet-2", "apss"}) {
     SCOPED_TRACE(method);
     const SignCount c =
@@ -141,7 +141,7 @@ TEST(PointNormalSources, ZeroOrNonFiniteFileNormalIsSignUndetermined) {
   given.row(3).setZero();
   given(7, 1) = std::nan("");
   given(9, 2) = INFINITY;
-  const Mesh mesh = point_set(V, given);
+  const Mesh mesh = point_set_with_normals(V, given);
   const auto est = estimate_mesh(mesh, *make_estimator("lhf-2", with_source("file")));
   for (int i = 0; i < V.rows(); ++i) {
     const bool bad = i == 3 || i == 7 || i == 9;
@@ -154,7 +154,7 @@ TEST(PointNormalSources, ZeroOrNonFiniteFileNormalIsSignUndetermined) {
 
 // file without normals: one line naming the file; jet or file on a mesh: one line saying why.
 TEST(PointNormalSources, MissingNormalsAndMeshesAreRefusedWithOneLine) {
-  const Mesh bare = point_set(sphere_points(100));
+  const Mesh bare = point_set_with_normals(sphere_points(100));
   try {
     estimate_mesh(bare, *make_estimator("lhf-2", with_source("file")));
     ADD_FAILURE() << "estimated without normals";

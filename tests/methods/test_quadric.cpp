@@ -13,7 +13,16 @@
 namespace curvbench {
 namespace {
 
-using namespace testing;
+using testing::direction_error;
+using testing::expect_bent_fan_directions;
+using testing::expect_inward_flips_sign;
+using testing::expect_thread_independent;
+using testing::grid_mesh;
+using testing::monge_exact;
+using testing::MongeExact;
+using testing::order;
+using testing::sphere_errors;
+using testing::SphereErrors;
 
 TEST(Quadric, RegistryOptionsAndLabel) {
   const auto est = make_estimator("quadric", {});

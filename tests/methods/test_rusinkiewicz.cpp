@@ -14,7 +14,15 @@
 namespace curvbench {
 namespace {
 
-using namespace testing;
+using testing::expect_bent_fan_directions;
+using testing::expect_inward_flips_sign;
+using testing::expect_thread_independent;
+using testing::grid_mesh;
+using testing::icosphere;
+using testing::order;
+using testing::sphere_errors;
+using testing::SphereErrors;
+using testing::torus_H_error;
 
 TEST(Rusinkiewicz, RegistryAndLabel) {
   const auto est = make_estimator("rusinkiewicz", {});

@@ -10,11 +10,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <random>
 
 #include "surfaces/surface.h"
 
 namespace curvbench::test {
+
+inline constexpr double kPi = std::numbers::pi;
 
 /// Differential quantities computed by the classical formulas.
 struct Reference {

@@ -5,7 +5,6 @@
 
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <random>
 #include <string>
 
@@ -15,7 +14,7 @@
 namespace curvbench {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using test::kPi;
 
 TEST(Cylinder, ConstructionAndName) {
   const Cylinder c(2.0);

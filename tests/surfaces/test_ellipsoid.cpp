@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <random>
 #include <string>
 
@@ -16,7 +15,7 @@
 namespace curvbench {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using test::kPi;
 constexpr double kA = 1.0, kB = 0.8, kC = 0.6;
 
 TEST(Ellipsoid, ConstructionAndName) {

@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <random>
 #include <string>
 #include <utility>
@@ -17,7 +16,7 @@
 namespace curvbench {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using test::kPi;
 
 // Distance from p to the torus surface, | |(rho - R, z)| - r |.
 double torus_distance(const Torus& t, const Vec3& p) {
