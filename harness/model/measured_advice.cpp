@@ -41,11 +41,13 @@ void record(const std::vector<VertexEstimate>& est, Outputs& out) {
 // The mean over the vertices where every value is finite of |sum_i s_i a_i|^2 for the vectors
 // a_i with signs s_i (width values a vertex); NaN when no vertex has them all.
 double mean_square(int width,
-                   const std::vector<std::pair<const std::vector<double>*, double>>& terms) {
+                   const std::vector<std::pair<const std::vector<double>*, double>>& terms,
+                   const std::vector<unsigned char>& left_out) {
   const size_t n = terms.front().first->size() / width;
   double sum = 0.0;
   size_t counted = 0;
   for (size_t v = 0; v < n; ++v) {
+    if (left_out[v]) continue;
     double sq = 0.0;
     bool finite = true;
     for (int k = 0; k < width && finite; ++k) {
@@ -75,6 +77,14 @@ MeasuredAdvice measure_advice(const Mesh& mesh, const std::vector<EstimatorChoic
   if (candidates.empty()) throw UsageError("measure_advice: no candidate estimator");
   if (!(mesh.mean_edge_length() > 0.0))
     throw InputError(mesh.source() + ": no edge to measure the advice on");
+
+  std::vector<unsigned char> left_out(static_cast<size_t>(mesh.num_vertices()), 0);
+  for (int v : options.left_out) {
+    if (v < 0 || v >= mesh.num_vertices())
+      throw UsageError("measure_advice: vertex " + std::to_string(v) +
+                       " to leave out is not one of the " + std::to_string(mesh.num_vertices()));
+    left_out[static_cast<size_t>(v)] = 1;
+  }
 
   MeasuredAdvice advice;
   advice.h = mesh.mean_edge_length();
@@ -129,7 +139,7 @@ MeasuredAdvice measure_advice(const Mesh& mesh, const std::vector<EstimatorChoic
     const auto noise2 = [&](size_t c) {
       double sum = 0.0;
       for (int p = 1; p <= P; ++p)
-        sum += mean_square(width, {{&out[c].of(q, p), 1.0}, {&out[c].of(q, 0), -1.0}});
+        sum += mean_square(width, {{&out[c].of(q, p), 1.0}, {&out[c].of(q, 0), -1.0}}, left_out);
       return sum / P;
     };
     // B_c against r: ||x_c - x_r||^2 less the perturbations' mean square change of c - r.
@@ -137,11 +147,14 @@ MeasuredAdvice measure_advice(const Mesh& mesh, const std::vector<EstimatorChoic
       if (c == r) return 0.0;
       double pair = 0.0;
       for (int p = 1; p <= P; ++p)
-        pair += mean_square(width, {{&out[c].of(q, p), 1.0},
-                                    {&out[c].of(q, 0), -1.0},
-                                    {&out[r].of(q, p), -1.0},
-                                    {&out[r].of(q, 0), 1.0}});
-      const double apart = mean_square(width, {{&out[c].of(q, 0), 1.0}, {&out[r].of(q, 0), -1.0}});
+        pair += mean_square(width,
+                            {{&out[c].of(q, p), 1.0},
+                             {&out[c].of(q, 0), -1.0},
+                             {&out[r].of(q, p), -1.0},
+                             {&out[r].of(q, 0), 1.0}},
+                            left_out);
+      const double apart =
+          mean_square(width, {{&out[c].of(q, 0), 1.0}, {&out[r].of(q, 0), -1.0}}, left_out);
       const double d = apart - pair / P;
       return std::isnan(d) ? d : std::max(0.0, d);  // NaN: no vertex where both are finite
     };
@@ -167,13 +180,15 @@ MeasuredAdvice measure_advice(const Mesh& mesh, const std::vector<EstimatorChoic
     }
     mq.reference = runs[reference].label;
     // H relative to the reference's RMS (the relative norm ratio's denominator); normals absolute.
-    const double scale =
-        q == 1 ? std::sqrt(mean_square(1, {{&out[reference].of(q, 0), 1.0}})) : 1.0;
+    // Where the reference's H vanishes (planes), absolute: no relative error exists there.
+    const double rms =
+        q == 1 ? std::sqrt(mean_square(1, {{&out[reference].of(q, 0), 1.0}}, left_out)) : 1.0;
+    const double scale = rms > 0.0 ? rms : 1.0;
     for (size_t i = 0; i < candidates.size(); ++i) {
       const double noise = noise2(i), bias = bias2(i, reference);
       MeasuredCase c;
       c.label = runs[i].label;
-      if (std::isfinite(noise) && std::isfinite(bias) && scale > 0.0) {
+      if (std::isfinite(noise) && std::isfinite(bias) && std::isfinite(scale)) {
         c.noise_part = std::sqrt(noise) / scale;
         c.bias_part = std::sqrt(bias) / scale;
         c.predicted = std::sqrt(noise + bias) / scale;

@@ -3,7 +3,8 @@
 // an exact answer, by splitting each candidate's error into the part the noise causes and the
 // part its neighbourhood's smoothing causes (bias), both measured on the mesh.
 //
-// Per quantity q (the normals, absolute; the mean curvature H, relative to the reference's RMS):
+// Per quantity q (the normals, absolute; the mean curvature H, relative to the reference's RMS,
+// absolute where that is 0):
 //   - the noise part: the mesh is perturbed `perturbations` times by normal Gaussian noise of the
 //     mesh's own sigma (given or estimated; at least kMeasuredNoiseFloor h) along the normals of
 //     the first rung of the reference ladder; V_c = the mean over perturbations of the mean
@@ -47,6 +48,9 @@ struct MeasuredAdviceOptions {
   int perturbations = kMeasuredPerturbations;  ///< >= 1
   std::uint64_t seed = 1;                      ///< of the perturbations
   int threads = 0;                             ///< of each estimate (0: all cores)
+  /// Vertices whose errors are not counted (crease vertices: no smooth-surface curvature
+  /// there); they are still estimated and perturbed.
+  std::vector<int> left_out;
 };
 
 struct MeasuredCase {
@@ -76,8 +80,8 @@ struct MeasuredAdvice {
 /// Measures the candidates on `mesh`, whose faces must be oriented consistently (closed parts
 /// outward): the runner's generated meshes are, a user's mesh after orient_mesh(). The
 /// ladder's rungs run whether or not they are candidates. Deterministic for any thread count.
-/// Throws UsageError for a negative or non-finite sigma, perturbations < 1 or no candidate,
-/// InputError for a mesh without edges.
+/// Throws UsageError for a negative or non-finite sigma, perturbations < 1, no candidate or a
+/// vertex to leave out that the mesh lacks; InputError for a mesh without edges.
 MeasuredAdvice measure_advice(const Mesh& mesh, const std::vector<EstimatorChoice>& candidates,
                               const MeasuredAdviceOptions& options);
 

@@ -226,6 +226,7 @@ void measure_on_mesh(Advice& a, const Mesh& mesh, const AdviceTable* cases, int 
   MeasuredAdviceOptions o;
   o.sigma_over_h = a.sigma_over_h;
   o.threads = threads;
+  o.left_out = a.crease_vertex_ids;  // no smooth-surface curvature to be right about there
   m.advice = measure_advice(orient_mesh(mesh).mesh, m.candidates, o);
   for (const MeasuredQuantity& q : m.advice.quantities)
     if (q.chosen < 0)

@@ -167,7 +167,8 @@ Advice advise(const Mesh& mesh, double noise, const RecommendationTable& table,
 /// Adds the advice measured on `mesh` at the advice's noise (given or estimated) over the
 /// estimators of `cases`, with `threads` threads (0: all cores); the mesh is oriented first
 /// (closed parts outward). Its curvature's choice becomes the advice's `choice` (family and
-/// level cleared: no swept mesh stands behind it). Throws InputError without `cases` ("measure:
+/// level cleared: no swept mesh stands behind it). The crease vertices (crease_vertex_ids) are
+/// left out of its error predictions. Throws InputError without `cases` ("measure:
 /// no advice_cases.csv beside <table>"), for cases naming no estimator, for a quantity no case
 /// gives a finite value of, and as orient_mesh and measure_advice do.
 void measure_on_mesh(Advice& advice, const Mesh& mesh, const AdviceTable* cases, int threads = 0);

@@ -16,6 +16,7 @@
 #include "mesh/mesh.h"
 #include "meshgen/generate.h"
 #include "methods/estimator.h"
+#include "tests/mesh/crease_test_meshes.h"
 
 namespace curvbench {
 namespace {
@@ -150,6 +151,35 @@ TEST(MeasuredAdvice, ChoosesTheLeastPredictionTheSameForAnyThreadCount) {
     }
     EXPECT_EQ(m.chosen, two.quantities[q].chosen);
   }
+}
+
+TEST(MeasuredAdvice, CreaseVerticesAreLeftOut) {
+  // The meshed cube (8 x 8 squares a face): its faces are planes, so away from the 12 edges
+  // every case gives H = 0 and the cases disagree only about the crease vertices and the
+  // vertices whose neighbourhoods reach them. Leaving the crease vertices out shrinks the bias
+  // parts; leaving every vertex out leaves nothing to predict.
+  const crease_test::CreasedMesh cube = crease_test::meshed_cube(8);
+  const auto cands = measured_candidates({"LHF-2 rings=1", "ICC ball-factor=4"});
+  MeasuredAdviceOptions o;
+  const MeasuredAdvice all = measure_advice(cube.mesh, cands, o);
+  o.left_out = cube.crease_vertices;
+  const MeasuredAdvice smooth = measure_advice(cube.mesh, cands, o);
+  for (const std::string q : {"normal", "H"})
+    for (const EstimatorChoice& c : cands) {
+      const double with = measured_case(all, q, c.label).bias_part;
+      const double without = measured_case(smooth, q, c.label).bias_part;
+      EXPECT_LT(without, with) << q << " " << c.label;
+    }
+  o.left_out.resize(static_cast<size_t>(cube.mesh.num_vertices()));
+  for (int v = 0; v < cube.mesh.num_vertices(); ++v) o.left_out[static_cast<size_t>(v)] = v;
+  const MeasuredAdvice none = measure_advice(cube.mesh, cands, o);
+  for (const MeasuredQuantity& q : none.quantities) {
+    EXPECT_EQ(q.chosen, -1) << q.quantity;
+    EXPECT_EQ(q.reference, "") << q.quantity;
+    for (const MeasuredCase& c : q.cases) EXPECT_TRUE(std::isinf(c.predicted)) << c.label;
+  }
+  o.left_out = {cube.mesh.num_vertices()};
+  EXPECT_THROW(measure_advice(cube.mesh, cands, o), UsageError);
 }
 
 TEST(MeasuredAdvice, RefusesWhatItCannotMeasure) {
