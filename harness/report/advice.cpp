@@ -96,14 +96,6 @@ const AdviceCase* best_of(const std::vector<const AdviceCase*>& cell) {
   return best;
 }
 
-// "1.43"; a regret of 1000 or more (a best error at round-off, an exact method) as "5.1e+12".
-std::string regret_text(double r) {
-  if (!std::isfinite(r)) return "n/a";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, r < 1000 ? "%.2f" : "%.2g", r);
-  return buf;
-}
-
 std::string share_text(double s) {
   if (!std::isfinite(s)) return "n/a";
   char buf[32];
@@ -117,9 +109,15 @@ constexpr const char* kCaseTailColumns[] = {"size_over_h", "sigma_over_h", "quan
 
 }  // namespace
 
+std::string regret_text(double r) {
+  if (!std::isfinite(r)) return "n/a";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, r < 1000 ? "%.2f" : "%.2g", r);
+  return buf;
+}
+
 const std::vector<std::string>& advice_quantities() {
-  static const std::vector<std::string> q{"normal", "H"};
-  return q;
+  return measured_quantities();
 }
 
 std::string advice_quantity_words(const std::string& quantity) {

@@ -139,6 +139,10 @@ struct CrossValidationRow {
 /// mesh and scored by its regret. A case the choice names that the mesh lacks scores NaN.
 std::vector<CrossValidationRow> cross_validate(const std::vector<AdviceCase>& cases);
 
+/// A regret as the report and `recommend` print it: "1.43"; 1000 or more (a best error at
+/// round-off, an exact method) as "5.1e+12"; "n/a" when not finite.
+std::string regret_text(double regret);
+
 struct RegretSummary {
   int cases = 0;  ///< with a finite regret
   double median = std::numeric_limits<double>::quiet_NaN();

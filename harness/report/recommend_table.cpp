@@ -435,12 +435,6 @@ std::string number_text(const char* format, double x) {
   return buf;
 }
 
-// A regret: 2 decimals below 1000, else 3 significant digits ("2.44e+12": an error of the best
-// case at round-off).
-std::string regret_words(double r) {
-  return number_text(std::fabs(r) < 1000.0 ? "%.2f" : "%.3g", r);
-}
-
 // The lines of the advice from mesh features (advice_text).
 std::string feature_advice_text(const Advice& a) {
   const MeshFeatures& f = a.features;
@@ -482,7 +476,7 @@ std::string feature_advice_text(const Advice& a) {
     if (q.validated.cases > 0)
       s += "; cross-validated (the advice learned without each of these families, followed on "
            "it): " +
-           number_text("%.2f", q.lowest_regret) + " to " + regret_words(q.validated.worst) +
+           number_text("%.2f", q.lowest_regret) + " to " + regret_text(q.validated.worst) +
            " times the best error, median " + number_text("%.2f", q.validated.median);
     s += "\n";
   }
@@ -517,7 +511,7 @@ std::string measured_advice_text(const Advice& a) {
       s += "            on the swept meshes (exact answers known) this measurement advised "
            "within 2x of the best case in " +
            number_text("%.0f%%", 100 * v.within_goal) + " of " + std::to_string(v.cases) +
-           " cases; median " + number_text("%.2f", v.median) + ", worst " + regret_words(v.worst) +
+           " cases; median " + number_text("%.2f", v.median) + ", worst " + regret_text(v.worst) +
            " times the best error\n";
     }
   }
