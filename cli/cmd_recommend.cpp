@@ -1,11 +1,10 @@
 // `curvbench recommend MESH [--noise SIGMA_OVER_H] [--results DIR] [--format text|csv|json]
 // [--measure [--threads N]]`: the advice for a mesh (harness/report/recommend_table.h): its
-// quality class from its triangle
-// angles (classify_mesh), its noise given or estimated (estimate_noise), its features, and per
-// quantity the estimator and radius learned from the swept meshes nearest in them with the
-// cross-validated range (advice_cases.csv beside the table, harness/report/advice.h; without it
-// the class table's row), with --measure the advice measured on the mesh itself
-// (measure_on_mesh), and the `curvbench estimate` command line that runs them.
+// quality class from its triangle angles (classify_mesh), its noise given or estimated
+// (estimate_noise), its features, and per quantity the estimator and radius learned from the
+// swept meshes nearest in them with the cross-validated range (advice_cases.csv beside the table,
+// harness/report/advice.h; without it the class table's row), with --measure the advice measured
+// on the mesh itself (measure_on_mesh), and the `curvbench estimate` command line that runs them.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
